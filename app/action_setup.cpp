@@ -1,0 +1,15 @@
+#include "action_setup.h"
+
+#include "model/model_edits.h"
+#include "model/preset_loader.h"
+
+namespace pat::app {
+
+ActionModel load_configured_action(const CommandLine& cl) {
+  ActionModel model = load_action(cl.value("--action"));
+  for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
+  for (const std::string& part : cl.values("--without")) model = without_part(model, part);
+  return model;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,49 @@
+// pianoaction bench: speed and accuracy figures (DESIGN.md section 7).
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "analysis/bench.h"
+#include "commands.h"
+#include "command_line.h"
+
+namespace pat::app {
+
+int run_bench(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {"--duration", "--input"}, {"--json"});
+  BenchOptions options;
+  options.duration_s = cl.positive_number_or("--duration", 1.0);
+  options.input = cl.value_or("--input", options.input);
+  const std::vector<BenchCase> cases = run_bench(options);
+  if (cl.has("--json")) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const BenchCase& c : cases)
+      list.push_back({{"action", c.action},
+                      {"integrator", c.integrator},
+                      {"setting", c.setting},
+                      {"realtime_factor", c.realtime_factor},
+                      {"wall_time_s", c.wall_time_s},
+                      {"steps", c.steps},
+                      {"max_error_deg", c.max_error_deg},
+                      {"max_error_percent_of_range", 100.0 * c.max_error_deg / c.hammer_range_deg}});
+    std::cout << nlohmann::json{{"input", options.input}, {"duration_s", options.duration_s},
+                                {"reference", "rodas rtol=1e-9"}, {"cases", list}}
+                     .dump(1)
+              << "\n";
+    return 0;
+  }
+  std::cout << "double blow " << options.input << ", " << options.duration_s
+            << " s simulated; error = max |hammer angle - rodas(rtol 1e-9)|\n";
+  std::cout << std::left << std::setw(9) << "action" << std::setw(8) << "method" << std::setw(12)
+            << "setting" << std::right << std::setw(12) << "x realtime" << std::setw(10) << "steps"
+            << std::setw(14) << "error (deg)" << std::setw(12) << "% of range" << "\n";
+  for (const BenchCase& c : cases)
+    std::cout << std::left << std::setw(9) << c.action << std::setw(8) << c.integrator
+              << std::setw(12) << c.setting << std::right << std::setw(12) << std::fixed
+              << std::setprecision(1) << c.realtime_factor << std::setw(10) << c.steps
+              << std::setw(14) << std::setprecision(4) << c.max_error_deg << std::setw(12)
+              << std::setprecision(2) << 100.0 * c.max_error_deg / c.hammer_range_deg << "\n";
+  return 0;
+}
+
+}  // namespace pat::app

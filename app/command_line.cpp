@@ -1,0 +1,66 @@
+#include "command_line.h"
+
+#include <charconv>
+#include <cmath>
+
+#include "core/error.h"
+
+namespace pat::app {
+
+CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
+                         const std::set<std::string>& flags) {
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    if (flags.count(arg)) {
+      flags_.insert(arg);
+    } else if (value_options.count(arg)) {
+      if (i + 1 >= args.size()) throw InputError("option " + arg + " needs a value");
+      values_[arg].push_back(args[++i]);
+    } else if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos &&
+               value_options.count(arg.substr(0, arg.find('=')))) {
+      values_[arg.substr(0, arg.find('='))].push_back(arg.substr(arg.find('=') + 1));
+    } else {
+      throw InputError("unknown option '" + arg + "' (see pianoaction --help)");
+    }
+  }
+}
+
+bool CommandLine::has(const std::string& option) const {
+  return flags_.count(option) || values_.count(option);
+}
+
+std::string CommandLine::value(const std::string& option) const {
+  const auto it = values_.find(option);
+  if (it == values_.end()) throw InputError("missing option " + option);
+  return it->second.back();
+}
+
+std::string CommandLine::value_or(const std::string& option, const std::string& fallback) const {
+  const auto it = values_.find(option);
+  return it == values_.end() ? fallback : it->second.back();
+}
+
+std::vector<std::string> CommandLine::values(const std::string& option) const {
+  const auto it = values_.find(option);
+  return it == values_.end() ? std::vector<std::string>{} : it->second;
+}
+
+double parse_number(const std::string& text, const std::string& what) {
+  double x = 0.0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), x);
+  if (error != std::errc() || end != text.data() + text.size() || !std::isfinite(x))
+    throw InputError(what + ": '" + text + "' is not a number");
+  return x;
+}
+
+double CommandLine::positive_number(const std::string& option) const {
+  const double x = parse_number(value(option), option);
+  if (x <= 0.0) throw InputError(option + ": must be positive (got " + value(option) + ")");
+  return x;
+}
+
+double CommandLine::positive_number_or(const std::string& option, double fallback) const {
+  return has(option) ? positive_number(option) : fallback;
+}
+
+}  // namespace pat::app

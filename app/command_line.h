@@ -1,0 +1,35 @@
+// A small command-line reader for the headless subcommands: "--name value" options, repeatable
+// options and flags, with messages that say which option is wrong.
+#pragma once
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace pat::app {
+
+class CommandLine {
+ public:
+  /// `value_options` take a value, `flags` do not; anything else is an error.
+  CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
+              const std::set<std::string>& flags);
+
+  bool has(const std::string& option) const;
+  /// The last value of an option; throws InputError when a required one is missing.
+  std::string value(const std::string& option) const;
+  std::string value_or(const std::string& option, const std::string& fallback) const;
+  std::vector<std::string> values(const std::string& option) const;
+  /// A positive number (seconds, hertz...); names the option in the error.
+  double positive_number(const std::string& option) const;
+  double positive_number_or(const std::string& option, double fallback) const;
+
+ private:
+  std::map<std::string, std::vector<std::string>> values_;
+  std::set<std::string> flags_;
+};
+
+/// Parses a finite number; throws InputError naming `what`.
+double parse_number(const std::string& text, const std::string& what);
+
+}  // namespace pat::app

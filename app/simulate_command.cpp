@@ -1,0 +1,75 @@
+// pianoaction simulate: one run under a key input (DESIGN.md section 5).
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "action_setup.h"
+#include "commands.h"
+#include "io/csv.h"
+#include "sim/key_travel.h"
+#include "sim/simulation.h"
+
+namespace pat::app {
+
+nlohmann::json events_json(const std::vector<SimEvent>& events) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const SimEvent& e : events) {
+    nlohmann::json item{{"type", e.type}, {"t_s", e.t},
+                        {"hammer_string_gap_mm", e.hammer_string_gap * 1e3}};
+    if (e.type == "impact") item["hammer_velocity_mps"] = e.hammer_velocity;
+    list.push_back(item);
+  }
+  return list;
+}
+
+int run_simulate(const std::vector<std::string>& args) {
+  const CommandLine cl(args,
+                       {"--action", "--input", "--duration", "--integrator", "--step", "--set",
+                        "--without", "--out", "--sample-interval"},
+                       {"--json"});
+  const ActionModel model = load_configured_action(cl);
+  SimulationOptions options;
+  options.duration_s = cl.positive_number("--duration");
+  options.integrator = cl.value_or("--integrator", "w2");
+  options.integrator_options.fixed_step_s = cl.positive_number_or("--step", 1e-5);
+  options.sample_interval_s = cl.positive_number_or("--sample-interval", 1e-4);
+  make_integrator(options.integrator, options.integrator_options);  // validates the name early
+  const RestState rest = find_rest_state(model);
+  const auto input = parse_input_spec(cl.value("--input"), input_context(model, rest));
+  const std::string out_path = cl.value_or("--out", "");
+
+  const SimulationResult result = simulate(model, input.get(), options, &rest);
+  if (!out_path.empty()) write_csv(out_path, result.trace);
+
+  if (cl.has("--json")) {
+    nlohmann::json out{{"status", result.status},
+                       {"stop_cause", result.status == "ok" ? nlohmann::json(nullptr)
+                                                            : nlohmann::json(result.stop_cause)},
+                       {"end_t_s", result.end_time},
+                       {"events", events_json(result.events)},
+                       {"realtime_factor", result.realtime_factor},
+                       {"steps", result.steps},
+                       {"rhs_evaluations", result.rhs_evaluations},
+                       {"action", model.kind},
+                       {"input", input->spec()},
+                       {"integrator", options.integrator},
+                       {"rest_hammer_string_gap_mm", rest.hammer_string_gap * 1e3}};
+    std::cout << out.dump(1) << "\n";
+  } else {
+    std::cout << model.name << ", input " << input->spec() << ", " << options.integrator << ": "
+              << result.status;
+    if (result.status != "ok") std::cout << " at t = " << result.end_time << " s (" << result.stop_cause << ")";
+    std::cout << "\n";
+    for (const SimEvent& e : result.events) {
+      std::cout << "  " << e.t * 1e3 << " ms  " << e.type << "  hammer-string gap "
+                << e.hammer_string_gap * 1e3 << " mm";
+      if (e.type == "impact") std::cout << "  hammer velocity " << e.hammer_velocity << " m/s";
+      std::cout << "\n";
+    }
+    std::cout << "  " << result.steps << " steps, " << result.realtime_factor
+              << "x real time\n";
+    if (!out_path.empty()) std::cout << "  trace written to " << out_path << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,31 @@
+// Contact geometry (paper section 4.2; numerics.md section 5): penetration at the patch centre.
+//
+// Body A carries a circle (centre c, radius r; r = 0 is a point). Body B carries either a circle
+// or a segment [s0, s1] with a unit normal m toward the free side. For a segment,
+//   t* = (c − s0)·(s1 − s0)/|s1 − s0|²;  inside [0, 1]: x = r − m·(c − s0)  (circle–line),
+//   outside: circle against the rounded corner of radius ρ centred at the end point − ρ m
+//   (circle–circle), which makes the hybrid knuckle–jack contact continuous.
+// For two circles, x = r_A + r_B − |c_A − c_B|. The normal n points from B toward A; the patch
+// centre is the middle of the overlap.
+#pragma once
+
+#include "core/types.h"
+
+namespace pat {
+
+struct ContactPatch {
+  double penetration = 0.0;  ///< x, m (> 0: overlap)
+  Vec2 normal;               ///< unit, from B toward A
+  Vec2 point;                ///< patch centre, m
+};
+
+/// Circle A (centre, radius) against circle B. Returns false when the circles are apart.
+bool circle_circle_patch(const Vec2& center_a, double radius_a, const Vec2& center_b,
+                         double radius_b, ContactPatch& patch);
+
+/// Circle A against segment B (ends s0, s1, unit normal toward A, corner radius).
+/// Returns false when they are apart.
+bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0, const Vec2& s1,
+                          const Vec2& normal, double corner_radius, ContactPatch& patch);
+
+}  // namespace pat

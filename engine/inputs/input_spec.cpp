@@ -1,0 +1,422 @@
+// Input SPEC parsing and the key inputs it makes (inputs/key_input.h).
+//
+// Choices beyond the header's description:
+//   - numbers are parsed with std::from_chars (locale-independent); a leading '+' is accepted;
+//     NaN and infinities are rejected; spaces around fields are ignored;
+//   - masses must not be negative (0 is accepted), pulse lengths, frequencies and chirp
+//     durations must be positive, the double-pulse gap must not be negative (0: the second pulse
+//     starts as the first ends); forces may have either sign (negative lifts the key);
+//   - csv:PATH takes everything after "csv:" as the path (it may contain ':'); a file with both
+//     key_angle_deg and key_force_n is a motion input (the angle is prescribed);
+//   - before t = 0 every input is at rest (zero force, zero angle).
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+#include "core/error.h"
+#include "core/types.h"
+#include "inputs/cubic_spline.h"
+#include "inputs/key_input.h"
+#include "io/csv.h"
+
+namespace pat {
+namespace {
+
+constexpr double kRampS = 1e-3;  // force pulse ramps up and down in 1 ms
+
+constexpr const char* kKnownSpecs =
+    "expected mass:, force:const:, force:pulse:, force:double:, motion:sine:, motion:chirp: or "
+    "csv:";
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+std::vector<std::string_view> split(std::string_view s, char separator) {
+  std::vector<std::string_view> parts;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t at = s.find(separator, start);
+    parts.push_back(trim(s.substr(start, at == std::string_view::npos ? s.npos : at - start)));
+    if (at == std::string_view::npos) return parts;
+    start = at + 1;
+  }
+}
+
+std::string number_text(double value) {
+  char buffer[64];
+  const auto [ptr, ec] = std::to_chars(buffer, buffer + sizeof(buffer), value);
+  return std::string(buffer, ec == std::errc() ? ptr : buffer);
+}
+
+[[noreturn]] void spec_error(const std::string& spec, const std::string& problem) {
+  throw InputError(located_message("input SPEC '" + spec + "'", "", problem));
+}
+
+// Parses the start of `text` as a number; `rest` receives what follows it.
+bool parse_number_prefix(std::string_view text, double& value, std::string_view& rest) {
+  if (!text.empty() && text.front() == '+') {
+    text.remove_prefix(1);
+    if (!text.empty() && text.front() == '-') return false;
+  }
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (ec != std::errc()) return false;
+  rest = text.substr(static_cast<std::size_t>(ptr - text.data()));
+  return true;
+}
+
+// A whole field as a finite number; `form` is the expected SPEC form for the message.
+double parse_field(const std::string& spec, std::string_view field, const std::string& form) {
+  double value = 0.0;
+  std::string_view rest;
+  if (field.empty()) spec_error(spec, "a number is missing (" + form + ")");
+  if (!parse_number_prefix(field, value, rest) || !rest.empty()) {
+    spec_error(spec, "'" + std::string(field) + "' is not a number (" + form + ")");
+  }
+  if (!std::isfinite(value)) {
+    spec_error(spec, "'" + std::string(field) + "' is not a finite number (" + form + ")");
+  }
+  return value;
+}
+
+void require_positive(const std::string& spec, double value, const std::string& what,
+                      const std::string& unit) {
+  if (!(value > 0.0)) {
+    spec_error(spec, what + " must be positive (got " + number_text(value) + " " + unit + ")");
+  }
+}
+
+class InputBase : public KeyInput {
+ public:
+  explicit InputBase(std::string spec) : spec_(std::move(spec)) {}
+  const std::string& spec() const override { return spec_; }
+
+ private:
+  std::string spec_;
+};
+
+class ForceInput : public InputBase {
+ public:
+  using InputBase::InputBase;
+  bool is_motion() const override { return false; }
+  KeyMotionSample motion(double) const override { return {}; }
+};
+
+class MotionInput : public InputBase {
+ public:
+  using InputBase::InputBase;
+  bool is_motion() const override { return true; }
+  double force_n(double) const override { return 0.0; }
+};
+
+// A point mass resting on the key front; no applied force.
+class MassInput final : public ForceInput {
+ public:
+  MassInput(std::string spec, double mass_kg) : ForceInput(std::move(spec)), mass_kg_(mass_kg) {}
+  double force_n(double) const override { return 0.0; }
+  double added_mass_kg() const override { return mass_kg_; }
+
+ private:
+  double mass_kg_;
+};
+
+class ConstantForce final : public ForceInput {
+ public:
+  ConstantForce(std::string spec, double force) : ForceInput(std::move(spec)), force_(force) {}
+  double force_n(double t) const override { return t >= 0.0 ? force_ : 0.0; }
+
+ private:
+  double force_;
+};
+
+// One or two trapezoidal pulses: 1 ms up, held, 1 ms down.
+class PulseForce final : public ForceInput {
+ public:
+  PulseForce(std::string spec, double force, double hold_s, bool twice, double gap_s)
+      : ForceInput(std::move(spec)),
+        force_(force),
+        slope_(force / kRampS),
+        hold_end_(kRampS + hold_s),
+        end_(2.0 * kRampS + hold_s),
+        second_start_(twice ? end_ + gap_s : std::numeric_limits<double>::infinity()) {}
+
+  double force_n(double t) const override {
+    return t < second_start_ ? pulse(t) : pulse(t - second_start_);
+  }
+
+ private:
+  double pulse(double s) const {
+    if (s <= 0.0 || s >= end_) return 0.0;
+    if (s < kRampS) return slope_ * s;
+    if (s <= hold_end_) return force_;
+    return slope_ * (end_ - s);
+  }
+
+  double force_, slope_, hold_end_, end_, second_start_;
+};
+
+// Sine (f0 = f1) or linear chirp key strokes between rest and full dip (or full dip and half).
+class StrokeMotion final : public MotionInput {
+ public:
+  StrokeMotion(std::string spec, double amplitude, double f0, double f1, double sweep_s, bool half)
+      : MotionInput(std::move(spec)),
+        amplitude_(amplitude),
+        half_(half),
+        omega0_(2.0 * kPi * f0),
+        omega1_(2.0 * kPi * f1),
+        sweep_s_(sweep_s),
+        omega_rate_(std::isfinite(sweep_s) ? 2.0 * kPi * (f1 - f0) / sweep_s : 0.0),
+        phase_at_sweep_end_(
+            std::isfinite(sweep_s) ? sweep_s * (omega0_ + 0.5 * omega_rate_ * sweep_s) : 0.0),
+        t0_(half ? 0.5 / f0 : 0.0) {}
+
+  KeyMotionSample motion(double t) const override {
+    if (t < 0.0) return {};
+    const double half_a = 0.5 * amplitude_;
+    if (!half_) {
+      double phi, dphi, ddphi;
+      phase(t, phi, dphi, ddphi);
+      const double c = std::cos(phi), s = std::sin(phi);
+      return {half_a * (1.0 - c), half_a * s * dphi, half_a * (c * dphi * dphi + s * ddphi)};
+    }
+    if (t < t0_) {  // first descent: half a period of the full stroke at f0
+      const double c = std::cos(omega0_ * t), s = std::sin(omega0_ * t);
+      return {half_a * (1.0 - c), half_a * omega0_ * s, half_a * omega0_ * omega0_ * c};
+    }
+    double phi, dphi, ddphi;
+    phase(t - t0_, phi, dphi, ddphi);
+    const double c = std::cos(phi), s = std::sin(phi), quarter_a = 0.25 * amplitude_;
+    return {amplitude_ - quarter_a * (1.0 - c), -quarter_a * s * dphi,
+            -quarter_a * (c * dphi * dphi + s * ddphi)};
+  }
+
+ private:
+  // Phase (rad) and its first two derivatives at time tau (s) since the phase origin.
+  void phase(double tau, double& phi, double& dphi, double& ddphi) const {
+    if (tau <= sweep_s_) {
+      phi = tau * (omega0_ + 0.5 * omega_rate_ * tau);
+      dphi = omega0_ + omega_rate_ * tau;
+      ddphi = omega_rate_;
+    } else {
+      phi = phase_at_sweep_end_ + omega1_ * (tau - sweep_s_);
+      dphi = omega1_;
+      ddphi = 0.0;
+    }
+  }
+
+  double amplitude_;
+  bool half_;
+  double omega0_, omega1_;  // rad/s
+  double sweep_s_;          // chirp duration (s); infinite for a sine
+  double omega_rate_;       // dω/dt (rad/s²)
+  double phase_at_sweep_end_;
+  double t0_;  // start of the half-stroke oscillation (s)
+};
+
+// Force from a CSV, linear between rows, end values held.
+class CsvForce final : public ForceInput {
+ public:
+  CsvForce(std::string spec, std::vector<double> t, std::vector<double> f)
+      : ForceInput(std::move(spec)), t_(std::move(t)), f_(std::move(f)), slope_(t_.size() - 1) {
+    for (std::size_t i = 0; i + 1 < t_.size(); ++i) {
+      slope_[i] = (f_[i + 1] - f_[i]) / (t_[i + 1] - t_[i]);
+    }
+  }
+
+  double force_n(double t) const override {
+    if (t <= t_.front()) return f_.front();
+    if (t >= t_.back()) return f_.back();
+    const std::size_t i =
+        static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
+    return f_[i] + slope_[i] * (t - t_[i]);
+  }
+
+ private:
+  std::vector<double> t_, f_, slope_;
+};
+
+// Key angle from a CSV through a natural cubic spline, end values held.
+class CsvMotion final : public MotionInput {
+ public:
+  CsvMotion(std::string spec, std::vector<double> t, const std::vector<double>& angle_rad)
+      : MotionInput(std::move(spec)), spline_(std::move(t), angle_rad) {}
+
+  KeyMotionSample motion(double t) const override {
+    const CubicSpline::Sample s = spline_.evaluate(t);
+    return {s.value, s.first, s.second};
+  }
+
+ private:
+  CubicSpline spline_;
+};
+
+// Physical line number of data row `row` (0-based) in a CSV, following read_csv's rules (blank
+// and '#' lines skipped, the first other line is the header); 0 if not found. Only used to word
+// error messages, so reading the file again is fine.
+int data_row_line(const std::string& path, std::size_t row) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  int number = 0;
+  bool header_seen = false;
+  std::size_t rows_seen = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    std::string_view view(line);
+    if (number == 1 && view.substr(0, 3) == "\xEF\xBB\xBF") view.remove_prefix(3);
+    while (!view.empty() && (view.back() == '\r' || view.back() == ' ' || view.back() == '\t')) {
+      view.remove_suffix(1);
+    }
+    view = trim(view);
+    if (view.empty() || view.front() == '#') continue;
+    if (!header_seen) {
+      header_seen = true;
+      continue;
+    }
+    if (rows_seen++ == row) return number;
+  }
+  return 0;
+}
+
+std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::string& path) {
+  const CsvTable table = read_csv(path);
+  const int time_column = table.column_index("time_s");
+  const int angle_column = table.column_index("key_angle_deg");
+  const int force_column = table.column_index("key_force_n");
+  if (time_column < 0) {
+    throw InputError(located_message(path, "", "needs a time_s column"));
+  }
+  if (angle_column < 0 && force_column < 0) {
+    throw InputError(located_message(path, "", "needs a key_force_n or key_angle_deg column"));
+  }
+  if (table.rows.size() < 2) {
+    throw InputError(located_message(
+        path, "", "needs at least 2 rows of data (got " + std::to_string(table.rows.size()) + ")"));
+  }
+  std::vector<double> time = table.column("time_s");
+  for (std::size_t i = 1; i < time.size(); ++i) {
+    if (time[i] > time[i - 1]) continue;
+    const int line = data_row_line(path, i);
+    const std::string where =
+        line > 0 ? "line " + std::to_string(line) : "row " + std::to_string(i + 1);
+    throw InputError(located_message(path, "",
+                                     "time_s must increase (" + where + ": " +
+                                         number_text(time[i]) + " after " +
+                                         number_text(time[i - 1]) + ")"));
+  }
+  if (angle_column >= 0) {
+    std::vector<double> angle = table.column("key_angle_deg");
+    for (double& a : angle) a = rad(a);
+    return std::make_unique<CsvMotion>(spec, std::move(time), angle);
+  }
+  return std::make_unique<CsvForce>(spec, std::move(time), table.column("key_force_n"));
+}
+
+bool parse_stroke(const std::string& spec, std::string_view field) {
+  if (field == "full") return false;
+  if (field == "half") return true;
+  spec_error(spec, "unknown stroke '" + std::string(field) + "' (expected full or half)");
+}
+
+void require_full_dip(const std::string& spec, const InputContext& context) {
+  if (!(context.full_dip_angle_rad > 0.0) || !std::isfinite(context.full_dip_angle_rad)) {
+    spec_error(spec, "motion inputs need the action's full-dip angle, which is not known (got " +
+                         number_text(context.full_dip_angle_rad) + " rad)");
+  }
+}
+
+}  // namespace
+
+std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputContext& context) {
+  const std::string_view text = trim(spec);
+  if (text.substr(0, 4) == "csv:") {
+    const std::string path(trim(text.substr(4)));
+    if (path.empty())
+      spec_error(spec,
+                 "expected csv:PATH (a CSV file with time_s and "
+                 "key_force_n or key_angle_deg)");
+    return parse_csv_input(spec, path);
+  }
+
+  const std::vector<std::string_view> f = split(text, ':');
+  const std::string_view kind = f[0];
+  const std::string_view sub = f.size() > 1 ? f[1] : std::string_view();
+
+  if (kind == "mass") {
+    const std::string form = "expected mass:Mkg or mass:Mg, e.g. mass:1kg or mass:250g";
+    if (f.size() != 2) spec_error(spec, form);
+    double value = 0.0;
+    std::string_view unit;
+    if (!parse_number_prefix(f[1], value, unit)) spec_error(spec, form);
+    unit = trim(unit);
+    if (unit != "kg" && unit != "g") spec_error(spec, form);
+    if (!std::isfinite(value)) spec_error(spec, "the mass is not a finite number (" + form + ")");
+    if (value < 0.0) {
+      spec_error(spec, "the mass must not be negative (got " + std::string(f[1]) + ")");
+    }
+    return std::make_unique<MassInput>(spec, unit == "kg" ? value : value / 1000.0);
+  }
+
+  if (kind == "force" && sub == "const") {
+    const std::string form = "expected force:const:N (newtons)";
+    if (f.size() != 3) spec_error(spec, form);
+    return std::make_unique<ConstantForce>(spec, parse_field(spec, f[2], form));
+  }
+
+  if (kind == "force" && (sub == "pulse" || sub == "double")) {
+    const bool twice = sub == "double";
+    const std::string form = twice ? "expected force:double:N:MS:GAP_MS (newtons, milliseconds, "
+                                     "milliseconds)"
+                                   : "expected force:pulse:N:MS (newtons, milliseconds)";
+    if (f.size() != (twice ? 5u : 4u)) spec_error(spec, form);
+    const double force = parse_field(spec, f[2], form);
+    const double hold_ms = parse_field(spec, f[3], form);
+    require_positive(spec, hold_ms, "the pulse length MS", "ms");
+    double gap_ms = 0.0;
+    if (twice) {
+      gap_ms = parse_field(spec, f[4], form);
+      if (gap_ms < 0.0) {
+        spec_error(spec,
+                   "the gap GAP_MS must not be negative (got " + number_text(gap_ms) + " ms)");
+      }
+    }
+    return std::make_unique<PulseForce>(spec, force, hold_ms / 1000.0, twice, gap_ms / 1000.0);
+  }
+
+  if (kind == "motion" && sub == "sine") {
+    const std::string form = "expected motion:sine:HZ[:full|half] (hertz)";
+    if (f.size() != 3 && f.size() != 4) spec_error(spec, form);
+    const double hz = parse_field(spec, f[2], form);
+    require_positive(spec, hz, "the frequency", "Hz");
+    const bool half = f.size() == 4 && parse_stroke(spec, f[3]);
+    require_full_dip(spec, context);
+    return std::make_unique<StrokeMotion>(spec, context.full_dip_angle_rad, hz, hz,
+                                          std::numeric_limits<double>::infinity(), half);
+  }
+
+  if (kind == "motion" && sub == "chirp") {
+    const std::string form =
+        "expected motion:chirp:F0:F1:SECONDS[:full|half] (hertz, hertz, seconds)";
+    if (f.size() != 5 && f.size() != 6) spec_error(spec, form);
+    const double f0 = parse_field(spec, f[2], form);
+    const double f1 = parse_field(spec, f[3], form);
+    const double seconds = parse_field(spec, f[4], form);
+    require_positive(spec, f0, "the start frequency F0", "Hz");
+    require_positive(spec, f1, "the end frequency F1", "Hz");
+    require_positive(spec, seconds, "the sweep duration SECONDS", "s");
+    const bool half = f.size() == 6 && parse_stroke(spec, f[5]);
+    require_full_dip(spec, context);
+    return std::make_unique<StrokeMotion>(spec, context.full_dip_angle_rad, f0, f1, seconds, half);
+  }
+
+  throw InputError("unknown input SPEC '" + spec + "' (" + kKnownSpecs + ")");
+}
+
+}  // namespace pat

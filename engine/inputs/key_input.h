@@ -1,0 +1,64 @@
+// What drives the key: a force at the key front, or a prescribed key motion.
+//
+// Sign conventions: a force is positive downward (pressing the key); a key angle is in radians
+// from the rest position, positive when the key front goes down.
+#pragma once
+
+#include <memory>
+#include <string>
+
+namespace pat {
+
+/// Prescribed key angle and its first two time derivatives (rad, rad/s, rad/s²).
+struct KeyMotionSample {
+  double angle = 0.0;
+  double rate = 0.0;
+  double acceleration = 0.0;
+};
+
+class KeyInput {
+ public:
+  virtual ~KeyInput() = default;
+  /// true: the key angle is prescribed (motion()) and the finger force is an output.
+  /// false: force_n() is applied at the key front and the key moves freely.
+  virtual bool is_motion() const = 0;
+  /// Downward force at the key front (N) at time t (s). Force inputs only.
+  virtual double force_n(double t) const = 0;
+  /// Prescribed key angle at time t (s). Motion inputs only.
+  virtual KeyMotionSample motion(double t) const = 0;
+  /// A point mass placed on the key front at t = 0 (kg): its weight and its inertia act on
+  /// the key through the dynamics (the paper's 1 kg test). 0 for other inputs.
+  virtual double added_mass_kg() const { return 0.0; }
+  /// The SPEC the input was made from, for metadata and messages.
+  virtual const std::string& spec() const = 0;
+};
+
+/// Model quantities the input SPECs need.
+struct InputContext {
+  /// Key angle at full dip (rad, > 0): where the key front meets the front-rail punching.
+  double full_dip_angle_rad = 0.0;
+};
+
+/// Parses an input SPEC (DESIGN.md section 5):
+///   mass:1kg  mass:250g          a point mass on the key tip (the number and unit kg or g)
+///   force:const:N                a constant force of N newtons from t = 0
+///   force:pulse:N:MS             N newtons held MS milliseconds, with 1 ms linear ramps up
+///                                (from t = 0) and down, then zero
+///   force:double:N:MS:GAP_MS     two such pulses; the second starts GAP_MS after the end of the
+///                                first one's down ramp
+///   motion:sine:HZ[:full|half]   full (default): angle = A/2 (1 − cos 2πf t), A = full dip;
+///                                half: a first half period of the full-stroke sine brings the key
+///                                to full dip, then it oscillates between A and A/2:
+///                                angle = A − A/4 (1 − cos 2πf (t − t0)), t0 = 1/(2f)
+///   motion:chirp:F0:F1:SECONDS[:full|half]
+///                                the same with the phase φ(t) = 2π(F0 t + (F1−F0) t²/(2 SECONDS)),
+///                                frequency held at F1 after SECONDS; half mode: the first descent
+///                                is a half period at F0, then φ counts from t0 = 1/(2 F0)
+///   csv:PATH                     a CSV (io/csv.h) with time_s and either key_force_n (force) or
+///                                key_angle_deg (motion); force is interpolated linearly, the angle
+///                                with a natural cubic spline (which gives rate and acceleration);
+///                                before the first and after the last row the end value is held.
+/// Throws InputError naming the SPEC (and the file and line for csv:) and what is wrong.
+std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputContext& context);
+
+}  // namespace pat

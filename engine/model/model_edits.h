@@ -1,0 +1,23 @@
+// Derived models: the immutable ActionModel is never changed in place; these functions return a
+// modified copy (adjuster offsets, parts taken out for a run).
+#pragma once
+
+#include <string>
+
+#include "model/action_model.h"
+
+namespace pat {
+
+/// Copy of `model` with adjuster `name` at `value_m` (m from its regulated position): every
+/// feature it moves is offset by (value − current value) along its direction.
+/// Throws InputError for an unknown adjuster or a value outside its physical range.
+ActionModel with_adjuster(const ActionModel& model, const std::string& name, double value_m);
+
+/// Copy of `model` without the spring or strap `part` (e.g. "bridle", "butt_spring",
+/// "repetition_spring"). Throws InputError naming the parts that can be removed.
+ActionModel without_part(const ActionModel& model, const std::string& part);
+
+/// Parses "NAME=MM" (as given to --set) and applies it.
+ActionModel with_setting(const ActionModel& model, const std::string& assignment);
+
+}  // namespace pat

@@ -1,0 +1,445 @@
+#include "model/preset_loader.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/error.h"
+
+#ifndef PAT_PRESET_DIR
+#define PAT_PRESET_DIR "presets"
+#endif
+
+namespace pat {
+namespace {
+
+using nlohmann::json;
+
+constexpr double kMm = 1e-3;
+
+std::string type_name(const json& value) {
+  if (value.is_number()) return "a number";
+  if (value.is_string()) return "a string";
+  if (value.is_array()) return "an array";
+  if (value.is_object()) return "an object";
+  if (value.is_boolean()) return "a boolean";
+  return "null";
+}
+
+/// Reads fields with their JSON path, so that every message names the field.
+class PresetReader {
+ public:
+  explicit PresetReader(std::string source) : source_(std::move(source)) {}
+
+  [[noreturn]] void fail(const std::string& path, const std::string& problem) const {
+    throw InputError(located_message(source_, path, problem));
+  }
+
+  const json& field(const json& object, const std::string& path, const char* key) const {
+    if (!object.is_object()) fail(path, "expected an object, got " + type_name(object));
+    const auto it = object.find(key);
+    if (it == object.end()) fail(path, std::string("missing field '") + key + "'");
+    return *it;
+  }
+
+  const json* optional(const json& object, const char* key) const {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  double number(const json& object, const std::string& path, const char* key) const {
+    const json& value = field(object, path, key);
+    if (!value.is_number())
+      fail(path + "." + key, "expected a number, got " + type_name(value));
+    const double x = value.get<double>();
+    if (!std::isfinite(x)) fail(path + "." + key, "must be a finite number");
+    return x;
+  }
+
+  double number_or(const json& object, const std::string& path, const char* key,
+                   double fallback) const {
+    return optional(object, key) ? number(object, path, key) : fallback;
+  }
+
+  double positive(const json& object, const std::string& path, const char* key) const {
+    const double x = number(object, path, key);
+    if (x <= 0.0) fail(path + "." + key, "must be positive (got " + format(x) + ")");
+    return x;
+  }
+
+  double nonnegative(const json& object, const std::string& path, const char* key,
+                     double fallback) const {
+    if (!optional(object, key)) return fallback;
+    const double x = number(object, path, key);
+    if (x < 0.0) fail(path + "." + key, "must not be negative (got " + format(x) + ")");
+    return x;
+  }
+
+  std::string text(const json& object, const std::string& path, const char* key) const {
+    const json& value = field(object, path, key);
+    if (!value.is_string()) fail(path + "." + key, "expected a string, got " + type_name(value));
+    return value.get<std::string>();
+  }
+
+  const json& array(const json& object, const std::string& path, const char* key) const {
+    const json& value = field(object, path, key);
+    if (!value.is_array()) fail(path + "." + key, "expected an array, got " + type_name(value));
+    return value;
+  }
+
+  Vec2 point(const json& value, const std::string& path, double scale) const {
+    if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
+      fail(path, "expected a pair of numbers [x, y]");
+    return Vec2(value[0].get<double>(), value[1].get<double>()) * scale;
+  }
+
+  Vec2 point(const json& object, const std::string& path, const char* key, double scale) const {
+    return point(field(object, path, key), path + "." + key, scale);
+  }
+
+  Vec2 unit(const json& object, const std::string& path, const char* key) const {
+    const Vec2 v = point(object, path, key, 1.0);
+    if (v.norm() < 1e-9) fail(path + "." + key, "direction must not be zero");
+    return v.normalized();
+  }
+
+  std::vector<Vec2> polygon(const json& object, const std::string& path, const char* key) const {
+    std::vector<Vec2> points;
+    const json& list = array(object, path, key);
+    for (std::size_t i = 0; i < list.size(); ++i)
+      points.push_back(point(list[i], path + "." + key + "[" + std::to_string(i) + "]", kMm));
+    return points;
+  }
+
+  /// Every object names where its numbers come from.
+  void require_source(const json& object, const std::string& path) const {
+    const json& source = field(object, path, "source");
+    if (!source.is_string() && !source.is_object())
+      fail(path + ".source", "expected a string or an object of sources");
+  }
+
+  static std::string format(double x) {
+    std::ostringstream out;
+    out << x;
+    return out.str();
+  }
+
+ private:
+  std::string source_;
+};
+
+std::string item_path(const char* list, std::size_t i, const json& item) {
+  std::string path = std::string(list) + "[" + std::to_string(i) + "]";
+  if (item.is_object() && item.contains("name") && item["name"].is_string())
+    path += " (" + item["name"].get<std::string>() + ")";
+  return path;
+}
+
+int body_reference(const PresetReader& r, const ActionModel& model, const json& object,
+                   const std::string& path, const char* key) {
+  const json& value = r.field(object, path, key);
+  if (value.is_null()) return -1;
+  if (!value.is_string()) r.fail(path + "." + key, "expected a body name or null for the frame");
+  const std::string name = value.get<std::string>();
+  if (name == "frame") return -1;
+  const int index = model.body_index(name);
+  if (index < 0) r.fail(path + "." + key, "unknown body '" + name + "'");
+  return index;
+}
+
+FeltCurve read_curve(const PresetReader& r, const json& object, const std::string& path) {
+  FeltCurve curve;
+  // F = a x e^(b x) + c x with x in mm: a, c in N/mm, b in 1/mm → SI
+  curve.a = r.nonnegative(object, path, "a_n_per_mm", 0.0) / kMm;
+  curve.b = r.number_or(object, path, "b_per_mm", 0.0) / kMm;
+  curve.c = r.nonnegative(object, path, "c_n_per_mm", 0.0) / kMm;
+  if (curve.a == 0.0 && curve.c == 0.0) r.fail(path, "a felt curve needs a_n_per_mm or c_n_per_mm");
+  return curve;
+}
+
+FeltLaw read_felt(const PresetReader& r, const json& object, const std::string& path) {
+  r.require_source(object, path);
+  FeltLaw law;
+  law.loading = read_curve(r, r.field(object, path, "loading"), path + ".loading");
+  law.unloading = read_curve(r, r.field(object, path, "unloading"), path + ".unloading");
+  law.alpha = r.nonnegative(object, path, "alpha_s_per_mm", 0.0) / kMm;
+  return law;
+}
+
+void read_bodies(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& list = r.array(root, "", "bodies");
+  if (list.empty()) r.fail("bodies", "an action needs at least one body");
+  if (static_cast<int>(list.size()) > kMaxDof)
+    r.fail("bodies", "at most " + std::to_string(kMaxDof) + " bodies are supported");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    const std::string path = item_path("bodies", i, item);
+    Body body;
+    body.name = r.text(item, path, "name");
+    if (model.body_index(body.name) >= 0) r.fail(path + ".name", "duplicate body name");
+    body.parent = body_reference(r, model, item, path, "parent");
+    body.pivot = r.point(item, path, "pivot_mm", kMm);
+    body.mass = r.positive(item, path, "mass_g") * 1e-3;
+    body.com = r.point(item, path, "com_mm", kMm);
+    body.inertia_com = r.positive(item, path, "inertia_com_g_cm2") * 1e-7;  // g·cm² → kg·m²
+    if (const json* f = r.optional(item, "friction")) {
+      const std::string fpath = path + ".friction";
+      body.friction.a_nm = r.nonnegative(*f, fpath, "a_n_mm", 0.0) * 1e-3;
+      body.friction.b1 = r.number_or(*f, fpath, "b1", 0.0);
+      body.friction.b2 = r.nonnegative(*f, fpath, "b2", 0.0);
+      body.friction.omega_t = r.positive(*f, fpath, "omega_t_rad_per_s");
+    }
+    body.trace_sign = r.number_or(item, path, "trace_sign", 1.0) < 0.0 ? -1.0 : 1.0;
+    body.outline = r.polygon(item, path, "outline_mm");
+    r.require_source(item, path);
+    model.bodies.push_back(body);
+  }
+}
+
+void read_contacts(const PresetReader& r, const json& root, ActionModel& model) {
+  std::vector<std::pair<std::string, FeltLaw>> laws;
+  if (const json* felts = r.optional(root, "felts")) {
+    if (!felts->is_object()) r.fail("felts", "expected an object of named felt laws");
+    for (auto it = felts->begin(); it != felts->end(); ++it)
+      laws.emplace_back(it.key(), read_felt(r, it.value(), "felts." + it.key()));
+  }
+  const json& list = r.array(root, "", "contacts");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    const std::string path = item_path("contacts", i, item);
+    Contact contact;
+    contact.name = r.text(item, path, "name");
+    if (model.contact_index(contact.name) >= 0) r.fail(path + ".name", "duplicate contact name");
+    contact.body_a = body_reference(r, model, item, path, "body_a");
+    contact.body_b = body_reference(r, model, item, path, "body_b");
+    if (contact.body_a == contact.body_b) r.fail(path, "body_a and body_b must differ");
+    contact.center_a = r.point(item, path, "center_a_mm", kMm);
+    contact.radius_a = r.nonnegative(item, path, "radius_a_mm", 0.0) * kMm;
+    const std::string shape = r.text(item, path, "shape");
+    if (shape == "circle_circle") {
+      contact.shape = ContactShape::CircleCircle;
+      contact.center_b = r.point(item, path, "center_b_mm", kMm);
+      contact.radius_b = r.nonnegative(item, path, "radius_b_mm", 0.0) * kMm;
+    } else if (shape == "circle_segment" || shape == "hybrid") {
+      contact.shape = ContactShape::CircleSegment;
+      const json& seg = r.array(item, path, "segment_mm");
+      if (seg.size() != 2) r.fail(path + ".segment_mm", "expected two end points");
+      contact.segment_start = r.point(seg[0], path + ".segment_mm[0]", kMm);
+      contact.segment_end = r.point(seg[1], path + ".segment_mm[1]", kMm);
+      if ((contact.segment_end - contact.segment_start).norm() < 1e-6)
+        r.fail(path + ".segment_mm", "the segment has no length");
+      contact.segment_normal = r.unit(item, path, "normal");
+      contact.radius_b = r.nonnegative(item, path, "corner_radius_mm", 0.0) * kMm;
+    } else {
+      r.fail(path + ".shape", "unknown shape '" + shape +
+                                  "' (expected circle_circle, circle_segment or hybrid)");
+    }
+    const json& felt = r.field(item, path, "felt");
+    if (felt.is_string()) {
+      bool found = false;
+      for (const auto& [name, law] : laws)
+        if (name == felt.get<std::string>()) contact.law = law, found = true;
+      if (!found) r.fail(path + ".felt", "unknown felt law '" + felt.get<std::string>() + "'");
+    } else {
+      contact.law = read_felt(r, felt, path + ".felt");
+    }
+    if (const json* f = r.optional(item, "friction")) {
+      contact.friction.mu = r.nonnegative(*f, path + ".friction", "mu", 0.0);
+      contact.friction.slip_velocity =
+          r.positive(*f, path + ".friction", "slip_velocity_mm_per_s") * kMm;
+    }
+    contact.max_penetration = r.positive(item, path, "max_penetration_mm") * kMm;
+    r.require_source(item, path);
+    model.contacts.push_back(contact);
+  }
+}
+
+void read_springs_and_straps(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& springs = r.array(root, "", "springs");
+  for (std::size_t i = 0; i < springs.size(); ++i) {
+    const json& item = springs[i];
+    const std::string path = item_path("springs", i, item);
+    JointSpring spring;
+    spring.name = r.text(item, path, "name");
+    spring.body = body_reference(r, model, item, path, "body");
+    if (spring.body < 0) r.fail(path + ".body", "a joint spring acts on a body's joint");
+    spring.stiffness = r.nonnegative(item, path, "stiffness_n_mm_per_rad", 0.0) * 1e-3;
+    spring.preload = r.number(item, path, "preload_n_mm") * 1e-3;
+    r.require_source(item, path);
+    model.springs.push_back(spring);
+  }
+  if (const json* straps = r.optional(root, "straps")) {
+    for (std::size_t i = 0; i < straps->size(); ++i) {
+      const json& item = (*straps)[i];
+      const std::string path = item_path("straps", i, item);
+      Strap strap;
+      strap.name = r.text(item, path, "name");
+      strap.body_a = body_reference(r, model, item, path, "body_a");
+      strap.point_a = r.point(item, path, "point_a_mm", kMm);
+      strap.body_b = body_reference(r, model, item, path, "body_b");
+      strap.point_b = r.point(item, path, "point_b_mm", kMm);
+      strap.slack = r.number(item, path, "slack_mm") * kMm;
+      strap.stiffness = r.positive(item, path, "stiffness_n_per_mm") / kMm;
+      strap.damping = r.nonnegative(item, path, "damping_n_s_per_mm", 0.0) / kMm;
+      r.require_source(item, path);
+      model.straps.push_back(strap);
+    }
+  }
+}
+
+void read_adjusters(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& list = r.array(root, "", "adjusters");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    const std::string path = item_path("adjusters", i, item);
+    Adjuster adjuster;
+    adjuster.name = r.text(item, path, "name");
+    adjuster.description = r.text(item, path, "description");
+    const Vec2 range = r.point(item, path, "range_mm", kMm);
+    adjuster.min = range.x();
+    adjuster.max = range.y();
+    if (adjuster.min >= adjuster.max) r.fail(path + ".range_mm", "expected [min, max] with min < max");
+    const json& moves = r.array(item, path, "moves");
+    for (std::size_t m = 0; m < moves.size(); ++m) {
+      const json& move = moves[m];
+      const std::string mpath = path + ".moves[" + std::to_string(m) + "]";
+      AdjusterEffect effect;
+      if (r.optional(move, "contact")) {
+        const std::string name = r.text(move, mpath, "contact");
+        effect.index = model.contact_index(name);
+        if (effect.index < 0) r.fail(mpath + ".contact", "unknown contact '" + name + "'");
+        const std::string side = r.text(move, mpath, "side");
+        if (side != "a" && side != "b") r.fail(mpath + ".side", "expected \"a\" or \"b\"");
+        effect.target = side == "a" ? AdjusterEffect::Target::ContactA
+                                    : AdjusterEffect::Target::ContactB;
+        effect.direction = r.unit(move, mpath, "direction");
+      } else if (r.optional(move, "strap")) {
+        const std::string name = r.text(move, mpath, "strap");
+        effect.index = model.strap_index(name);
+        if (effect.index < 0) r.fail(mpath + ".strap", "unknown strap '" + name + "'");
+        const std::string what = r.text(move, mpath, "field");
+        if (what == "slack") {
+          effect.target = AdjusterEffect::Target::StrapSlack;
+        } else if (what == "point_a" || what == "point_b") {
+          effect.target = what == "point_a" ? AdjusterEffect::Target::StrapPointA
+                                            : AdjusterEffect::Target::StrapPointB;
+          effect.direction = r.unit(move, mpath, "direction");
+        } else {
+          r.fail(mpath + ".field", "expected slack, point_a or point_b");
+        }
+      } else {
+        r.fail(mpath, "a move names a contact or a strap");
+      }
+      adjuster.effects.push_back(effect);
+    }
+    model.adjusters.push_back(adjuster);
+  }
+}
+
+void read_fixtures(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& list = r.array(root, "", "fixtures");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    const std::string path = item_path("fixtures", i, item);
+    Fixture fixture;
+    fixture.name = r.text(item, path, "name");
+    fixture.outline = r.polygon(item, path, "outline_mm");
+    if (r.optional(item, "adjuster")) {
+      fixture.adjuster = r.text(item, path, "adjuster");
+      if (model.adjuster_index(fixture.adjuster) < 0)
+        r.fail(path + ".adjuster", "unknown adjuster '" + fixture.adjuster + "'");
+      fixture.adjuster_direction = r.unit(item, path, "direction");
+    }
+    model.fixtures.push_back(fixture);
+  }
+}
+
+int contact_reference(const PresetReader& r, const ActionModel& model, const json& object,
+                      const std::string& path, const char* key) {
+  const std::string name = r.text(object, path, key);
+  const int index = model.contact_index(name);
+  if (index < 0) r.fail(path + "." + key, "unknown contact '" + name + "'");
+  return index;
+}
+
+void read_landmarks(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& l = r.field(root, "", "landmarks");
+  ActionLandmarks& out = model.landmarks;
+  out.key = body_reference(r, model, l, "landmarks", "key");
+  out.hammer = body_reference(r, model, l, "landmarks", "hammer");
+  if (out.key < 0 || out.hammer < 0) r.fail("landmarks", "key and hammer must name bodies");
+  out.key_front = r.point(l, "landmarks", "key_front_mm", kMm);
+  out.strike_point = r.point(l, "landmarks", "strike_point_mm", kMm);
+  out.string_point = r.point(l, "landmarks", "string_point_mm", kMm);
+  out.string_normal = r.unit(l, "landmarks", "string_normal");
+  const json& c = r.field(l, "landmarks", "contacts");
+  out.string_contact = contact_reference(r, model, c, "landmarks.contacts", "string");
+  out.escapement_contact = contact_reference(r, model, c, "landmarks.contacts", "escapement");
+  out.letoff_contact = contact_reference(r, model, c, "landmarks.contacts", "let_off");
+  out.check_contact = contact_reference(r, model, c, "landmarks.contacts", "check");
+  out.key_bottom_contact = contact_reference(r, model, c, "landmarks.contacts", "key_bottom");
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(located_message(path, "", "cannot open the preset file"));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace
+
+std::string preset_directory() {
+  if (const char* env = std::getenv("PAT_PRESET_DIR")) return env;
+  return PAT_PRESET_DIR;
+}
+
+ActionModel parse_action(const std::string& json_text, const std::string& source_name) {
+  json root;
+  try {
+    root = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    // turn the byte offset into a line and column
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < json_text.size(); ++i) {
+      if (json_text[i] == '\n') ++line, column = 1;
+      else ++column;
+    }
+    throw InputError(located_message(source_name,
+                                     "line " + std::to_string(line) + ", column " +
+                                         std::to_string(column),
+                                     "malformed JSON"));
+  }
+  const PresetReader r(source_name);
+  if (!root.is_object()) r.fail("", "a preset is a JSON object");
+  const double schema = r.number(root, "", "schema");
+  if (schema != kPresetSchema)
+    r.fail("schema", "unsupported schema " + PresetReader::format(schema) + " (this program reads " +
+                         std::to_string(kPresetSchema) + ")");
+  ActionModel model;
+  model.source_file = source_name;
+  model.kind = r.text(root, "", "kind");
+  if (model.kind != "grand" && model.kind != "upright")
+    r.fail("kind", "expected \"grand\" or \"upright\", got \"" + model.kind + "\"");
+  model.name = r.text(root, "", "name");
+  model.description = r.text(root, "", "description");
+  read_bodies(r, root, model);
+  read_contacts(r, root, model);
+  read_springs_and_straps(r, root, model);
+  read_adjusters(r, root, model);
+  read_fixtures(r, root, model);
+  read_landmarks(r, root, model);
+  return model;
+}
+
+ActionModel load_action(const std::string& name_or_path) {
+  std::string path = name_or_path;
+  if (name_or_path == "grand" || name_or_path == "upright")
+    path = preset_directory() + "/" + name_or_path + ".json";
+  return parse_action(read_file(path), path);
+}
+
+}  // namespace pat

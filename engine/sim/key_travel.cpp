@@ -1,0 +1,50 @@
+#include "sim/key_travel.h"
+
+#include <stdexcept>
+
+#include "dynamics/action_dynamics.h"
+
+namespace pat {
+namespace {
+
+/// Penetration of the key-bottom contact with the key turned to `angle` (absolute joint value).
+double bottom_penetration(const ActionModel& model, ActionDynamics& dynamics, DofVector q,
+                          double angle) {
+  const Contact& c = model.contacts[model.landmarks.key_bottom_contact];
+  q[model.landmarks.key] = angle;
+  const Vec2 center = dynamics.point_position(c.body_a, c.center_a, q);
+  // the punching is on the frame: a negative value is the remaining gap
+  return c.radius_a - c.segment_normal.dot(center - c.segment_start);
+}
+
+}  // namespace
+
+double key_full_dip_angle(const ActionModel& model, const RestState& rest) {
+  ActionDynamics dynamics(model, nullptr);
+  const double start = rest.q[model.landmarks.key];
+  double lo = start, hi = start + 0.3;
+  if (bottom_penetration(model, dynamics, rest.q, hi) <= 0.0)
+    throw std::runtime_error(model.source_file + ": the key never reaches its front-rail punching");
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (bottom_penetration(model, dynamics, rest.q, mid) > 0.0 ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi) - start;
+}
+
+double key_front_travel(const ActionModel& model, const RestState& rest, double key_angle) {
+  ActionDynamics dynamics(model, nullptr);
+  DofVector q = rest.q;
+  const Vec2 at_rest = dynamics.point_position(model.landmarks.key, model.landmarks.key_front, q);
+  q[model.landmarks.key] += key_angle;
+  const Vec2 moved = dynamics.point_position(model.landmarks.key, model.landmarks.key_front, q);
+  return at_rest.y() - moved.y();
+}
+
+InputContext input_context(const ActionModel& model, const RestState& rest) {
+  InputContext context;
+  context.full_dip_angle_rad = key_full_dip_angle(model, rest);
+  return context;
+}
+
+}  // namespace pat
