@@ -1,0 +1,134 @@
+// Multibody dynamics against closed forms and conservation laws.
+//
+//      o  pivot (0, 0)                     o pivot
+//       \                                   \   body 0
+//        \  body 0 (rod)                     o  joint of body 1 on body 0
+//         * centre of mass                    \  body 1
+//
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "dynamics/action_dynamics.h"
+#include "integrators/integrator_factory.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+Body rod(const std::string& name, int parent, Vec2 pivot, Vec2 com, double mass, double inertia) {
+  Body b;
+  b.name = name;
+  b.parent = parent;
+  b.pivot = pivot;
+  b.com = com;
+  b.mass = mass;
+  b.inertia_com = inertia;
+  return b;
+}
+
+/// Pendulum models: no contacts, no friction, only gravity.
+ActionModel pendulum(bool double_pendulum) {
+  ActionModel m;
+  m.kind = "grand";
+  m.bodies.push_back(rod("key", -1, Vec2(0, 0), Vec2(0.1, 0), 0.012, 3e-5));
+  if (double_pendulum) m.bodies.push_back(rod("hammer", 0, Vec2(0.2, 0), Vec2(0.3, 0), 0.008, 2e-5));
+  m.landmarks.key = 0;
+  m.landmarks.hammer = double_pendulum ? 1 : 0;
+  m.landmarks.key_front = Vec2(0.2, 0);
+  return m;
+}
+
+double energy_drift(const ActionModel& model, double h, double duration) {
+  ActionDynamics dynamics(model, nullptr);
+  IntegratorOptions options;
+  options.fixed_step_s = h;
+  auto integrator = make_integrator("w2", options);
+  DofVector q = DofVector::Constant(model.dofs(), 0.0), v = DofVector::Zero(model.dofs());
+  q[0] = -0.3;  // released from 0.3 rad below horizontal
+  const double e0 = dynamics.mechanical_energy(q, v);
+  integrator->initialize(dynamics, 0.0, dynamics.compress(q, v));
+  double worst = 0.0;
+  while (integrator->time() < duration - 1e-12) {
+    EXPECT_EQ(integrator->step(duration), StepStatus::Ok);
+    dynamics.expand(integrator->time(), integrator->state(), q, v);
+    worst = std::max(worst, std::abs(dynamics.mechanical_energy(q, v) - e0));
+  }
+  const double scale = model.bodies[0].mass * kGravity * 0.1;  // m g d, the energy scale
+  return worst / scale;
+}
+
+TEST(Dynamics, PendulumConservesEnergyWithoutFriction) {
+  // W-method error is O(h²): 1e-4 s over 2 s keeps the drift below 1e-4 of m g d
+  EXPECT_LT(energy_drift(pendulum(false), 1e-4, 2.0), 1e-4);
+}
+
+TEST(Dynamics, DoublePendulumConservesEnergy) {
+  // exercises the coupled mass matrix and the Coriolis/centrifugal bias terms
+  EXPECT_LT(energy_drift(pendulum(true), 5e-5, 1.0), 1e-3);
+}
+
+TEST(Dynamics, SmallOscillationPeriodMatchesClosedForm) {
+  // T = 2π sqrt(I_pivot / (m g d)) for a physical pendulum hanging down
+  ActionModel m = pendulum(false);
+  const Body& b = m.bodies[0];
+  ActionDynamics dynamics(m, nullptr);
+  IntegratorOptions options;
+  options.fixed_step_s = 1e-5;
+  auto integrator = make_integrator("w2", options);
+  DofVector q(1), v(1);
+  q[0] = -kPi / 2 + 1e-3;  // 1 mrad from hanging straight down
+  v[0] = 0.0;
+  integrator->initialize(dynamics, 0.0, dynamics.compress(q, v));
+  const double d = 0.1;
+  const double period = 2 * kPi * std::sqrt((b.inertia_com + b.mass * d * d) / (b.mass * kGravity * d));
+  // the angle crosses the hanging position at T/4 and 3T/4; measure the second crossing
+  double previous = q[0] + kPi / 2, crossing = -1.0;
+  int crossings = 0;
+  while (integrator->time() < 2 * period && crossings < 2) {
+    const double t0 = integrator->time();
+    integrator->step(2 * period);
+    const double now = integrator->state()[0] + kPi / 2;
+    if ((now > 0) != (previous > 0)) {
+      ++crossings;
+      crossing = t0 + (integrator->time() - t0) * previous / (previous - now);
+    }
+    previous = now;
+  }
+  // amplitude 1 mrad: the nonlinear period correction is θ²/16 ≈ 6e-8, the step error ~1e-9
+  EXPECT_NEAR(crossing, 0.75 * period, 1e-5 * period);
+}
+
+TEST(Dynamics, MassMatrixSymmetricPositiveDefiniteInReachableConfigurations) {
+  for (const std::string name : {"grand", "upright"}) {
+    const ActionModel model = test::shipped(name);
+    const SimulationResult r = test::run(model, "force:double:40:30:50", 0.25);
+    ActionDynamics dynamics(model, nullptr);
+    const auto& rows = r.trace.rows;
+    ASSERT_GT(rows.size(), 100u);
+    for (std::size_t i = 0; i < rows.size(); i += 50) {
+      DofVector q(model.dofs());
+      for (int k = 0; k < model.dofs(); ++k)
+        q[k] = r.rest.q[k] + rad(rows[i][1 + k]) * model.bodies[k].trace_sign;
+      const DofMatrix mass = dynamics.mass_matrix(q);
+      EXPECT_LT((mass - mass.transpose()).norm(), 1e-15 * mass.norm()) << name;
+      Eigen::SelfAdjointEigenSolver<DofMatrix> eigen(mass);
+      EXPECT_GT(eigen.eigenvalues().minCoeff(), 0.0) << name << " row " << i;
+    }
+  }
+}
+
+TEST(Dynamics, PointMassOnTheKeyAddsItsInertia) {
+  // a 1 kg mass at the key front (0.22 m) adds m r² = 0.0484 kg m² about the balance pin
+  const ActionModel model = test::shipped("grand");
+  const RestState rest = find_rest_state(model);
+  const auto mass_input = parse_input_spec("mass:1kg", input_context(model, rest));
+  ActionDynamics bare(model, nullptr), loaded(model, mass_input.get());
+  const int key = model.landmarks.key;
+  const Vec2 arm = model.landmarks.key_front - model.bodies[key].pivot;
+  const double expected = bare.mass_matrix(rest.q)(key, key) + arm.squaredNorm();
+  EXPECT_NEAR(loaded.mass_matrix(rest.q)(key, key), expected, 1e-12);
+}
+
+}  // namespace
+}  // namespace pat

@@ -1,0 +1,319 @@
+// Bad presets and bad model edits (model/preset_loader.h, model/model_edits.h): every message
+// names the file, the field and the problem; the shipped presets load and cite their sources.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "core/error.h"
+#include "model/action_model.h"
+#include "model/model_edits.h"
+#include "model/preset_loader.h"
+
+namespace pat {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kBrokenName = "broken.json";
+
+std::string preset_path(const std::string& name) {
+  return std::string(PAT_PRESET_DIR) + "/" + name + ".json";
+}
+
+std::string preset_text(const std::string& name) {
+  std::ifstream in(preset_path(name), std::ios::binary);
+  EXPECT_TRUE(in) << "cannot open " << preset_path(name);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+json preset_json(const std::string& name) {
+  return json::parse(preset_text(name));
+}
+
+// The InputError message parse_action gives for `text`, or "" (and a failure) if none.
+std::string parse_error(const std::string& text) {
+  try {
+    parse_action(text, kBrokenName);
+  } catch (const InputError& e) {
+    return e.what();
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "expected InputError, got another exception: " << e.what();
+    return "";
+  }
+  ADD_FAILURE() << "parse_action accepted a broken preset";
+  return "";
+}
+
+void expect_contains_all(const std::string& message, std::initializer_list<const char*> parts) {
+  for (const char* part : parts)
+    EXPECT_NE(message.find(part), std::string::npos)
+        << "message does not contain \"" << part << "\": " << message;
+}
+
+// Parses the edited preset and checks that the error contains the file name and `parts`.
+void expect_preset_error(const json& preset, std::initializer_list<const char*> parts) {
+  const std::string message = parse_error(preset.dump(1));
+  expect_contains_all(message, {kBrokenName});
+  expect_contains_all(message, parts);
+}
+
+template <typename Edit>
+std::string edit_error(const ActionModel& model, Edit edit) {
+  try {
+    edit(model);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "the edit was accepted";
+  return "";
+}
+
+TEST(PresetErrors, UnmodifiedGrandTextParses) {
+  const ActionModel model = parse_action(preset_json("grand").dump(1), kBrokenName);
+  EXPECT_EQ(model.kind, "grand");
+  EXPECT_EQ(model.source_file, kBrokenName);
+}
+
+TEST(PresetErrors, MissingFieldNamesBodyAndField) {
+  json preset = preset_json("grand");
+  ASSERT_TRUE(preset["bodies"][2].contains("mass_g"));
+  preset["bodies"][2].erase("mass_g");
+  expect_preset_error(preset, {"bodies[2]", "mass_g", "missing"});
+}
+
+TEST(PresetErrors, WrongTypeNamesField) {
+  json preset = preset_json("grand");
+  preset["bodies"][0]["mass_g"] = "95";
+  expect_preset_error(preset, {"bodies[0]", "mass_g", "expected a number", "a string"});
+}
+
+TEST(PresetErrors, NegativeMassMustBePositive) {
+  json preset = preset_json("grand");
+  preset["bodies"][1]["mass_g"] = -3;
+  expect_preset_error(preset, {"bodies[1]", "mass_g", "must be positive", "-3"});
+}
+
+TEST(PresetErrors, ZeroMassMustBePositive) {
+  json preset = preset_json("upright");
+  preset["bodies"][3]["mass_g"] = 0;
+  expect_preset_error(preset, {"bodies[3]", "mass_g", "must be positive"});
+}
+
+TEST(PresetErrors, NegativeInertiaMustBePositive) {
+  json preset = preset_json("grand");
+  preset["bodies"][4]["inertia_com_g_cm2"] = -1.5;
+  expect_preset_error(preset, {"bodies[4]", "inertia_com_g_cm2", "must be positive"});
+}
+
+TEST(PresetErrors, MalformedJsonGivesLineAndColumn) {
+  const std::string text = preset_text("grand");
+  // delete a closing brace from the middle of the file
+  const std::size_t brace = text.find('}', text.size() / 2);
+  ASSERT_NE(brace, std::string::npos);
+  const std::string broken = text.substr(0, brace) + text.substr(brace + 1);
+  const std::string message = parse_error(broken);
+  expect_contains_all(message, {kBrokenName, "line ", "column ", "malformed"});
+
+  // the parser notices the damage at or after the line of the deleted brace
+  const int brace_line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + brace, '\n'));
+  const std::size_t at = message.find("line ");
+  ASSERT_NE(at, std::string::npos);
+  const int reported_line = std::stoi(message.substr(at + 5));
+  EXPECT_GE(reported_line, brace_line) << message;
+  EXPECT_LE(reported_line, static_cast<int>(std::count(text.begin(), text.end(), '\n')) + 1);
+}
+
+TEST(PresetErrors, MalformedJsonOnFirstLine) {
+  const std::string message = parse_error("{\"schema\": 1,, }");
+  expect_contains_all(message, {kBrokenName, "line 1", "malformed"});
+}
+
+TEST(PresetErrors, NotAnObject) {
+  const std::string message = parse_error("[1, 2, 3]");
+  expect_contains_all(message, {kBrokenName, "object"});
+}
+
+TEST(PresetErrors, UnknownBodyInContact) {
+  json preset = preset_json("grand");
+  preset["contacts"][3]["body_a"] = "sostenuto";
+  expect_preset_error(preset, {"contacts[3]", "body_a", "unknown body", "sostenuto"});
+}
+
+TEST(PresetErrors, UnknownFeltLaw) {
+  json preset = preset_json("grand");
+  preset["contacts"][0]["felt"] = "velvet";
+  expect_preset_error(preset, {"contacts[0]", "felt", "unknown felt law", "velvet"});
+}
+
+TEST(PresetErrors, UnsupportedSchema) {
+  json preset = preset_json("grand");
+  preset["schema"] = 2;
+  expect_preset_error(preset, {"schema", "unsupported schema 2"});
+}
+
+TEST(PresetErrors, MissingTopLevelList) {
+  json preset = preset_json("upright");
+  preset.erase("contacts");
+  expect_preset_error(preset, {"contacts", "missing"});
+}
+
+TEST(PresetErrors, UnknownKind) {
+  json preset = preset_json("grand");
+  preset["kind"] = "harpsichord";
+  expect_preset_error(preset, {"kind", "harpsichord"});
+}
+
+TEST(PresetErrors, MissingSourceOnBody) {
+  json preset = preset_json("grand");
+  preset["bodies"][1].erase("source");
+  expect_preset_error(preset, {"bodies[1]", "source", "missing"});
+}
+
+TEST(PresetErrors, MissingSourceOnFeltLaw) {
+  json preset = preset_json("grand");
+  const std::string law = preset["felts"].begin().key();
+  preset["felts"][law].erase("source");
+  expect_preset_error(preset, {"felts", "source", "missing"});
+}
+
+TEST(PresetErrors, NegativeStrapStiffness) {
+  json preset = preset_json("upright");
+  ASSERT_FALSE(preset["straps"].empty());
+  preset["straps"][0]["stiffness_n_per_mm"] = -2;
+  expect_preset_error(preset, {"straps[0]", "stiffness_n_per_mm", "must be positive"});
+}
+
+TEST(PresetErrors, UnknownAdjusterContact) {
+  json preset = preset_json("grand");
+  json& move = preset["adjusters"][0]["moves"][0];
+  ASSERT_TRUE(move.contains("contact"));
+  move["contact"] = "no such contact";
+  expect_preset_error(preset, {"adjusters[0]", "moves[0]", "contact", "unknown contact"});
+}
+
+TEST(PresetErrors, MissingFileNamesThePath) {
+  const std::string path = preset_path("no_such_preset");
+  try {
+    load_action(path);
+    FAIL() << "load_action accepted a missing file";
+  } catch (const InputError& e) {
+    expect_contains_all(e.what(), {"no_such_preset.json"});
+  }
+}
+
+TEST(PresetShipped, BothLoadByNameAndByPath) {
+  for (const char* name : {"grand", "upright"}) {
+    SCOPED_TRACE(name);
+    const ActionModel by_name = load_action(name);
+    const ActionModel by_path = load_action(preset_path(name));
+    EXPECT_EQ(by_name.kind, name);
+    EXPECT_EQ(by_path.kind, name);
+    EXPECT_FALSE(by_path.bodies.empty());
+    EXPECT_FALSE(by_path.contacts.empty());
+    EXPECT_FALSE(by_path.adjusters.empty());
+    EXPECT_EQ(by_name.bodies.size(), by_path.bodies.size());
+    EXPECT_EQ(by_name.contacts.size(), by_path.contacts.size());
+    EXPECT_EQ(by_path.source_file, preset_path(name));
+  }
+}
+
+// A "source" is a non-empty string, or an object of non-empty strings.
+bool has_source(const json& item) {
+  if (!item.is_object() || !item.contains("source")) return false;
+  const json& source = item["source"];
+  if (source.is_string()) return !source.get<std::string>().empty();
+  if (!source.is_object() || source.empty()) return false;
+  for (const auto& [key, value] : source.items())
+    if (!value.is_string() || value.get<std::string>().empty()) return false;
+  return true;
+}
+
+TEST(PresetShipped, EveryPartAndFeltLawHasASource) {
+  for (const char* name : {"grand", "upright"}) {
+    SCOPED_TRACE(name);
+    const json preset = preset_json(name);
+    int checked = 0;
+    for (const char* list : {"bodies", "contacts", "springs", "straps"}) {
+      if (!preset.contains(list)) continue;
+      ASSERT_TRUE(preset[list].is_array()) << list;
+      for (std::size_t i = 0; i < preset[list].size(); ++i) {
+        const json& item = preset[list][i];
+        EXPECT_TRUE(has_source(item)) << list << "[" << i << "] " << item.value("name", "");
+        ++checked;
+        // a felt law written inside a contact needs its own source too
+        if (item.contains("felt") && item["felt"].is_object()) {
+          EXPECT_TRUE(has_source(item["felt"])) << list << "[" << i << "].felt";
+          ++checked;
+        }
+      }
+    }
+    ASSERT_TRUE(preset.contains("felts"));
+    for (const auto& [law, value] : preset["felts"].items()) {
+      EXPECT_TRUE(has_source(value)) << "felts." << law;
+      ++checked;
+    }
+    EXPECT_GT(checked, 20);
+  }
+}
+
+TEST(PresetEdits, UnknownSettingNamesItAndTheChoices) {
+  const ActionModel grand = load_action("grand");
+  const std::string message =
+      edit_error(grand, [](const ActionModel& m) { with_setting(m, "nonsense=1"); });
+  expect_contains_all(message, {"nonsense", "let_off"});
+}
+
+TEST(PresetEdits, SettingOutOfRangeNamesItAndTheRange) {
+  const ActionModel grand = load_action("grand");
+  const std::string message =
+      edit_error(grand, [](const ActionModel& m) { with_setting(m, "let_off=99"); });
+  expect_contains_all(message, {"let_off", "99", "range", "[-4 mm, 4 mm]"});
+}
+
+TEST(PresetEdits, SettingWithoutANumber) {
+  const ActionModel grand = load_action("grand");
+  expect_contains_all(
+      edit_error(grand, [](const ActionModel& m) { with_setting(m, "let_off=wide"); }),
+      {"let_off=wide", "not a number"});
+  expect_contains_all(edit_error(grand, [](const ActionModel& m) { with_setting(m, "let_off"); }),
+                      {"let_off", "NAME=MM"});
+}
+
+TEST(PresetEdits, SettingInRangeIsApplied) {
+  const ActionModel grand = load_action("grand");
+  const ActionModel set = with_setting(grand, "let_off=0.5");
+  const int index = set.adjuster_index("let_off");
+  ASSERT_GE(index, 0);
+  EXPECT_DOUBLE_EQ(set.adjusters[index].value, 0.5e-3);
+}
+
+TEST(PresetEdits, WithoutBridleOnTheUpright) {
+  const ActionModel upright = load_action("upright");
+  ASSERT_GE(upright.strap_index("bridle"), 0);
+  const ActionModel without = without_part(upright, "bridle");
+  EXPECT_LT(without.strap_index("bridle"), 0);
+  EXPECT_EQ(without.straps.size() + 1, upright.straps.size());
+  EXPECT_EQ(without.springs.size(), upright.springs.size());
+  ASSERT_EQ(without.removed_parts.size(), 1u);
+  EXPECT_EQ(without.removed_parts[0], "bridle");
+  EXPECT_GE(upright.strap_index("bridle"), 0);  // the original is unchanged
+}
+
+TEST(PresetEdits, WithoutBridleOnTheGrandListsRemovableParts) {
+  const ActionModel grand = load_action("grand");
+  const std::string message =
+      edit_error(grand, [](const ActionModel& m) { without_part(m, "bridle"); });
+  expect_contains_all(message, {"bridle", "grand", "removable parts"});
+  for (const JointSpring& spring : grand.springs)
+    EXPECT_NE(message.find(spring.name), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace pat
