@@ -4,8 +4,8 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/bench.h"
-#include "commands.h"
 #include "command_line.h"
+#include "commands.h"
 
 namespace pat::app {
 
@@ -18,16 +18,19 @@ int run_bench(const std::vector<std::string>& args) {
   if (cl.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const BenchCase& c : cases)
-      list.push_back({{"action", c.action},
-                      {"integrator", c.integrator},
-                      {"setting", c.setting},
-                      {"realtime_factor", c.realtime_factor},
-                      {"wall_time_s", c.wall_time_s},
-                      {"steps", c.steps},
-                      {"max_error_deg", c.max_error_deg},
-                      {"max_error_percent_of_range", 100.0 * c.max_error_deg / c.hammer_range_deg}});
-    std::cout << nlohmann::json{{"input", options.input}, {"duration_s", options.duration_s},
-                                {"reference", "rodas rtol=1e-9"}, {"cases", list}}
+      list.push_back(
+          {{"action", c.action},
+           {"integrator", c.integrator},
+           {"setting", c.setting},
+           {"realtime_factor", c.realtime_factor},
+           {"wall_time_s", c.wall_time_s},
+           {"steps", c.steps},
+           {"max_error_deg", c.max_error_deg},
+           {"max_error_percent_of_range", 100.0 * c.max_error_deg / c.hammer_range_deg}});
+    std::cout << nlohmann::json{{"input", options.input},
+                                {"duration_s", options.duration_s},
+                                {"reference", "rodas rtol=1e-9"},
+                                {"cases", list}}
                      .dump(1)
               << "\n";
     return 0;
@@ -36,7 +39,8 @@ int run_bench(const std::vector<std::string>& args) {
             << " s simulated; error = max |hammer angle - rodas(rtol 1e-9)|\n";
   std::cout << std::left << std::setw(9) << "action" << std::setw(8) << "method" << std::setw(12)
             << "setting" << std::right << std::setw(12) << "x realtime" << std::setw(10) << "steps"
-            << std::setw(14) << "error (deg)" << std::setw(12) << "% of range" << "\n";
+            << std::setw(14) << "error (deg)" << std::setw(12) << "% of range"
+            << "\n";
   for (const BenchCase& c : cases)
     std::cout << std::left << std::setw(9) << c.action << std::setw(8) << c.integrator
               << std::setw(12) << c.setting << std::right << std::setw(12) << std::fixed

@@ -13,8 +13,8 @@ namespace pat::app {
 nlohmann::json events_json(const std::vector<SimEvent>& events) {
   nlohmann::json list = nlohmann::json::array();
   for (const SimEvent& e : events) {
-    nlohmann::json item{{"type", e.type}, {"t_s", e.t},
-                        {"hammer_string_gap_mm", e.hammer_string_gap * 1e3}};
+    nlohmann::json item{
+        {"type", e.type}, {"t_s", e.t}, {"hammer_string_gap_mm", e.hammer_string_gap * 1e3}};
     if (e.type == "impact") item["hammer_velocity_mps"] = e.hammer_velocity;
     list.push_back(item);
   }
@@ -57,7 +57,8 @@ int run_simulate(const std::vector<std::string>& args) {
   } else {
     std::cout << model.name << ", input " << input->spec() << ", " << options.integrator << ": "
               << result.status;
-    if (result.status != "ok") std::cout << " at t = " << result.end_time << " s (" << result.stop_cause << ")";
+    if (result.status != "ok")
+      std::cout << " at t = " << result.end_time << " s (" << result.stop_cause << ")";
     std::cout << "\n";
     for (const SimEvent& e : result.events) {
       std::cout << "  " << e.t * 1e3 << " ms  " << e.type << "  hammer-string gap "
@@ -65,8 +66,7 @@ int run_simulate(const std::vector<std::string>& args) {
       if (e.type == "impact") std::cout << "  hammer velocity " << e.hammer_velocity << " m/s";
       std::cout << "\n";
     }
-    std::cout << "  " << result.steps << " steps, " << result.realtime_factor
-              << "x real time\n";
+    std::cout << "  " << result.steps << " steps, " << result.realtime_factor << "x real time\n";
     if (!out_path.empty()) std::cout << "  trace written to " << out_path << "\n";
   }
   return 0;

@@ -45,9 +45,9 @@ std::vector<BenchCase> run_bench(const BenchOptions& options) {
       const char* label;
       double value;
     };
-    const Variant variants[] = {{"w2", "h_s", 1e-5},          {"rodas", "rtol", 1e-6},
-                                {"cvode", "rtol", 1e-4},      {"cvode", "rtol", 1e-5},
-                                {"cvode", "rtol", 1e-6},      {"cvode", "rtol", 1e-7}};
+    const Variant variants[] = {{"w2", "h_s", 1e-5},     {"rodas", "rtol", 1e-6},
+                                {"cvode", "rtol", 1e-4}, {"cvode", "rtol", 1e-5},
+                                {"cvode", "rtol", 1e-6}, {"cvode", "rtol", 1e-7}};
     for (const Variant& v : variants) {
       SimulationOptions o;
       o.duration_s = options.duration_s;

@@ -9,10 +9,10 @@
 namespace pat {
 
 struct BenchCase {
-  std::string action;       ///< grand, upright
-  std::string integrator;   ///< w2, rodas, cvode
-  std::string setting;      ///< step or tolerance, e.g. "h=1e-05 s" or "rtol=1e-06"
-  double realtime_factor = 0.0;   ///< simulated seconds per wall-clock second
+  std::string action;            ///< grand, upright
+  std::string integrator;        ///< w2, rodas, cvode
+  std::string setting;           ///< step or tolerance, e.g. "h=1e-05 s" or "rtol=1e-06"
+  double realtime_factor = 0.0;  ///< simulated seconds per wall-clock second
   double wall_time_s = 0.0;
   long steps = 0;
   double max_error_deg = 0.0;     ///< max |hammer angle − reference| over the run

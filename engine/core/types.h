@@ -28,9 +28,13 @@ using StateVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxState, 1>;
 using StateMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxState, kMaxState>;
 
 /// z-component of the planar cross product a × b.
-inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+inline double cross2(const Vec2& a, const Vec2& b) {
+  return a.x() * b.y() - a.y() * b.x();
+}
 /// ẑ × v: v rotated by +90°.
-inline Vec2 perp(const Vec2& v) { return Vec2(-v.y(), v.x()); }
+inline Vec2 perp(const Vec2& v) {
+  return Vec2(-v.y(), v.x());
+}
 /// Rotation of v by angle (rad, counter-clockwise).
 inline Vec2 rotate(const Vec2& v, double c, double s) {
   return Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
@@ -38,7 +42,11 @@ inline Vec2 rotate(const Vec2& v, double c, double s) {
 
 inline constexpr double kPi = 3.14159265358979323846;
 inline constexpr double kGravity = 9.81;  // m/s², standard value used throughout
-inline double deg(double rad) { return rad * 180.0 / kPi; }
-inline double rad(double degrees) { return degrees * kPi / 180.0; }
+inline double deg(double rad) {
+  return rad * 180.0 / kPi;
+}
+inline double rad(double degrees) {
+  return degrees * kPi / 180.0;
+}
 
 }  // namespace pat

@@ -4,8 +4,18 @@
 
 #include "dynamics/contact_geometry.h"
 #include "dynamics/force_laws.h"
+#include "dynamics/small_cholesky.h"
 
 namespace pat {
+namespace {
+
+/// Accelerations from M a = f; a non-positive-definite M (never for a valid model) gives NaN,
+/// which the integrators report as a failure.
+void solve_or_nan(DofMatrix& mass, DofVector& forces) {
+  if (!cholesky_solve_in_place(mass, forces)) forces.setConstant(std::nan(""));
+}
+
+}  // namespace
 
 ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
     : model_(model), input_(input) {
@@ -101,6 +111,29 @@ void ActionDynamics::applied_key_force(double t, const DofVector& q, DofVector& 
     add_point_force(key_, transform(key_, model_.landmarks.key_front), Vec2(0.0, -f), forces);
 }
 
+bool ActionDynamics::contact_patch(const Contact& contact, ContactPatch& patch) const {
+  const Vec2 center_a = transform(contact.body_a, contact.center_a);
+  if (contact.shape == ContactShape::CircleCircle)
+    return circle_circle_patch(center_a, contact.radius_a,
+                               transform(contact.body_b, contact.center_b), contact.radius_b,
+                               patch);
+  const Vec2 n = contact.body_b < 0 ? contact.segment_normal
+                                    : rotate(contact.segment_normal, kin_[contact.body_b].cos,
+                                             kin_[contact.body_b].sin);
+  return circle_segment_patch(
+      center_a, contact.radius_a, transform(contact.body_b, contact.segment_start),
+      transform(contact.body_b, contact.segment_end), n, contact.radius_b, patch);
+}
+
+void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
+  update_kinematics(q, DofVector::Zero(n_));
+  penetration.resize(model_.contacts.size());
+  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
+    ContactPatch patch;
+    penetration[c] = contact_patch(model_.contacts[c], patch) ? patch.penetration : 0.0;
+  }
+}
+
 void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v, DofMatrix& mass,
                               DofVector& forces, std::vector<ContactReading>* readings,
                               std::vector<double>* tensions) {
@@ -134,23 +167,8 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v, 
   regime_ = 0;
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
     const Contact& contact = model_.contacts[c];
-    const Vec2 center_a = transform(contact.body_a, contact.center_a);
     ContactPatch patch;
-    bool touching;
-    if (contact.shape == ContactShape::CircleCircle) {
-      touching = circle_circle_patch(center_a, contact.radius_a,
-                                     transform(contact.body_b, contact.center_b), contact.radius_b,
-                                     patch);
-    } else {
-      const Vec2 n = contact.body_b < 0
-                         ? contact.segment_normal
-                         : rotate(contact.segment_normal, kin_[contact.body_b].cos,
-                                  kin_[contact.body_b].sin);
-      touching = circle_segment_patch(center_a, contact.radius_a,
-                                      transform(contact.body_b, contact.segment_start),
-                                      transform(contact.body_b, contact.segment_end), n,
-                                      contact.radius_b, patch);
-    }
+    const bool touching = contact_patch(contact, patch);
     if (!touching) {
       if (readings) (*readings)[c] = ContactReading{};
       continue;
@@ -188,8 +206,8 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v, 
     if (length > strap_rest_length_[s] && length > 1e-12) {
       const Vec2 dir = d / length;
       const double rate = dir.dot(velocity_at(strap.body_b, pb) - velocity_at(strap.body_a, pa));
-      tension = std::max(
-          strap.stiffness * (length - strap_rest_length_[s]) + strap.damping * rate, 0.0);
+      tension =
+          std::max(strap.stiffness * (length - strap_rest_length_[s]) + strap.damping * rate, 0.0);
       add_point_force(strap.body_a, pa, tension * dir, forces);
       add_point_force(strap.body_b, pb, -tension * dir, forces);
     }
@@ -228,7 +246,8 @@ void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
   dydt.resize(2 * free_count_);
   if (!key_prescribed_) {
     dydt.head(free_count_) = y.tail(free_count_);
-    dydt.tail(free_count_) = scratch_mass_.llt().solve(scratch_forces_);
+    solve_or_nan(scratch_mass_, scratch_forces_);
+    dydt.tail(free_count_) = scratch_forces_;
     return;
   }
   const double key_acc = input_->motion(t).acceleration;
@@ -240,7 +259,8 @@ void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
     for (int j = 0; j < free_count_; ++j) mff(i, j) = scratch_mass_(ji, free_index_[j]);
   }
   dydt.head(free_count_) = y.tail(free_count_);
-  dydt.tail(free_count_) = mff.llt().solve(rhs_f);
+  solve_or_nan(mff, rhs_f);
+  dydt.tail(free_count_) = rhs_f;
 }
 
 void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
@@ -255,13 +275,13 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
   const Vec2 front = transform(key_, model_.landmarks.key_front);
   const double arm = cross2(front - kin_[key_].origin, Vec2(0.0, -1.0));
   if (!key_prescribed_) {
-    out.acceleration = mass.llt().solve(forces);
+    out.acceleration = forces;
+    solve_or_nan(mass, out.acceleration);
     if (!input_) {
       out.finger_force = 0.0;
     } else if (input_->added_mass_kg() > 0.0) {
       // the force the mass exerts on the key: m (g − downward acceleration of the key front)
-      out.finger_force =
-          input_->added_mass_kg() * (kGravity - arm * out.acceleration[key_]);
+      out.finger_force = input_->added_mass_kg() * (kGravity - arm * out.acceleration[key_]);
     } else {
       out.finger_force = input_->force_n(t);
     }
@@ -275,7 +295,8 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
     rhs_f[i] = forces[ji] - mass(ji, key_) * key_acc;
     for (int j = 0; j < free_count_; ++j) mff(i, j) = mass(ji, free_index_[j]);
   }
-  const DofVector acc_f = mff.llt().solve(rhs_f);
+  DofVector acc_f = rhs_f;
+  solve_or_nan(mff, acc_f);
   for (int i = 0; i < free_count_; ++i) out.acceleration[free_index_[i]] = acc_f[i];
   out.acceleration[key_] = key_acc;
   const double residual = mass.row(key_).dot(out.acceleration) - forces[key_];
@@ -315,7 +336,8 @@ double ActionDynamics::mechanical_energy(const DofVector& q, const DofVector& v)
     energy -= mass_[k] * model_.gravity.dot(c);
   }
   for (const JointSpring& spring : model_.springs)
-    energy += 0.5 * spring.stiffness * q[spring.body] * q[spring.body] - spring.preload * q[spring.body];
+    energy +=
+        0.5 * spring.stiffness * q[spring.body] * q[spring.body] - spring.preload * q[spring.body];
   return energy;
 }
 

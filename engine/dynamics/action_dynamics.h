@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/contact_geometry.h"
 #include "inputs/key_input.h"
 #include "integrators/ode_system.h"
 #include "model/action_model.h"
@@ -37,8 +38,8 @@ struct ContactReading {
 
 /// Everything evaluated at one (t, q, q̇).
 struct DynamicsReading {
-  DofVector acceleration;          ///< q̈ of every joint (prescribed key included)
-  double finger_force = 0.0;       ///< downward force at the key front, N
+  DofVector acceleration;     ///< q̈ of every joint (prescribed key included)
+  double finger_force = 0.0;  ///< downward force at the key front, N
   std::vector<ContactReading> contacts;
   std::vector<double> strap_tension;  ///< N
 };
@@ -69,6 +70,10 @@ class ActionDynamics : public OdeSystem {
   /// Evaluates accelerations, contact readings and the finger force at full (q, q̇).
   void evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out);
 
+  /// Contact penetrations at q (m; ≤ 0 where apart), geometry only: cheap enough to call after
+  /// every step for events and for the unphysical-penetration check.
+  void contact_penetrations(const DofVector& q, std::vector<double>& penetration);
+
   /// Mass matrix at q (the point mass of a mass input included).
   DofMatrix mass_matrix(const DofVector& q);
 
@@ -92,11 +97,14 @@ class ActionDynamics : public OdeSystem {
   Vec2 transform(int body, const Vec2& rest_point) const;
   Vec2 velocity_at(int body, const Vec2& world_point) const;
   /// Adds the generalized force of a force F applied at world point P of `body`.
-  void add_point_force(int body, const Vec2& point, const Vec2& force, DofVector& generalized) const;
+  void add_point_force(int body, const Vec2& point, const Vec2& force,
+                       DofVector& generalized) const;
   void assemble(double t, const DofVector& q, const DofVector& v, DofMatrix& mass,
                 DofVector& forces, std::vector<ContactReading>* readings,
                 std::vector<double>* tensions);
   void applied_key_force(double t, const DofVector& q, DofVector& forces) const;
+  /// Geometry of contact c at the current kinematics; false when apart.
+  bool contact_patch(const Contact& contact, ContactPatch& patch) const;
 
   const ActionModel& model_;
   const KeyInput* input_;
@@ -104,8 +112,8 @@ class ActionDynamics : public OdeSystem {
   int key_ = 0;
   bool key_prescribed_ = false;
   int free_count_ = 0;
-  std::vector<int> free_index_;           // integrated coordinate → joint
-  std::vector<std::vector<int>> chain_;   // ancestors of each body, itself included
+  std::vector<int> free_index_;          // integrated coordinate → joint
+  std::vector<std::vector<int>> chain_;  // ancestors of each body, itself included
   // mass properties with a mass input folded into the key
   std::vector<double> mass_;
   std::vector<Vec2> com_;

@@ -23,6 +23,8 @@ namespace {
 
 constexpr double kMinStep = 1e-12;  // less left before t_max: just move time there (s)
 constexpr long kMaxInternalSteps = 10'000'000;
+// Smallest internal step (s): ends the creep towards a point where f stops being finite.
+constexpr double kMinInternalStep = 1e-14;
 
 std::string format_time(double t) {
   char buffer[32];
@@ -159,13 +161,14 @@ void CvodeIntegrator::initialize(OdeSystem& system, double t0, const StateVector
                "CVodeSetErrHandlerFn");
     impl.check(CVodeInit(impl.memory, &Impl::rhs, t0, impl.y), "CVodeInit");
     impl.check(CVodeSetUserData(impl.memory, &impl), "CVodeSetUserData");
-    impl.check(CVodeSStolerances(impl.memory, options_.relative_tolerance,
-                                 options_.absolute_tolerance),
-               "CVodeSStolerances");
+    impl.check(
+        CVodeSStolerances(impl.memory, options_.relative_tolerance, options_.absolute_tolerance),
+        "CVodeSStolerances");
     impl.check(CVodeSetLinearSolver(impl.memory, impl.linear_solver, impl.matrix),
                "CVodeSetLinearSolver");
     impl.check(CVodeSetMaxStep(impl.memory, options_.max_step_s), "CVodeSetMaxStep");
     impl.check(CVodeSetMaxNumSteps(impl.memory, kMaxInternalSteps), "CVodeSetMaxNumSteps");
+    impl.check(CVodeSetMinStep(impl.memory, kMinInternalStep), "CVodeSetMinStep");
   } catch (...) {
     impl.release();
     throw;

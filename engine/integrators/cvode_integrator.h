@@ -3,7 +3,8 @@
 //
 // Local error control: ‖e‖_WRMS ≤ 1 with weights 1 / (rtol · |y_i| + atol).
 // One step() call = one internal CVODE step (CV_ONE_STEP) with the stop time t_max, so steps
-// never pass t_max. Largest step options.max_step_s (s); at most 1e7 internal steps.
+// never pass t_max. Largest step options.max_step_s, smallest 1e-14 s; at most 1e7 internal
+// steps. A non-finite f is reported to CVODE as recoverable (it retries with a smaller step).
 // SUNDIALS stays out of this header: its objects live in a private Impl, freed by the destructor.
 #pragma once
 

@@ -9,8 +9,8 @@
 namespace pat {
 
 struct IntegratorOptions {
-  double fixed_step_s = 1e-5;       ///< w2: step size
-  int jacobian_refresh_steps = 20;  ///< w2: Jacobian age limit (also refreshed on regime change)
+  double fixed_step_s = 1e-5;        ///< w2: step size
+  int jacobian_refresh_steps = 20;   ///< w2: Jacobian age limit (also refreshed on regime change)
   double relative_tolerance = 1e-6;  ///< rodas, cvode
   double absolute_tolerance = 1e-8;  ///< rodas, cvode (on every component of y)
   double max_step_s = 1e-3;          ///< rodas, cvode: largest step allowed

@@ -13,7 +13,7 @@ namespace pat {
 
 namespace {
 
-constexpr double kMinStep = 1e-12;   // less left before t_max: just move time there (s)
+constexpr double kMinStep = 1e-12;    // less left before t_max: just move time there (s)
 constexpr double kUnderflow = 1e-14;  // smallest step attempted (s)
 constexpr double kInitialStep = 1e-6;
 
@@ -133,8 +133,9 @@ StepStatus Rodas4::step(double t_max) {
 
     double err = 0.0;
     for (int i = 0; i < dim_; ++i) {
-      const double scale = options_.absolute_tolerance +
-                           options_.relative_tolerance * std::max(std::abs(y_[i]), std::abs(y_new_[i]));
+      const double scale =
+          options_.absolute_tolerance +
+          options_.relative_tolerance * std::max(std::abs(y_[i]), std::abs(y_new_[i]));
       const double e = u_[kStages - 1][i] / scale;
       err += e * e;
     }

@@ -15,6 +15,7 @@ namespace {
 
 // Less than this much time left before t_max: move time there without a step (s).
 constexpr double kMinStep = 1e-12;
+const double kSqrtEps = std::sqrt(std::numeric_limits<double>::epsilon());
 
 std::string format_number(double value) {
   char buffer[32];
@@ -22,7 +23,9 @@ std::string format_number(double value) {
   return buffer;
 }
 
-std::string format_time(double t) { return format_number(t) + " s"; }
+std::string format_time(double t) {
+  return format_number(t) + " s";
+}
 
 }  // namespace
 
@@ -31,14 +34,13 @@ void forward_difference_jacobian(OdeSystem& system, double t, const StateVector&
                                  StateMatrix& jacobian) {
   const int dim = static_cast<int>(y.size());
   const int n = system.dofs();
-  const double sqrt_eps = std::sqrt(std::numeric_limits<double>::epsilon());
   y_work = y;
   f_work.resize(dim);
   jacobian.resize(dim, dim);
   for (int j = 0; j < dim; ++j) {
     const double scale = (n > 0 && j >= n && j < 2 * n) ? 1e-1 : 1e-3;
     const double y_j = y[j];
-    const double y_plus = y_j + sqrt_eps * std::max(std::abs(y_j), scale);
+    const double y_plus = y_j + kSqrtEps * std::max(std::abs(y_j), scale);
     const double delta = y_plus - y_j;  // the increment actually represented
     y_work[j] = y_plus;
     system.rhs(t, y_work, f_work);
@@ -49,8 +51,8 @@ void forward_difference_jacobian(OdeSystem& system, double t, const StateVector&
 
 WMethod2::WMethod2(const IntegratorOptions& options) : options_(options) {
   if (!(options.fixed_step_s > 0.0) || !std::isfinite(options.fixed_step_s)) {
-    throw InputError("w2: fixed step must be positive (got " +
-                     format_time(options.fixed_step_s) + ")");
+    throw InputError("w2: fixed step must be positive (got " + format_time(options.fixed_step_s) +
+                     ")");
   }
   if (options.jacobian_refresh_steps < 1) {
     throw InputError("w2: Jacobian refresh interval must be at least 1 step (got " +
@@ -86,7 +88,7 @@ void WMethod2::initialize(OdeSystem& system, double t0, const StateVector& y0) {
   steps_since_jacobian_ = 0;
   factored_ = false;
   factored_h_ = 0.0;
-  for (StateVector* v : {&f0_, &f1_, &k1_, &k2_, &y_stage_, &r_, &y_work_, &f_work_}) {
+  for (StateVector* v : {&f0_, &f1_, &f_t_, &k1_, &k2_, &y_stage_, &r_, &y_work_, &f_work_}) {
     v->setZero(dim);
   }
   schur_rhs_.setZero(dofs);
@@ -163,16 +165,31 @@ StepStatus WMethod2::step(double t_max) {
       regime != jacobian_regime_) {
     evaluate_jacobian(regime);
   }
-  // A W-method stays order 2 for any W, so W from a step 1e-12 (relative) away is kept.
+  // W built for a step within 1e-12 (relative) is kept: same as J scaled by h_factored / h,
+  // and a W-method is order 2 for any J.
   if (!factored_ || std::abs(h - factored_h_) > 1e-12 * factored_h_) factor(h);
 
-  // K1 = W⁻¹ f(t, y)
-  solve(f0_, k1_);
-  // K2 = W⁻¹ [f(t + h, y + h K1) − 2 K1]
+  const double hg = kGamma * h;
+  if (use_time_derivative_) {
+    const double t_plus = t_ + kSqrtEps * std::max(std::abs(t_), 1e-3);
+    system_->rhs(t_plus, y_, f_work_);
+    ++stats_.rhs_evaluations;
+    f_t_ = (f_work_ - f0_) / (t_plus - t_);
+  }
+
+  // K1 = W⁻¹ [f(t, y) (+ γh f_t)]
+  if (use_time_derivative_) {
+    r_ = f0_ + hg * f_t_;
+    solve(r_, k1_);
+  } else {
+    solve(f0_, k1_);
+  }
+  // K2 = W⁻¹ [f(t + h, y + h K1) − 2 K1 (− γh f_t)]
   y_stage_ = y_ + h * k1_;
   system_->rhs(t_ + h, y_stage_, f1_);
   ++stats_.rhs_evaluations;
   r_ = f1_ - 2.0 * k1_;
+  if (use_time_derivative_) r_ -= hg * f_t_;
   solve(r_, k2_);
   // y⁺ = y + 1.5 h K1 + 0.5 h K2
   y_stage_ = y_ + (1.5 * h) * k1_ + (0.5 * h) * k2_;

@@ -6,9 +6,13 @@
 //   K2 = W⁻¹ [ f(t + h, y + h K1) − 2 K1 ]
 //   y⁺ = y + (3/2) h K1 + (1/2) h K2
 //
-// f_t is dropped (allowed for W-methods, order 2 is kept). J is frozen: it is re-evaluated on the
-// first step, every `jacobian_refresh_steps` accepted steps and whenever the system's regime()
-// (seen after f(t, y)) differs from the one at the last Jacobian evaluation.
+// f_t is dropped by default (a W-method may use a zero t column in J: order 2 is kept). On a stiff
+// component driven by a time-dependent input (y' = λ(y − g(t)) + g'(t), |hλ| ≫ 1) that leaves an
+// O(h) lag, about 0.6 h·g'; set_time_derivative(true) adds the f_t terms (one more f per step):
+//   K1 = W⁻¹ [f(t, y) + γh f_t],   K2 = W⁻¹ [f(t + h, y + h K1) − 2 K1 − γh f_t].
+// J is frozen: it is re-evaluated on the first step, every `jacobian_refresh_steps` accepted steps
+// and whenever the system's regime() (seen after f(t, y)) differs from the one at the last
+// Jacobian evaluation.
 //
 // For a second-order system y = (q, v), q' = v (n = dofs() > 0), J = [[0, I], [A_q, A_v]] and
 // W x = r is solved through the n×n Schur complement
@@ -31,8 +35,9 @@ namespace pat {
 /// Forward-difference Jacobian J = ∂f/∂y at (t, y), given f0 = f(t, y):
 ///   J(:, j) = (f(t, y + Δ_j e_j) − f0) / Δ_j,   Δ_j = √ε · max(|y_j|, s_j),
 /// typical scale s_j = 1e-1 for the velocities v (rad/s, j in [n, 2n) when n = dofs() > 0) and
-/// s_j = 1e-3 for everything else (positions in rad, general first-order states). Calls system.rhs dimension() times;
-/// y_work and f_work are scratch vectors of length dimension(). No heap allocation.
+/// s_j = 1e-3 for everything else (positions in rad, general first-order states). Calls system.rhs
+/// dimension() times; y_work and f_work are scratch vectors of length dimension(). No heap
+/// allocation.
 void forward_difference_jacobian(OdeSystem& system, double t, const StateVector& y,
                                  const StateVector& f0, StateVector& y_work, StateVector& f_work,
                                  StateMatrix& jacobian);
@@ -40,8 +45,8 @@ void forward_difference_jacobian(OdeSystem& system, double t, const StateVector&
 class WMethod2 final : public Integrator {
  public:
   /// Fills jacobian (dim×dim, already sized) with an approximation of ∂f/∂y at (t, y).
-  using JacobianFunction = std::function<void(double t, const StateVector& y,
-                                              StateMatrix& jacobian)>;
+  using JacobianFunction =
+      std::function<void(double t, const StateVector& y, StateMatrix& jacobian)>;
 
   /// γ = 1 − 1/√2.
   static constexpr double kGamma = 0.29289321881345247559915563789515;
@@ -54,6 +59,10 @@ class WMethod2 final : public Integrator {
   /// (A_q, A_v) are used: the upper rows are [0 I] by construction. Pass {} to restore the
   /// finite differences.
   void set_jacobian_override(JacobianFunction jacobian);
+
+  /// Includes the γh·f_t terms, f_t = ∂f/∂t by a forward difference in t at every step
+  /// (increment √ε · max(|t|, 1e-3 s)). Off by default.
+  void set_time_derivative(bool enabled) { use_time_derivative_ = enabled; }
 
   void initialize(OdeSystem& system, double t0, const StateVector& y0) override;
   /// One step of h = fixed_step_s, shortened to land exactly on t_max; if less than 1e-12 s
@@ -74,6 +83,7 @@ class WMethod2 final : public Integrator {
 
   IntegratorOptions options_;
   JacobianFunction jacobian_override_;
+  bool use_time_derivative_ = false;
   OdeSystem* system_ = nullptr;
   int dim_ = 0;
   int dofs_ = 0;
@@ -95,7 +105,7 @@ class WMethod2 final : public Integrator {
   Eigen::PartialPivLU<DofMatrix> lu_schur_;
 
   // Scratch (sized in initialize(), no heap: fixed maximum size).
-  StateVector f0_, f1_, k1_, k2_, y_stage_, r_, y_work_, f_work_;
+  StateVector f0_, f1_, f_t_, k1_, k2_, y_stage_, r_, y_work_, f_work_;
   DofVector schur_rhs_, x_v_;
 };
 

@@ -12,10 +12,20 @@ int find_named(const std::vector<T>& items, const std::string& name) {
 
 }  // namespace
 
-int ActionModel::body_index(const std::string& n) const { return find_named(bodies, n); }
-int ActionModel::contact_index(const std::string& n) const { return find_named(contacts, n); }
-int ActionModel::spring_index(const std::string& n) const { return find_named(springs, n); }
-int ActionModel::strap_index(const std::string& n) const { return find_named(straps, n); }
-int ActionModel::adjuster_index(const std::string& n) const { return find_named(adjusters, n); }
+int ActionModel::body_index(const std::string& n) const {
+  return find_named(bodies, n);
+}
+int ActionModel::contact_index(const std::string& n) const {
+  return find_named(contacts, n);
+}
+int ActionModel::spring_index(const std::string& n) const {
+  return find_named(springs, n);
+}
+int ActionModel::strap_index(const std::string& n) const {
+  return find_named(straps, n);
+}
+int ActionModel::adjuster_index(const std::string& n) const {
+  return find_named(adjusters, n);
+}
 
 }  // namespace pat

@@ -18,20 +18,20 @@ namespace pat {
 /// Joint friction torque law (paper eq. 4, after Hirschkorn):
 ///   T = A (tanh(ω/ωt) + B1 (ω/ωt) / (1 + B2 (ω/ωt)^4)),   opposing the joint rate ω (rad/s).
 struct JointFriction {
-  double a_nm = 0.0;          ///< A, N·m
-  double b1 = 0.0;            ///< B1, dimensionless
-  double b2 = 0.0;            ///< B2, dimensionless
-  double omega_t = 1.0;       ///< ωt, rad/s
+  double a_nm = 0.0;     ///< A, N·m
+  double b1 = 0.0;       ///< B1, dimensionless
+  double b2 = 0.0;       ///< B2, dimensionless
+  double omega_t = 1.0;  ///< ωt, rad/s
 };
 
 /// A rigid body on a revolute joint; the joint has the body's name.
 struct Body {
   std::string name;
-  int parent = -1;            ///< index of the parent body, -1 for the frame (ground)
-  Vec2 pivot;                 ///< joint centre, m
-  double mass = 0.0;          ///< kg
-  Vec2 com;                   ///< centre of mass, m
-  double inertia_com = 0.0;   ///< moment of inertia about the centre of mass, kg·m²
+  int parent = -1;           ///< index of the parent body, -1 for the frame (ground)
+  Vec2 pivot;                ///< joint centre, m
+  double mass = 0.0;         ///< kg
+  Vec2 com;                  ///< centre of mass, m
+  double inertia_com = 0.0;  ///< moment of inertia about the centre of mass, kg·m²
   JointFriction friction;
   /// +1 or −1: the sign that makes this body's trace angle positive in the direction of
   /// DESIGN.md section 5 (key front down, hammer toward the string, others: the way the key
@@ -43,8 +43,8 @@ struct Body {
 /// Fixed parts drawn with the action (rails, string, buttons); they move only with adjusters.
 struct Fixture {
   std::string name;
-  std::vector<Vec2> outline;  ///< m
-  std::string adjuster;       ///< name of the adjuster that moves it, or empty
+  std::vector<Vec2> outline;               ///< m
+  std::string adjuster;                    ///< name of the adjuster that moves it, or empty
   Vec2 adjuster_direction = Vec2::Zero();  ///< unit direction of that motion
 };
 
@@ -67,8 +67,8 @@ struct FeltLaw {
 /// Regularized Coulomb friction that saturates with the tangential slip velocity:
 ///   F_t = −μ F_n tanh(v_t / v_s).
 struct ContactFriction {
-  double mu = 0.0;               ///< friction coefficient (0: frictionless contact)
-  double slip_velocity = 1e-3;   ///< v_s, m/s
+  double mu = 0.0;              ///< friction coefficient (0: frictionless contact)
+  double slip_velocity = 1e-3;  ///< v_s, m/s
 };
 
 enum class ContactShape {
@@ -81,16 +81,16 @@ enum class ContactShape {
 /// The normal points from B toward A; penetration x > 0 means overlap.
 struct Contact {
   std::string name;
-  int body_a = -1;            ///< -1: the frame
+  int body_a = -1;  ///< -1: the frame
   int body_b = -1;
   ContactShape shape = ContactShape::CircleSegment;
-  Vec2 center_a;              ///< m
-  double radius_a = 0.0;      ///< m
-  Vec2 center_b;              ///< CircleCircle: centre of B's circle, m
-  double radius_b = 0.0;      ///< CircleCircle: radius; CircleSegment: corner radius, m
-  Vec2 segment_start;         ///< CircleSegment: end points on B, m
+  Vec2 center_a;          ///< m
+  double radius_a = 0.0;  ///< m
+  Vec2 center_b;          ///< CircleCircle: centre of B's circle, m
+  double radius_b = 0.0;  ///< CircleCircle: radius; CircleSegment: corner radius, m
+  Vec2 segment_start;     ///< CircleSegment: end points on B, m
   Vec2 segment_end;
-  Vec2 segment_normal;        ///< CircleSegment: unit normal toward A's free side
+  Vec2 segment_normal;  ///< CircleSegment: unit normal toward A's free side
   FeltLaw law;
   ContactFriction friction;
   double max_penetration = 3e-3;  ///< beyond this the run stops as unphysical, m
@@ -101,8 +101,8 @@ struct Contact {
 struct JointSpring {
   std::string name;
   int body = -1;
-  double stiffness = 0.0;     ///< k, N·m/rad
-  double preload = 0.0;       ///< τ0, N·m
+  double stiffness = 0.0;  ///< k, N·m/rad
+  double preload = 0.0;    ///< τ0, N·m
 };
 
 /// A tension-only strap (the upright's bridle strap) between two body points:
@@ -113,16 +113,16 @@ struct Strap {
   Vec2 point_a;
   int body_b = -1;
   Vec2 point_b;
-  double slack = 0.0;          ///< m (adjusted by an adjuster)
-  double stiffness = 0.0;      ///< N/m
-  double damping = 0.0;        ///< N·s/m
+  double slack = 0.0;      ///< m (adjusted by an adjuster)
+  double stiffness = 0.0;  ///< N/m
+  double damping = 0.0;    ///< N·s/m
 };
 
 /// Which geometric feature an adjuster moves.
 struct AdjusterEffect {
   enum class Target { ContactA, ContactB, StrapSlack, StrapPointA, StrapPointB };
   Target target = Target::ContactB;
-  int index = -1;              ///< contact or strap index
+  int index = -1;                 ///< contact or strap index
   Vec2 direction = Vec2::Zero();  ///< unit direction of the motion (for geometry targets)
 };
 
@@ -130,36 +130,36 @@ struct AdjusterEffect {
 /// a distance (m) from its regulated position. Moving it offsets geometric features.
 struct Adjuster {
   std::string name;
-  std::string description;     ///< what the technician turns, and which way is positive
-  double min = -3e-3;          ///< physical range, m
+  std::string description;  ///< what the technician turns, and which way is positive
+  double min = -3e-3;       ///< physical range, m
   double max = 3e-3;
-  double value = 0.0;          ///< current offset from the regulated position, m
+  double value = 0.0;  ///< current offset from the regulated position, m
   std::vector<AdjusterEffect> effects;
 };
 
 /// Named points and elements the simulation and the measurements refer to.
 struct ActionLandmarks {
-  int key = -1;                ///< index of the key body
-  Vec2 key_front;              ///< where the finger presses and key dip is measured, m
+  int key = -1;    ///< index of the key body
+  Vec2 key_front;  ///< where the finger presses and key dip is measured, m
   int hammer = -1;
-  Vec2 strike_point;           ///< hammer felt top that meets the string, m
+  Vec2 strike_point;                     ///< hammer felt top that meets the string, m
   Vec2 string_normal = Vec2(0.0, -1.0);  ///< unit normal of the string plane toward the hammer
-  Vec2 string_point;           ///< a point of the string plane, m
-  int string_contact = -1;     ///< hammer–string contact
-  int escapement_contact = -1; ///< jack–knuckle (grand) or jack–butt (upright)
-  int letoff_contact = -1;     ///< jack toe–let-off button
-  int check_contact = -1;      ///< hammer–backcheck
-  int key_bottom_contact = -1; ///< key–front-rail punching
+  Vec2 string_point;                     ///< a point of the string plane, m
+  int string_contact = -1;               ///< hammer–string contact
+  int escapement_contact = -1;           ///< jack–knuckle (grand) or jack–butt (upright)
+  int letoff_contact = -1;               ///< jack toe–let-off button
+  int check_contact = -1;                ///< hammer–backcheck
+  int key_bottom_contact = -1;           ///< key–front-rail punching
 };
 
 struct ActionModel {
   int schema = 1;
-  std::string kind;            ///< "grand" or "upright"
+  std::string kind;  ///< "grand" or "upright"
   std::string name;
   std::string description;
-  std::string source_file;     ///< path the model was read from (for messages)
+  std::string source_file;  ///< path the model was read from (for messages)
   Vec2 gravity = Vec2(0.0, -kGravity);
-  std::vector<Body> bodies;    ///< parents before children
+  std::vector<Body> bodies;  ///< parents before children
   std::vector<Fixture> fixtures;
   std::vector<Contact> contacts;
   std::vector<JointSpring> springs;

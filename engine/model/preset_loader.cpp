@@ -51,8 +51,7 @@ class PresetReader {
 
   double number(const json& object, const std::string& path, const char* key) const {
     const json& value = field(object, path, key);
-    if (!value.is_number())
-      fail(path + "." + key, "expected a number, got " + type_name(value));
+    if (!value.is_number()) fail(path + "." + key, "expected a number, got " + type_name(value));
     const double x = value.get<double>();
     if (!std::isfinite(x)) fail(path + "." + key, "must be a finite number");
     return x;
@@ -233,8 +232,8 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
       contact.segment_normal = r.unit(item, path, "normal");
       contact.radius_b = r.nonnegative(item, path, "corner_radius_mm", 0.0) * kMm;
     } else {
-      r.fail(path + ".shape", "unknown shape '" + shape +
-                                  "' (expected circle_circle, circle_segment or hybrid)");
+      r.fail(path + ".shape",
+             "unknown shape '" + shape + "' (expected circle_circle, circle_segment or hybrid)");
     }
     const json& felt = r.field(item, path, "felt");
     if (felt.is_string()) {
@@ -300,7 +299,8 @@ void read_adjusters(const PresetReader& r, const json& root, ActionModel& model)
     const Vec2 range = r.point(item, path, "range_mm", kMm);
     adjuster.min = range.x();
     adjuster.max = range.y();
-    if (adjuster.min >= adjuster.max) r.fail(path + ".range_mm", "expected [min, max] with min < max");
+    if (adjuster.min >= adjuster.max)
+      r.fail(path + ".range_mm", "expected [min, max] with min < max");
     const json& moves = r.array(item, path, "moves");
     for (std::size_t m = 0; m < moves.size(); ++m) {
       const json& move = moves[m];
@@ -312,8 +312,8 @@ void read_adjusters(const PresetReader& r, const json& root, ActionModel& model)
         if (effect.index < 0) r.fail(mpath + ".contact", "unknown contact '" + name + "'");
         const std::string side = r.text(move, mpath, "side");
         if (side != "a" && side != "b") r.fail(mpath + ".side", "expected \"a\" or \"b\"");
-        effect.target = side == "a" ? AdjusterEffect::Target::ContactA
-                                    : AdjusterEffect::Target::ContactB;
+        effect.target =
+            side == "a" ? AdjusterEffect::Target::ContactA : AdjusterEffect::Target::ContactB;
         effect.direction = r.unit(move, mpath, "direction");
       } else if (r.optional(move, "strap")) {
         const std::string name = r.text(move, mpath, "strap");
@@ -405,20 +405,21 @@ ActionModel parse_action(const std::string& json_text, const std::string& source
     // turn the byte offset into a line and column
     std::size_t line = 1, column = 1;
     for (std::size_t i = 0; i + 1 < e.byte && i < json_text.size(); ++i) {
-      if (json_text[i] == '\n') ++line, column = 1;
-      else ++column;
+      if (json_text[i] == '\n')
+        ++line, column = 1;
+      else
+        ++column;
     }
-    throw InputError(located_message(source_name,
-                                     "line " + std::to_string(line) + ", column " +
-                                         std::to_string(column),
-                                     "malformed JSON"));
+    throw InputError(located_message(
+        source_name, "line " + std::to_string(line) + ", column " + std::to_string(column),
+        "malformed JSON"));
   }
   const PresetReader r(source_name);
   if (!root.is_object()) r.fail("", "a preset is a JSON object");
   const double schema = r.number(root, "", "schema");
   if (schema != kPresetSchema)
-    r.fail("schema", "unsupported schema " + PresetReader::format(schema) + " (this program reads " +
-                         std::to_string(kPresetSchema) + ")");
+    r.fail("schema", "unsupported schema " + PresetReader::format(schema) +
+                         " (this program reads " + std::to_string(kPresetSchema) + ")");
   ActionModel model;
   model.source_file = source_name;
   model.kind = r.text(root, "", "kind");

@@ -116,6 +116,14 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     result.trace.metadata["preset"] = model.source_file;
     result.trace.metadata["input"] = input ? input->spec() : "none";
     result.trace.metadata["integrator"] = options.integrator;
+    std::string settings, removed;
+    for (const Adjuster& a : model.adjusters)
+      if (a.value != 0.0)
+        settings += (settings.empty() ? "" : " ") + a.name + "=" + format_mm(a.value) + "mm";
+    for (const std::string& part : model.removed_parts)
+      removed += (removed.empty() ? "" : " ") + part;
+    result.trace.metadata["settings"] = settings.empty() ? "regulated" : settings;
+    if (!removed.empty()) result.trace.metadata["without"] = removed;
   }
   DynamicsReading reading;
   auto record = [&](double t, const DofVector& q, const DofVector& v) {
@@ -136,15 +144,15 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     next_sample = options.sample_interval_s;
   }
 
-  DynamicsReading previous;
-  dynamics.evaluate(0.0, q0, v0, previous);
+  // contact penetrations at step ends (geometry only) drive events and the stop check
+  std::vector<double> previous, current;
+  dynamics.contact_penetrations(q0, previous);
   bool impact_since_check = false;
   double last_key_bottom = -1.0;
   double last_letoff_active = -1.0;
   DofVector q1, v1, qs, vs;
   const auto wall_start = std::chrono::steady_clock::now();
   const double t_end = options.duration_s;
-  DynamicsReading current;
 
   while (integrator->time() < t_end - 1e-12) {
     const double t0 = integrator->time();
@@ -162,31 +170,27 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
       result.stop_cause = "the simulation diverged (non-finite state)";
       break;
     }
-    dynamics.evaluate(t1, q1, v1, current);
+    dynamics.contact_penetrations(q1, current);
 
     // unphysical penetration ends the run, naming the contact and its two parts
     for (std::size_t c = 0; c < model.contacts.size(); ++c) {
       const Contact& contact = model.contacts[c];
-      if (current.contacts[c].penetration > contact.max_penetration) {
+      if (current[c] > contact.max_penetration) {
         result.status = "stopped";
         result.stop_cause = "unphysical penetration in contact '" + contact.name + "' (" +
                             part_name(model, contact.body_a) + " into " +
-                            part_name(model, contact.body_b) + "): " +
-                            format_mm(current.contacts[c].penetration) + " mm, limit " +
-                            format_mm(contact.max_penetration) + " mm";
+                            part_name(model, contact.body_b) + "): " + format_mm(current[c]) +
+                            " mm, limit " + format_mm(contact.max_penetration) + " mm";
         break;
       }
     }
 
     // events
-    auto became_active = [&](int c) {
-      return c >= 0 && current.contacts[c].active && !previous.contacts[c].active;
-    };
+    auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
     auto gap_at = [&](const DofVector& q) { return dynamics.hammer_string_gap(q); };
-    if (marks.letoff_contact >= 0 && current.contacts[marks.letoff_contact].active)
-      last_letoff_active = t1;
-    if (marks.escapement_contact >= 0 && previous.contacts[marks.escapement_contact].active &&
-        !current.contacts[marks.escapement_contact].active && last_letoff_active >= 0.0 &&
+    if (marks.letoff_contact >= 0 && current[marks.letoff_contact] > 0.0) last_letoff_active = t1;
+    if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
+        current[marks.escapement_contact] <= 0.0 && last_letoff_active >= 0.0 &&
         t1 - last_letoff_active < 2e-3) {
       result.events.push_back({"escapement", t1, 0.0, gap_at(q1)});
     }
@@ -204,7 +208,7 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
       if (last_key_bottom < 0.0 || t1 - last_key_bottom > 5e-3)
         result.events.push_back({"key_bottom", t1, 0.0, gap_at(q1)});
       last_key_bottom = t1;
-    } else if (marks.key_bottom_contact >= 0 && current.contacts[marks.key_bottom_contact].active) {
+    } else if (marks.key_bottom_contact >= 0 && current[marks.key_bottom_contact] > 0.0) {
       last_key_bottom = t1;
     }
 

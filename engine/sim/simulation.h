@@ -16,7 +16,7 @@ namespace pat {
 
 /// The action at rest under gravity, springs and contacts (no finger).
 struct RestState {
-  DofVector q;               ///< joint coordinates, rad
+  DofVector q;                     ///< joint coordinates, rad
   double hammer_string_gap = 0.0;  ///< m
 };
 
@@ -41,16 +41,16 @@ struct SimEvent {
 };
 
 struct SimulationResult {
-  std::string status = "ok";       ///< "ok", or "stopped" (unphysical state, failure, cancel)
-  std::string stop_cause;          ///< names the contact and the two parts, or the failure
-  double end_time = 0.0;           ///< s
+  std::string status = "ok";  ///< "ok", or "stopped" (unphysical state, failure, cancel)
+  std::string stop_cause;     ///< names the contact and the two parts, or the failure
+  double end_time = 0.0;      ///< s
   std::vector<SimEvent> events;
-  CsvTable trace;                  ///< DESIGN.md section 5 columns
+  CsvTable trace;  ///< DESIGN.md section 5 columns
   RestState rest;
   long steps = 0;
   long rhs_evaluations = 0;
-  double wall_time_s = 0.0;        ///< integration only (rest state excluded)
-  double realtime_factor = 0.0;    ///< simulated time / wall time
+  double wall_time_s = 0.0;      ///< integration only (rest state excluded)
+  double realtime_factor = 0.0;  ///< simulated time / wall time
 };
 
 /// Simulates `model` driven by `input` (may be null: no finger) for options.duration_s.

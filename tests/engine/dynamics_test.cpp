@@ -32,7 +32,8 @@ ActionModel pendulum(bool double_pendulum) {
   ActionModel m;
   m.kind = "grand";
   m.bodies.push_back(rod("key", -1, Vec2(0, 0), Vec2(0.1, 0), 0.012, 3e-5));
-  if (double_pendulum) m.bodies.push_back(rod("hammer", 0, Vec2(0.2, 0), Vec2(0.3, 0), 0.008, 2e-5));
+  if (double_pendulum)
+    m.bodies.push_back(rod("hammer", 0, Vec2(0.2, 0), Vec2(0.3, 0), 0.008, 2e-5));
   m.landmarks.key = 0;
   m.landmarks.hammer = double_pendulum ? 1 : 0;
   m.landmarks.key_front = Vec2(0.2, 0);
@@ -81,7 +82,8 @@ TEST(Dynamics, SmallOscillationPeriodMatchesClosedForm) {
   v[0] = 0.0;
   integrator->initialize(dynamics, 0.0, dynamics.compress(q, v));
   const double d = 0.1;
-  const double period = 2 * kPi * std::sqrt((b.inertia_com + b.mass * d * d) / (b.mass * kGravity * d));
+  const double period =
+      2 * kPi * std::sqrt((b.inertia_com + b.mass * d * d) / (b.mass * kGravity * d));
   // the angle crosses the hanging position at T/4 and 3T/4; measure the second crossing
   double previous = q[0] + kPi / 2, crossing = -1.0;
   int crossings = 0;

@@ -1,19 +1,20 @@
 // Force laws against their formulas (paper eqs. 2-4) and contact geometry against closed forms.
+#include "dynamics/force_laws.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "dynamics/contact_geometry.h"
-#include "dynamics/force_laws.h"
 
 namespace pat {
 namespace {
 
 FeltLaw sample_law() {
   FeltLaw law;
-  law.loading = {5e3, 2e3, 2e3};    // a = 5 N/mm, b = 2 /mm, c = 2 N/mm in SI
+  law.loading = {5e3, 2e3, 2e3};  // a = 5 N/mm, b = 2 /mm, c = 2 N/mm in SI
   law.unloading = {2e3, 2.2e3, 0.5e3};
-  law.alpha = 50.0;                 // s/m
+  law.alpha = 50.0;  // s/m
   return law;
 }
 

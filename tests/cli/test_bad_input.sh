@@ -1,0 +1,169 @@
+#!/usr/bin/env bash
+# Bad input to `pianoaction simulate`: every case must fail with a non-zero exit code, a message
+# on stderr that names the file / field / line / option and the problem, and no output file.
+# usage: test_bad_input.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
+set -euo pipefail
+
+exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+source_dir="$(cd "$2" && pwd)"
+grand="$source_dir/presets/grand.json"
+
+work="$(mktemp -d)"
+cleanup() { rm -rf "$work"; }
+trap cleanup EXIT
+cd "$work"
+
+failures=0
+cases=0
+
+fail() {
+  echo "FAIL: $*" >&2
+  failures=$((failures + 1))
+}
+
+# expect_failure "DESCRIPTION" "SUBSTRING|SUBSTRING..." ARGS...
+# Runs pianoaction ARGS, expects a non-zero exit code (2, bad input), every substring (separated
+# by '|') in stderr, and that the --out file named in ARGS (if any) was not created.
+expect_failure() {
+  local description="$1" expected="$2"
+  shift 2
+  cases=$((cases + 1))
+  local out_file="" previous=""
+  for arg in "$@"; do
+    if [[ "$previous" == "--out" ]]; then out_file="$arg"; fi
+    previous="$arg"
+  done
+  if [[ -n "$out_file" ]]; then rm -f "$out_file"; fi
+
+  local status=0
+  "$exe" "$@" >stdout.txt 2>stderr.txt || status=$?
+  if [[ $status -eq 0 ]]; then
+    fail "$description: exit code 0 (expected non-zero) for: $*"
+  elif [[ $status -ne 2 ]]; then
+    # bad input is an InputError, which main reports with exit code 2 (1 = internal error)
+    fail "$description: exit code $status (expected 2 for bad input) for: $*"
+  fi
+  local part
+  IFS='|' read -r -a parts <<<"$expected"
+  for part in "${parts[@]}"; do
+    if ! grep -qF -- "$part" stderr.txt; then
+      fail "$description: stderr lacks '$part'; stderr was: $(cat stderr.txt)"
+    fi
+  done
+  if [[ -n "$out_file" && -e "$out_file" ]]; then
+    fail "$description: $out_file was written although the run failed"
+  fi
+  echo "ok: $description (exit $status): $(head -n 1 stderr.txt)"
+}
+
+run_args=(simulate --action grand --input mass:1kg --duration 0.05)
+
+# --- input SPEC and CSV inputs --------------------------------------------------------------------
+expect_failure "unknown input SPEC" "foo:1|input SPEC" \
+  simulate --action grand --input foo:1 --duration 0.05 --out out.csv
+
+printf 'time_s,key_force_n\n0,0\n0.01,abc\n0.02,1\n' >bad_value.csv
+expect_failure "CSV row with a non-number" "bad_value.csv|line 3|abc|not a number" \
+  simulate --action grand --input csv:bad_value.csv --duration 0.05 --out out.csv
+
+printf '# comment\ntime_s,key_force_n\n0,0\n0.01,1,2\n0.02,1\n' >bad_fields.csv
+expect_failure "CSV row with too many fields" "bad_fields.csv|line 4|expected 2 values, got 3" \
+  simulate --action grand --input csv:bad_fields.csv --duration 0.05 --out out.csv
+
+printf 'time_s,key_force_n\n0,0\n0.01\n' >short_row.csv
+expect_failure "CSV row with too few fields" "short_row.csv|line 3" \
+  simulate --action grand --input csv:short_row.csv --duration 0.05 --out out.csv
+
+printf 'time_s,key_force_n\n0,0\n0.02,1\n0.01,2\n' >time_order.csv
+expect_failure "CSV with non-increasing time" "time_order.csv|time_s must increase|line 4" \
+  simulate --action grand --input csv:time_order.csv --duration 0.05 --out out.csv
+
+expect_failure "CSV file that does not exist" "no_such.csv" \
+  simulate --action grand --input csv:no_such.csv --duration 0.05 --out out.csv
+
+# --- broken presets -------------------------------------------------------------------------------
+python3 - "$grand" <<'EOF'
+import json, sys
+grand = json.load(open(sys.argv[1]))
+
+def write(name, edit):
+    preset = json.loads(json.dumps(grand))
+    edit(preset)
+    with open(name, "w") as f:
+        json.dump(preset, f, indent=1, ensure_ascii=False)
+
+write("missing_field.json", lambda p: p["bodies"][2].pop("mass_g"))
+write("negative_mass.json", lambda p: p["bodies"][1].__setitem__("mass_g", -3))
+write("wrong_type.json", lambda p: p["bodies"][0].__setitem__("mass_g", "95"))
+write("bad_felt.json", lambda p: p["contacts"][0].__setitem__("felt", "velvet"))
+
+text = open(sys.argv[1]).read()
+brace = text.index("}", len(text) // 2)
+open("malformed.json", "w").write(text[:brace] + text[brace + 1:])
+EOF
+
+expect_failure "preset with a missing field" "missing_field.json|bodies[2]|mass_g|missing" \
+  simulate --action missing_field.json --input mass:1kg --duration 0.05 --out out.csv
+expect_failure "preset with a negative mass" \
+  "negative_mass.json|bodies[1]|mass_g|must be positive" \
+  simulate --action negative_mass.json --input mass:1kg --duration 0.05 --out out.csv
+expect_failure "preset with a wrong type" "wrong_type.json|bodies[0]|mass_g|expected a number" \
+  simulate --action wrong_type.json --input mass:1kg --duration 0.05 --out out.csv
+expect_failure "preset with an unknown felt law" "bad_felt.json|contacts[0]|felt|velvet" \
+  simulate --action bad_felt.json --input mass:1kg --duration 0.05 --out out.csv
+expect_failure "malformed JSON preset" "malformed.json|line |column |malformed JSON" \
+  simulate --action malformed.json --input mass:1kg --duration 0.05 --out out.csv
+expect_failure "preset file that does not exist" "no_such_preset.json" \
+  simulate --action no_such_preset.json --input mass:1kg --duration 0.05 --out out.csv
+
+# --- command-line options -------------------------------------------------------------------------
+expect_failure "unknown integrator" "integrator|euler|w2" \
+  "${run_args[@]}" --integrator euler --out out.csv
+expect_failure "unknown --set name" "nonsense|let_off" \
+  "${run_args[@]}" --set nonsense=1 --out out.csv
+expect_failure "--set out of range" "let_off|99|range" \
+  "${run_args[@]}" --set let_off=99 --out out.csv
+expect_failure "--set without a number" "let_off=wide|not a number" \
+  "${run_args[@]}" --set let_off=wide --out out.csv
+expect_failure "unknown --without part" "bridle|removable parts|repetition_spring" \
+  "${run_args[@]}" --without bridle --out out.csv
+expect_failure "missing --duration" "--duration|missing" \
+  simulate --action grand --input mass:1kg --out out.csv
+expect_failure "non-numeric --duration" "--duration|abc|not a number" \
+  simulate --action grand --input mass:1kg --duration abc --out out.csv
+expect_failure "negative --duration" "--duration|must be positive" \
+  simulate --action grand --input mass:1kg --duration -1 --out out.csv
+expect_failure "unknown option" "--frobnicate" \
+  "${run_args[@]}" --frobnicate --out out.csv
+expect_failure "unknown subcommand" "unknown subcommand|frobnicate" \
+  frobnicate --out out.csv
+
+# --- an existing --out file is left untouched by a failed run ----------------------------------
+failures_before=$failures
+printf 'previous,content\n1,2\n' >keep.csv
+cp keep.csv keep.expected
+cases=$((cases + 1))
+status=0
+"$exe" simulate --action missing_field.json --input mass:1kg --duration 0.05 --out keep.csv \
+  >stdout.txt 2>stderr.txt || status=$?
+if [[ $status -eq 0 ]]; then fail "existing --out file: exit code 0"; fi
+if ! grep -qF "missing_field.json" stderr.txt; then
+  fail "existing --out file: stderr lacks the file name: $(cat stderr.txt)"
+fi
+if ! cmp -s keep.csv keep.expected; then
+  fail "existing --out file: keep.csv was changed by a failed run"
+fi
+status=0
+"$exe" simulate --action grand --input csv:bad_value.csv --duration 0.05 --out keep.csv \
+  >stdout.txt 2>stderr.txt || status=$?
+if [[ $status -eq 0 ]]; then fail "existing --out file (CSV input): exit code 0"; fi
+if ! cmp -s keep.csv keep.expected; then
+  fail "existing --out file (CSV input): keep.csv was changed by a failed run"
+fi
+if compgen -G "keep.csv?*" >/dev/null || compgen -G ".keep.csv*" >/dev/null; then
+  fail "existing --out file: a temporary file was left behind: $(ls -a)"
+fi
+if [[ $failures -eq $failures_before ]]; then echo "ok: existing --out file left byte-identical"; fi
+
+echo "$cases cases, $failures failures"
+[[ $failures -eq 0 ]]
