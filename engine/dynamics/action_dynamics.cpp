@@ -243,24 +243,34 @@ StateVector ActionDynamics::compress(const DofVector& q, const DofVector& v) con
 void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
   expand(t, y, scratch_q_, scratch_v_);
   assemble(t, scratch_q_, scratch_v_, scratch_mass_, scratch_forces_, nullptr, nullptr);
+  solve_accelerations(t, scratch_mass_, scratch_forces_, scratch_acceleration_);
   dydt.resize(2 * free_count_);
+  dydt.head(free_count_) = y.tail(free_count_);
+  for (int i = 0; i < free_count_; ++i)
+    dydt[free_count_ + i] = scratch_acceleration_[free_index_[i]];
+}
+
+void ActionDynamics::solve_accelerations(double t, const DofMatrix& mass, const DofVector& forces,
+                                         DofVector& acceleration) const {
+  acceleration.resize(n_);
   if (!key_prescribed_) {
-    dydt.head(free_count_) = y.tail(free_count_);
-    solve_or_nan(scratch_mass_, scratch_forces_);
-    dydt.tail(free_count_) = scratch_forces_;
+    DofMatrix factor = mass;
+    acceleration = forces;
+    solve_or_nan(factor, acceleration);
     return;
   }
+  // prescribed key: M_ff q̈_f = f_f − M_fk q̈_k
   const double key_acc = input_->motion(t).acceleration;
   DofMatrix mff(free_count_, free_count_);
-  DofVector rhs_f(free_count_);
+  DofVector acc_f(free_count_);
   for (int i = 0; i < free_count_; ++i) {
     const int ji = free_index_[i];
-    rhs_f[i] = scratch_forces_[ji] - scratch_mass_(ji, key_) * key_acc;
-    for (int j = 0; j < free_count_; ++j) mff(i, j) = scratch_mass_(ji, free_index_[j]);
+    acc_f[i] = forces[ji] - mass(ji, key_) * key_acc;
+    for (int j = 0; j < free_count_; ++j) mff(i, j) = mass(ji, free_index_[j]);
   }
-  dydt.head(free_count_) = y.tail(free_count_);
-  solve_or_nan(mff, rhs_f);
-  dydt.tail(free_count_) = rhs_f;
+  solve_or_nan(mff, acc_f);
+  for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = acc_f[i];
+  acceleration[key_] = key_acc;
 }
 
 void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
@@ -270,13 +280,11 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
   DofMatrix mass;
   DofVector forces;
   assemble(t, q, v, mass, forces, &out.contacts, &out.strap_tension);
-  out.acceleration.resize(n_);
   // lever arm of a downward finger force at the key front
   const Vec2 front = transform(key_, model_.landmarks.key_front);
   const double arm = cross2(front - kin_[key_].origin, Vec2(0.0, -1.0));
+  solve_accelerations(t, mass, forces, out.acceleration);
   if (!key_prescribed_) {
-    out.acceleration = forces;
-    solve_or_nan(mass, out.acceleration);
     if (!input_) {
       out.finger_force = 0.0;
     } else if (input_->added_mass_kg() > 0.0) {
@@ -287,18 +295,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
     }
     return;
   }
-  const double key_acc = input_->motion(t).acceleration;
-  DofMatrix mff(free_count_, free_count_);
-  DofVector rhs_f(free_count_);
-  for (int i = 0; i < free_count_; ++i) {
-    const int ji = free_index_[i];
-    rhs_f[i] = forces[ji] - mass(ji, key_) * key_acc;
-    for (int j = 0; j < free_count_; ++j) mff(i, j) = mass(ji, free_index_[j]);
-  }
-  DofVector acc_f = rhs_f;
-  solve_or_nan(mff, acc_f);
-  for (int i = 0; i < free_count_; ++i) out.acceleration[free_index_[i]] = acc_f[i];
-  out.acceleration[key_] = key_acc;
+  // the finger supplies what the key's own equation lacks
   const double residual = mass.row(key_).dot(out.acceleration) - forces[key_];
   out.finger_force = residual / arm;
 }

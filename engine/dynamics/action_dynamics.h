@@ -103,6 +103,9 @@ class ActionDynamics : public OdeSystem {
                 DofVector& forces, std::vector<ContactReading>* readings,
                 std::vector<double>* tensions);
   void applied_key_force(double t, const DofVector& q, DofVector& forces) const;
+  /// q̈ of every joint from the assembled M and forces (prescribed key included).
+  void solve_accelerations(double t, const DofMatrix& mass, const DofVector& forces,
+                           DofVector& acceleration) const;
   /// Geometry of contact c at the current kinematics; false when apart.
   bool contact_patch(const Contact& contact, ContactPatch& patch) const;
 
@@ -125,7 +128,7 @@ class ActionDynamics : public OdeSystem {
   std::uint64_t regime_ = 0;
   // scratch, so that rhs() does not allocate
   DofMatrix scratch_mass_;
-  DofVector scratch_forces_, scratch_q_, scratch_v_;
+  DofVector scratch_forces_, scratch_q_, scratch_v_, scratch_acceleration_;
 };
 
 }  // namespace pat

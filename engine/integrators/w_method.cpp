@@ -170,15 +170,12 @@ StepStatus WMethod2::step(double t_max) {
   if (!factored_ || std::abs(h - factored_h_) > 1e-12 * factored_h_) factor(h);
 
   const double hg = kGamma * h;
+  // K1 = W⁻¹ [f(t, y) (+ γh f_t)]
   if (use_time_derivative_) {
     const double t_plus = t_ + kSqrtEps * std::max(std::abs(t_), 1e-3);
     system_->rhs(t_plus, y_, f_work_);
     ++stats_.rhs_evaluations;
     f_t_ = (f_work_ - f0_) / (t_plus - t_);
-  }
-
-  // K1 = W⁻¹ [f(t, y) (+ γh f_t)]
-  if (use_time_derivative_) {
     r_ = f0_ + hg * f_t_;
     solve(r_, k1_);
   } else {
