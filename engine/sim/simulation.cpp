@@ -6,13 +6,10 @@
 #include <stdexcept>
 
 #include "dynamics/action_dynamics.h"
+#include "sim/simulator.h"
 
 namespace pat {
 namespace {
-
-std::string part_name(const ActionModel& model, int body) {
-  return body < 0 ? std::string("frame") : model.bodies[body].name;
-}
 
 std::string format_mm(double metres) {
   std::ostringstream out;
@@ -97,18 +94,14 @@ RestState find_rest_state(const ActionModel& model) {
 
 SimulationResult simulate(const ActionModel& model, const KeyInput* input,
                           const SimulationOptions& options, const RestState* given_rest) {
+  // the caller owns model and input for the whole call: non-owning shared pointers
+  Simulator sim(std::shared_ptr<const ActionModel>(&model, [](const ActionModel*) {}),
+                std::shared_ptr<const KeyInput>(input, [](const KeyInput*) {}), options,
+                given_rest);
   SimulationResult result;
-  result.rest = given_rest ? *given_rest : find_rest_state(model);
+  result.rest = sim.rest();
   const DofVector& q_rest = result.rest.q;
   const int n = model.dofs();
-  const ActionLandmarks& marks = model.landmarks;
-
-  ActionDynamics dynamics(model, input);
-  dynamics.set_key_rest_angle(q_rest[marks.key]);
-  auto integrator = make_integrator(options.integrator, options.integrator_options);
-  DofVector q0 = q_rest, v0 = DofVector::Zero(n);
-  integrator->initialize(dynamics, 0.0, dynamics.compress(q0, v0));
-  dynamics.expand(0.0, integrator->state(), q0, v0);
 
   if (options.sample_interval_s > 0.0) {
     result.trace.columns = trace_columns(model);
@@ -127,12 +120,12 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
   }
   DynamicsReading reading;
   auto record = [&](double t, const DofVector& q, const DofVector& v) {
-    dynamics.evaluate(t, q, v, reading);
+    sim.evaluate(t, q, v, reading);
     std::vector<double> row;
     row.reserve(result.trace.columns.size());
     row.push_back(t);
     for (int k = 0; k < n; ++k) row.push_back(model.bodies[k].trace_sign * deg(q[k] - q_rest[k]));
-    row.push_back(dynamics.hammer_string_gap(q) * 1e3);
+    row.push_back(sim.hammer_string_gap(q) * 1e3);
     row.push_back(reading.finger_force);
     for (const ContactReading& c : reading.contacts) row.push_back(c.normal_force);
     for (double tension : reading.strap_tension) row.push_back(tension);
@@ -140,98 +133,38 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
   };
   double next_sample = 0.0;
   if (options.sample_interval_s > 0.0) {
-    record(0.0, q0, v0);
+    record(0.0, sim.q(), sim.v());
     next_sample = options.sample_interval_s;
   }
 
-  // contact penetrations at step ends (geometry only) drive events and the stop check
-  std::vector<double> previous, current;
-  dynamics.contact_penetrations(q0, previous);
-  bool impact_since_check = false;
-  double last_key_bottom = -1.0;
-  double last_letoff_active = -1.0;
-  DofVector q1, v1, qs, vs;
+  DofVector qs, vs;
   const auto wall_start = std::chrono::steady_clock::now();
   const double t_end = options.duration_s;
-
-  while (integrator->time() < t_end - 1e-12) {
-    const double t0 = integrator->time();
-    if (integrator->step(t_end) != StepStatus::Ok) {
-      result.status = "stopped";
-      result.stop_cause = "the integrator failed: " + integrator->failure_reason();
-      break;
-    }
-    const double t1 = integrator->time();
-    dynamics.expand(t1, integrator->state(), q1, v1);
-    bool finite = true;
-    for (int i = 0; i < n; ++i) finite = finite && std::isfinite(q1[i]) && std::isfinite(v1[i]);
-    if (!finite) {
-      result.status = "stopped";
-      result.stop_cause = "the simulation diverged (non-finite state)";
-      break;
-    }
-    dynamics.contact_penetrations(q1, current);
-
-    // unphysical penetration ends the run, naming the contact and its two parts
-    for (std::size_t c = 0; c < model.contacts.size(); ++c) {
-      const Contact& contact = model.contacts[c];
-      if (current[c] > contact.max_penetration) {
-        result.status = "stopped";
-        result.stop_cause = "unphysical penetration in contact '" + contact.name + "' (" +
-                            part_name(model, contact.body_a) + " into " +
-                            part_name(model, contact.body_b) + "): " + format_mm(current[c]) +
-                            " mm, limit " + format_mm(contact.max_penetration) + " mm";
-        break;
-      }
-    }
-
-    // events
-    auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
-    auto gap_at = [&](const DofVector& q) { return dynamics.hammer_string_gap(q); };
-    if (marks.letoff_contact >= 0 && current[marks.letoff_contact] > 0.0) last_letoff_active = t1;
-    if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
-        current[marks.escapement_contact] <= 0.0 && last_letoff_active >= 0.0 &&
-        t1 - last_letoff_active < 2e-3) {
-      result.events.push_back({"escapement", t1, 0.0, gap_at(q1)});
-    }
-    if (became_active(marks.string_contact)) {
-      // strike-point speed toward the string just before contact
-      const Vec2 vel = dynamics.point_velocity(marks.hammer, marks.strike_point, q0, v0);
-      result.events.push_back({"impact", t1, -marks.string_normal.dot(vel), gap_at(q1)});
-      impact_since_check = true;
-    }
-    if (became_active(marks.check_contact) && impact_since_check) {
-      result.events.push_back({"check", t1, 0.0, gap_at(q1)});
-      impact_since_check = false;
-    }
-    if (became_active(marks.key_bottom_contact)) {
-      if (last_key_bottom < 0.0 || t1 - last_key_bottom > 5e-3)
-        result.events.push_back({"key_bottom", t1, 0.0, gap_at(q1)});
-      last_key_bottom = t1;
-    } else if (marks.key_bottom_contact >= 0 && current[marks.key_bottom_contact] > 0.0) {
-      last_key_bottom = t1;
-    }
-
-    // trace rows on the sampling grid, interpolated between step ends
-    while (options.sample_interval_s > 0.0 && next_sample <= t1 + 1e-12) {
-      hermite(t0, q0, v0, t1, q1, v1, next_sample, qs, vs);
+  while (sim.time() < t_end - 1e-12) {
+    const bool running = sim.step(t_end);
+    // trace rows on the sampling grid, interpolated between step ends (the failing step too,
+    // when it produced a finite state)
+    while (options.sample_interval_s > 0.0 && next_sample <= sim.time() + 1e-12 &&
+           sim.time() > sim.previous_time()) {
+      hermite(sim.previous_time(), sim.previous_q(), sim.previous_v(), sim.time(), sim.q(),
+              sim.v(), next_sample, qs, vs);
+      if (!qs.allFinite() || !vs.allFinite()) break;
       record(next_sample, qs, vs);
       next_sample += options.sample_interval_s;
     }
-    q0 = q1;
-    v0 = v1;
-    std::swap(previous, current);
-    if (result.status != "ok") break;
-    if (options.on_step && !options.on_step(t1)) {
-      result.status = "stopped";
-      result.stop_cause = "cancelled";
+    if (!running) break;
+    if (options.on_step && !options.on_step(sim.time())) {
+      sim.stop("cancelled");
       break;
     }
   }
   const auto wall_end = std::chrono::steady_clock::now();
-  result.end_time = integrator->time();
-  result.steps = integrator->stats().steps;
-  result.rhs_evaluations = integrator->stats().rhs_evaluations;
+  result.status = sim.stopped() ? "stopped" : "ok";
+  result.stop_cause = sim.stop_cause();
+  result.events = sim.events();
+  result.end_time = sim.time();
+  result.steps = sim.steps();
+  result.rhs_evaluations = sim.rhs_evaluations();
   result.wall_time_s = std::chrono::duration<double>(wall_end - wall_start).count();
   result.realtime_factor = result.wall_time_s > 0.0 ? result.end_time / result.wall_time_s : 0.0;
   return result;

@@ -1,0 +1,155 @@
+#include "sim/simulator.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace pat {
+namespace {
+
+std::string part_name(const ActionModel& model, int body) {
+  return body < 0 ? std::string("frame") : model.bodies[body].name;
+}
+
+std::string format_mm(double metres) {
+  std::ostringstream out;
+  out.precision(3);
+  out << metres * 1e3;
+  return out.str();
+}
+
+}  // namespace
+
+Simulator::Simulator(std::shared_ptr<const ActionModel> model,
+                     std::shared_ptr<const KeyInput> input, const SimulationOptions& options,
+                     const RestState* rest)
+    : model_(std::move(model)), input_(std::move(input)), options_(options) {
+  rest_ = rest ? *rest : find_rest_state(*model_);
+  const int n = model_->dofs();
+  q1_ = rest_.q;
+  v1_ = DofVector::Zero(n);
+  make_integrator(options_.integrator, options_.integrator_options);  // validates the name
+  restart_integrator();
+  q0_ = q1_;
+  v0_ = v1_;
+  dynamics_->contact_penetrations(q1_, previous_penetration_);
+}
+
+void Simulator::restart_integrator() {
+  if (integrator_) {
+    steps_done_before_ += integrator_->stats().steps;
+    rhs_done_before_ += integrator_->stats().rhs_evaluations;
+  }
+  dynamics_ = std::make_unique<ActionDynamics>(*model_, input_.get());
+  dynamics_->set_key_rest_angle(rest_.q[model_->landmarks.key]);
+  integrator_ = make_integrator(options_.integrator, options_.integrator_options);
+  integrator_->initialize(*dynamics_, t1_, dynamics_->compress(q1_, v1_));
+  // a prescribed key takes its angle from the input
+  dynamics_->expand(t1_, integrator_->state(), q1_, v1_);
+}
+
+void Simulator::set_model(std::shared_ptr<const ActionModel> model) {
+  if (model->dofs() != model_->dofs())
+    throw std::invalid_argument("Simulator::set_model: the new model has other joints");
+  model_ = std::move(model);
+  restart_integrator();
+  dynamics_->contact_penetrations(q1_, previous_penetration_);
+}
+
+void Simulator::set_input(std::shared_ptr<const KeyInput> input) {
+  input_ = std::move(input);
+  restart_integrator();
+}
+
+void Simulator::stop(const std::string& cause) {
+  if (stopped_) return;
+  stopped_ = true;
+  stop_cause_ = cause;
+}
+
+void Simulator::evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out) {
+  dynamics_->evaluate(t, q, v, out);
+}
+
+bool Simulator::step(double t_max) {
+  new_events_ = 0;
+  if (stopped_) return false;
+  t0_ = t1_;
+  q0_ = q1_;
+  v0_ = v1_;
+  if (integrator_->step(t_max) != StepStatus::Ok) {
+    stop("the integrator failed: " + integrator_->failure_reason());
+    return false;
+  }
+  t1_ = integrator_->time();
+  dynamics_->expand(t1_, integrator_->state(), q1_, v1_);
+  steps_ = steps_done_before_ + integrator_->stats().steps;
+  rhs_evaluations_ = rhs_done_before_ + integrator_->stats().rhs_evaluations;
+  for (int i = 0; i < q1_.size(); ++i) {
+    if (!std::isfinite(q1_[i]) || !std::isfinite(v1_[i])) {
+      stop("the simulation diverged (non-finite state)");
+      return false;
+    }
+  }
+  dynamics_->contact_penetrations(q1_, current_penetration_);
+  check_penetrations();
+  detect_events();
+  std::swap(previous_penetration_, current_penetration_);
+  return !stopped_;
+}
+
+bool Simulator::advance_to(double t) {
+  while (!stopped_ && t1_ < t - 1e-12) step(t);
+  return !stopped_;
+}
+
+void Simulator::check_penetrations() {
+  const ActionModel& model = *model_;
+  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+    const Contact& contact = model.contacts[c];
+    if (current_penetration_[c] > contact.max_penetration) {
+      stop("unphysical penetration in contact '" + contact.name + "' (" +
+           part_name(model, contact.body_a) + " into " + part_name(model, contact.body_b) +
+           "): " + format_mm(current_penetration_[c]) + " mm, limit " +
+           format_mm(contact.max_penetration) + " mm");
+      return;
+    }
+  }
+}
+
+void Simulator::detect_events() {
+  const ActionLandmarks& marks = model_->landmarks;
+  const std::vector<double>& previous = previous_penetration_;
+  const std::vector<double>& current = current_penetration_;
+  const std::size_t before = events_.size();
+  auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
+  const double gap = dynamics_->hammer_string_gap(q1_);
+
+  if (marks.letoff_contact >= 0 && current[marks.letoff_contact] > 0.0) last_letoff_active_ = t1_;
+  // escapement: the jack leaves the knuckle (butt) within 2 ms of touching the let-off button
+  if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
+      current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
+      t1_ - last_letoff_active_ < 2e-3) {
+    events_.push_back({"escapement", t1_, 0.0, gap});
+  }
+  if (became_active(marks.string_contact)) {
+    // strike-point speed toward the string just before contact
+    const Vec2 vel = dynamics_->point_velocity(marks.hammer, marks.strike_point, q0_, v0_);
+    events_.push_back({"impact", t1_, -marks.string_normal.dot(vel), gap});
+    impact_since_check_ = true;
+  }
+  if (became_active(marks.check_contact) && impact_since_check_) {
+    events_.push_back({"check", t1_, 0.0, gap});
+    impact_since_check_ = false;
+  }
+  if (became_active(marks.key_bottom_contact)) {
+    if (last_key_bottom_ < 0.0 || t1_ - last_key_bottom_ > 5e-3)
+      events_.push_back({"key_bottom", t1_, 0.0, gap});
+    last_key_bottom_ = t1_;
+  } else if (marks.key_bottom_contact >= 0 && current[marks.key_bottom_contact] > 0.0) {
+    last_key_bottom_ = t1_;
+  }
+  new_events_ = static_cast<int>(events_.size() - before);
+}
+
+}  // namespace pat

@@ -1,0 +1,97 @@
+// A running simulation, stepped one integrator step at a time: the immutable ActionModel plus the
+// mutable state (t, q, q̇, integrator memory, event memory). The model and the input can be
+// replaced between steps (live deregulation, the window's sliders and mouse key); the state is
+// carried over and the integrator restarts from it.
+//
+// Each step is checked: a non-finite state or a contact penetration beyond the contact's limit
+// stops the run with a cause naming the contact and its two parts. Events (escapement, impact,
+// check, key_bottom) are detected from contact penetrations at step ends.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dynamics/action_dynamics.h"
+#include "sim/simulation.h"
+
+namespace pat {
+
+class Simulator {
+ public:
+  /// Starts at t = 0 from the rest state (computed, or `rest` when given). `input` may be null
+  /// (no finger). Throws std::runtime_error when the action does not settle at rest.
+  Simulator(std::shared_ptr<const ActionModel> model, std::shared_ptr<const KeyInput> input,
+            const SimulationOptions& options, const RestState* rest = nullptr);
+
+  /// One integrator step, never past `t_max`. Returns false (and does nothing) once stopped.
+  bool step(double t_max);
+  /// Steps until time() reaches `t` or the run stops. Returns !stopped().
+  bool advance_to(double t);
+
+  /// Replaces the model at the current step boundary; (t, q, q̇) are kept. Joints must match.
+  void set_model(std::shared_ptr<const ActionModel> model);
+  /// Replaces the key input at the current step boundary (a prescribed key keeps its angle
+  /// only if the new input agrees; the caller makes it continuous).
+  void set_input(std::shared_ptr<const KeyInput> input);
+  /// Stops the run with a cause (e.g. "cancelled").
+  void stop(const std::string& cause);
+
+  double time() const { return t1_; }
+  const DofVector& q() const { return q1_; }  ///< joint coordinates, rad
+  const DofVector& v() const { return v1_; }  ///< joint rates, rad/s
+  /// The previous step end (for interpolation between steps).
+  double previous_time() const { return t0_; }
+  const DofVector& previous_q() const { return q0_; }
+  const DofVector& previous_v() const { return v0_; }
+
+  bool stopped() const { return stopped_; }
+  const std::string& stop_cause() const { return stop_cause_; }
+  /// Events found so far, in time order.
+  const std::vector<SimEvent>& events() const { return events_; }
+  /// Events found by the latest step() call.
+  int new_event_count() const { return new_events_; }
+
+  const ActionModel& model() const { return *model_; }
+  std::shared_ptr<const ActionModel> model_ptr() const { return model_; }
+  const KeyInput* input() const { return input_.get(); }
+  const RestState& rest() const { return rest_; }
+  ActionDynamics& dynamics() { return *dynamics_; }
+  const Integrator& integrator() const { return *integrator_; }
+
+  /// Accelerations, contact forces and the finger force at (t, q, q̇) given.
+  void evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out);
+  /// Hammer–string gap (m) at q.
+  double hammer_string_gap(const DofVector& q) { return dynamics_->hammer_string_gap(q); }
+
+  long steps() const { return steps_; }
+  long rhs_evaluations() const { return rhs_evaluations_; }
+
+ private:
+  void restart_integrator();
+  void detect_events();
+  void check_penetrations();
+
+  std::shared_ptr<const ActionModel> model_;
+  std::shared_ptr<const KeyInput> input_;
+  SimulationOptions options_;
+  RestState rest_;
+  std::unique_ptr<ActionDynamics> dynamics_;
+  std::unique_ptr<Integrator> integrator_;
+  // counters of integrators replaced by set_model/set_input
+  long steps_done_before_ = 0, rhs_done_before_ = 0;
+  long steps_ = 0, rhs_evaluations_ = 0;
+
+  double t0_ = 0.0, t1_ = 0.0;
+  DofVector q0_, v0_, q1_, v1_;
+  std::vector<double> previous_penetration_, current_penetration_;
+  bool stopped_ = false;
+  std::string stop_cause_;
+  std::vector<SimEvent> events_;
+  int new_events_ = 0;
+  bool impact_since_check_ = false;
+  double last_key_bottom_ = -1.0;
+  double last_letoff_active_ = -1.0;
+};
+
+}  // namespace pat
