@@ -152,6 +152,17 @@ struct ActionLandmarks {
   int key_bottom_contact = -1;           ///< key–front-rail punching
 };
 
+/// A regulation setting (DESIGN.md section 3): the adjuster of the same name, what is measured,
+/// the target and tolerance (in `unit`), listed in the technician's order.
+struct RegulationSetting {
+  std::string name;         ///< = the adjuster's name
+  std::string measurement;  ///< what the technician measures, in words
+  std::string unit;         ///< "mm" or "fraction"
+  double target = 0.0;      ///< in unit
+  double tolerance = 0.05;  ///< in unit
+  std::string source;       ///< where the target comes from
+};
+
 struct ActionModel {
   int schema = 1;
   std::string kind;  ///< "grand" or "upright"
@@ -166,6 +177,8 @@ struct ActionModel {
   std::vector<Strap> straps;
   std::vector<Adjuster> adjusters;
   ActionLandmarks landmarks;
+  std::vector<RegulationSetting> regulation;  ///< the seven settings, technician's order
+  std::string preset_json;  ///< the preset text the model was read from (for writing it back)
   std::vector<std::string> removed_parts;  ///< springs and straps taken out (--without)
 
   int dofs() const { return static_cast<int>(bodies.size()); }
@@ -174,6 +187,7 @@ struct ActionModel {
   int spring_index(const std::string& name) const;
   int strap_index(const std::string& name) const;
   int adjuster_index(const std::string& name) const;
+  int setting_index(const std::string& name) const;
 };
 
 }  // namespace pat

@@ -1,0 +1,45 @@
+// Live deregulation (paper section 7.2): an adjuster moves while the action runs with a
+// sinusoidal key motion; the setting's measurement is tracked over time, and the run ends when
+// a contact penetration becomes unphysical (the cause names the contact and its two parts).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/csv.h"
+#include "model/action_model.h"
+
+namespace pat {
+
+struct DeregulationOptions {
+  std::string setting = "hammer_blow";
+  double rate_mm_per_s = 1.0;  ///< adjuster speed (the paper: 0.5 mm every 0.5 s)
+  double frequency_hz = 3.0;   ///< key motion: motion:sine:HZ:full
+  double duration_s = 10.0;
+  /// The adjuster moves in steps of rate × interval every interval (the paper screws the key
+  /// pilot 0.5 mm every 0.5 s); 0 moves it continuously (every step).
+  double step_interval_s = 0.5;
+  /// Called with the simulated time; return false to cancel.
+  std::function<bool(double t)> on_progress;
+};
+
+struct DeregulationSample {
+  double t = 0.0;            ///< s
+  double adjuster_mm = 0.0;  ///< adjuster position at t
+  double measured = 0.0;     ///< the setting measured (its unit) on the action at that position
+  double hammer_string_gap_mm = 0.0;  ///< dynamic: gap at the top of the key cycle
+  double whippen_angle_deg = 0.0;     ///< dynamic: whippen angle at the top of the key cycle
+};
+
+struct DeregulationResult {
+  std::string status;     ///< "stopped" (unphysical contact, cancel) or "ok" (duration reached)
+  double stop_t = 0.0;    ///< s
+  std::string stop_cause;
+  std::vector<DeregulationSample> samples;  ///< one per key cycle
+  CsvTable trace;  ///< simulate's trace columns plus adjuster_mm
+};
+
+DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options);
+
+}  // namespace pat

@@ -1,0 +1,43 @@
+// The technician's measurements of the seven regulation settings (DESIGN.md section 3), taken
+// on the simulated action the way they are taken on a real one:
+//   rest geometry        key dip (key-front travel to the punching), hammer blow (hammer–string
+//                        distance at rest), lever height (knuckle–jack gap at rest), jack
+//                        position (jack edge vs knuckle core), lost motion (jack–butt gap),
+//                        bridle (strap slack at rest);
+//   slow key press       let-off (hammer–string distance at escapement), drop (distance after
+//                        the hammer drops onto the repetition lever), damper lift (fraction of
+//                        the hammer travel at which the damper starts to lift);
+//   forte blow           checking (hammer–string distance when the backcheck catches it).
+// Values are in the setting's unit (mm, or a fraction).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/action_model.h"
+#include "sim/simulation.h"
+
+namespace pat {
+
+/// One measured setting, with its target and adjuster position.
+struct SettingReading {
+  std::string name;
+  std::string unit;
+  double target = 0.0;
+  double tolerance = 0.0;
+  double measured = 0.0;
+  double adjuster_mm = 0.0;  ///< adjuster offset from the preset's regulated position
+  bool within_tolerance() const;
+};
+
+/// Measures setting `name` of `model` (its unit). `rest` may pass the model's rest state.
+/// Throws InputError for an unknown setting, std::runtime_error when the measurement cannot be
+/// taken (e.g. the action never escapes in the slow press) with the reason.
+double measure_setting(const ActionModel& model, const std::string& name,
+                       const RestState* rest = nullptr);
+
+/// Every setting of the model's regulation list, in the technician's order.
+std::vector<SettingReading> measure_settings(const ActionModel& model);
+
+}  // namespace pat
