@@ -111,26 +111,39 @@ void ActionDynamics::applied_key_force(double t, const DofVector& q, DofVector& 
     add_point_force(key_, transform(key_, model_.landmarks.key_front), Vec2(0.0, -f), forces);
 }
 
+Vec2 ActionDynamics::segment_normal(const Contact& contact) const {
+  return contact.body_b < 0
+             ? contact.segment_normal
+             : rotate(contact.segment_normal, kin_[contact.body_b].cos, kin_[contact.body_b].sin);
+}
+
 bool ActionDynamics::contact_patch(const Contact& contact, ContactPatch& patch) const {
   const Vec2 center_a = transform(contact.body_a, contact.center_a);
   if (contact.shape == ContactShape::CircleCircle)
     return circle_circle_patch(center_a, contact.radius_a,
                                transform(contact.body_b, contact.center_b), contact.radius_b,
                                patch);
-  const Vec2 n = contact.body_b < 0 ? contact.segment_normal
-                                    : rotate(contact.segment_normal, kin_[contact.body_b].cos,
-                                             kin_[contact.body_b].sin);
-  return circle_segment_patch(
-      center_a, contact.radius_a, transform(contact.body_b, contact.segment_start),
-      transform(contact.body_b, contact.segment_end), n, contact.radius_b, patch);
+  return circle_segment_patch(center_a, contact.radius_a,
+                              transform(contact.body_b, contact.segment_start),
+                              transform(contact.body_b, contact.segment_end),
+                              segment_normal(contact), contact.radius_b, patch);
 }
 
 void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
   update_kinematics(q, DofVector::Zero(n_));
   penetration.resize(model_.contacts.size());
   for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    ContactPatch patch;
-    penetration[c] = contact_patch(model_.contacts[c], patch) ? patch.penetration : 0.0;
+    const Contact& contact = model_.contacts[c];
+    const Vec2 center_a = transform(contact.body_a, contact.center_a);
+    penetration[c] =
+        contact.shape == ContactShape::CircleCircle
+            ? circle_circle_penetration(center_a, contact.radius_a,
+                                        transform(contact.body_b, contact.center_b),
+                                        contact.radius_b)
+            : circle_segment_penetration(center_a, contact.radius_a,
+                                         transform(contact.body_b, contact.segment_start),
+                                         transform(contact.body_b, contact.segment_end),
+                                         segment_normal(contact), contact.radius_b);
   }
 }
 

@@ -70,8 +70,9 @@ class ActionDynamics : public OdeSystem {
   /// Evaluates accelerations, contact readings and the finger force at full (q, q̇).
   void evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out);
 
-  /// Contact penetrations at q (m; ≤ 0 where apart), geometry only: cheap enough to call after
-  /// every step for events and for the unphysical-penetration check.
+  /// Signed contact penetrations at q (m): > 0 overlap, < 0 minus the gap still open. Geometry
+  /// only: cheap enough to call after every step for events, the unphysical-penetration check
+  /// and the technician's gap measurements.
   void contact_penetrations(const DofVector& q, std::vector<double>& penetration);
 
   /// Mass matrix at q (the point mass of a mass input included).
@@ -106,6 +107,8 @@ class ActionDynamics : public OdeSystem {
   /// q̈ of every joint from the assembled M and forces (prescribed key included).
   void solve_accelerations(double t, const DofMatrix& mass, const DofVector& forces,
                            DofVector& acceleration) const;
+  /// Unit normal of a segment contact's face in the world, at the current kinematics.
+  Vec2 segment_normal(const Contact& contact) const;
   /// Geometry of contact c at the current kinematics; false when apart.
   bool contact_patch(const Contact& contact, ContactPatch& patch) const;
 

@@ -17,15 +17,29 @@ bool circle_circle_patch(const Vec2& center_a, double radius_a, const Vec2& cent
   return true;
 }
 
+namespace {
+
+/// Circle A meets the face of segment B (else the rounded corner at the nearer end). A hybrid
+/// contact whose circle centre has gone below the face (the jack swinging back under a dropped
+/// knuckle) meets the corner from the side.
+bool meets_face(const Vec2& rel, double t, const Vec2& normal, double corner_radius) {
+  const bool beside = corner_radius > 0.0 && normal.dot(rel) < 0.0;
+  return t >= 0.0 && t <= 1.0 && !beside;
+}
+
+Vec2 corner_centre(double t, const Vec2& s0, const Vec2& s1, const Vec2& normal,
+                   double corner_radius) {
+  return (t < 0.5 ? s0 : s1) - corner_radius * normal;
+}
+
+}  // namespace
+
 bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0, const Vec2& s1,
                           const Vec2& normal, double corner_radius, ContactPatch& patch) {
   const Vec2 u = s1 - s0;
   const Vec2 rel = center_a - s0;
   const double t = rel.dot(u) / u.squaredNorm();
-  // a hybrid contact whose circle centre has gone below the face (the jack swinging back
-  // under a dropped knuckle) meets the nearer rounded corner from the side, not the face
-  const bool beside = corner_radius > 0.0 && normal.dot(rel) < 0.0;
-  if (t >= 0.0 && t <= 1.0 && !beside) {
+  if (meets_face(rel, t, normal, corner_radius)) {
     const double x = radius_a - normal.dot(rel);
     if (x <= 0.0) return false;
     patch.penetration = x;
@@ -33,9 +47,23 @@ bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0,
     patch.point = center_a - (radius_a - 0.5 * x) * normal;
     return true;
   }
-  // past an end: the rounded corner
-  const Vec2 corner = (t < 0.5 ? s0 : s1) - corner_radius * normal;
-  return circle_circle_patch(center_a, radius_a, corner, corner_radius, patch);
+  return circle_circle_patch(center_a, radius_a, corner_centre(t, s0, s1, normal, corner_radius),
+                             corner_radius, patch);
+}
+
+double circle_circle_penetration(const Vec2& center_a, double radius_a, const Vec2& center_b,
+                                 double radius_b) {
+  return radius_a + radius_b - (center_a - center_b).norm();
+}
+
+double circle_segment_penetration(const Vec2& center_a, double radius_a, const Vec2& s0,
+                                  const Vec2& s1, const Vec2& normal, double corner_radius) {
+  const Vec2 u = s1 - s0;
+  const Vec2 rel = center_a - s0;
+  const double t = rel.dot(u) / u.squaredNorm();
+  if (meets_face(rel, t, normal, corner_radius)) return radius_a - normal.dot(rel);
+  return circle_circle_penetration(center_a, radius_a,
+                                   corner_centre(t, s0, s1, normal, corner_radius), corner_radius);
 }
 
 }  // namespace pat

@@ -30,4 +30,10 @@ bool circle_circle_patch(const Vec2& center_a, double radius_a, const Vec2& cent
 bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0, const Vec2& s1,
                           const Vec2& normal, double corner_radius, ContactPatch& patch);
 
+/// Signed penetration (m) of the same pairs: > 0 overlap, < 0 minus the gap still open.
+double circle_circle_penetration(const Vec2& center_a, double radius_a, const Vec2& center_b,
+                                 double radius_b);
+double circle_segment_penetration(const Vec2& center_a, double radius_a, const Vec2& s0,
+                                  const Vec2& s1, const Vec2& normal, double corner_radius);
+
 }  // namespace pat

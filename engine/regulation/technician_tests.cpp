@@ -32,35 +32,21 @@ class SlowPressMotion final : public KeyInput {
   std::string spec_;
 };
 
-/// Where a quantity crossed zero between two steps: the fraction of the step (linear).
-double crossing_fraction(double before, double after) {
-  const double span = before - after;
-  return span != 0.0 ? before / span : 1.0;
+/// The value of a quantity (before → after over a step) where a gap (gap_before → gap_after)
+/// closed or opened: linear in the step.
+double at_crossing(double before, double after, double gap_before, double gap_after) {
+  const double span = gap_before - gap_after;
+  const double s = span != 0.0 ? gap_before / span : 1.0;
+  return before + s * (after - before);
 }
 
 }  // namespace
 
 double contact_gap(const ActionModel& model, int contact_index, const DofVector& q) {
   ActionDynamics dynamics(model, nullptr);
-  return contact_gap(dynamics, contact_index, q);
-}
-
-double contact_gap(ActionDynamics& dynamics, int contact_index, const DofVector& q) {
-  const Contact& c = dynamics.model().contacts[contact_index];
-  const Vec2 center = dynamics.point_position(c.body_a, c.center_a, q);
-  if (c.shape == ContactShape::CircleCircle) {
-    const Vec2 other = dynamics.point_position(c.body_b, c.center_b, q);
-    return (center - other).norm() - (c.radius_a + c.radius_b);
-  }
-  const Vec2 s0 = dynamics.point_position(c.body_b, c.segment_start, q);
-  const Vec2 s1 = dynamics.point_position(c.body_b, c.segment_end, q);
-  const Vec2 normal = dynamics.point_position(c.body_b, c.segment_start + c.segment_normal, q) - s0;
-  const Vec2 u = s1 - s0;
-  const double t = (center - s0).dot(u) / u.squaredNorm();
-  const bool beside = c.radius_b > 0.0 && normal.dot(center - s0) < 0.0;
-  if (t >= 0.0 && t <= 1.0 && !beside) return normal.dot(center - s0) - c.radius_a;
-  const Vec2 corner = (t < 0.5 ? s0 : s1) - c.radius_b * normal;
-  return (center - corner).norm() - (c.radius_a + c.radius_b);
+  std::vector<double> penetration;
+  dynamics.contact_penetrations(q, penetration);
+  return -penetration[contact_index];
 }
 
 SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int damper_contact,
@@ -76,16 +62,15 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   options.integrator_options.max_step_s = 2e-3;
   options.sample_interval_s = 0.0;
   auto input = std::make_shared<SlowPressMotion>(depth, kSlowPressSeconds);
-  Simulator sim(std::shared_ptr<const ActionModel>(&model, [](const ActionModel*) {}), input,
-                options, &rest);
+  Simulator sim(borrow(model), input, options, &rest);
+  auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
 
-  ActionDynamics gauge(model, nullptr);
   SlowPressReading reading;
   bool escaped = false, damper_lifted = damper_contact < 0;
   bool letoff_touched = false, jack_carried = false;
   double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_escapement = contact_gap(gauge, marks.escapement_contact, sim.q());
-  double previous_damper = damper_contact >= 0 ? contact_gap(gauge, damper_contact, sim.q()) : 0.0;
+  double previous_escapement = gap_of(marks.escapement_contact);
+  double previous_damper = damper_contact >= 0 ? gap_of(damper_contact) : 0.0;
   if (!damper_lifted && previous_damper <= 0.0)
     throw std::runtime_error("the damper already rests on its lifter at rest");
   const double end = kSlowPressSeconds + kSlowPressHoldSeconds;
@@ -94,22 +79,19 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
       throw std::runtime_error("the slow key press stopped at t = " + std::to_string(sim.time()) +
                                " s: " + sim.stop_cause());
     const double gap = sim.hammer_string_gap(sim.q());
-    const double escapement = contact_gap(gauge, marks.escapement_contact, sim.q());
-    if (contact_gap(gauge, marks.letoff_contact, sim.q()) <= 0.0) letoff_touched = true;
+    const double escapement = gap_of(marks.escapement_contact);
+    if (gap_of(marks.letoff_contact) <= 0.0) letoff_touched = true;
     if (escapement <= 0.0) jack_carried = true;
     // escapement: the jack leaves the knuckle (butt) once the let-off button has tipped it
     if (!escaped && letoff_touched && previous_escapement <= 0.0 && escapement > 0.0) {
-      const double s = crossing_fraction(previous_escapement, escapement);
-      reading.let_off_gap = previous_gap + s * (gap - previous_gap);
+      reading.let_off_gap = at_crossing(previous_gap, gap, previous_escapement, escapement);
       escaped = true;
     }
     if (!damper_lifted) {
-      const double damper = contact_gap(gauge, damper_contact, sim.q());
+      const double damper = gap_of(damper_contact);
       if (damper <= 0.0) {
-        const double s = crossing_fraction(previous_damper, damper);
-        const double at_lift = previous_gap + s * (gap - previous_gap);
-        reading.damper_lift_fraction =
-            (rest.hammer_string_gap - at_lift) / rest.hammer_string_gap;
+        const double at_lift = at_crossing(previous_gap, gap, previous_damper, damper);
+        reading.damper_lift_fraction = (rest.hammer_string_gap - at_lift) / rest.hammer_string_gap;
         damper_lifted = true;
       }
       previous_damper = damper;
@@ -126,10 +108,9 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     throw std::runtime_error(
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "
         "button before the key bottoms)");
-  if (!damper_lifted)
-    throw std::runtime_error("in a slow key press the damper never lifts");
+  if (!damper_lifted) throw std::runtime_error("in a slow key press the damper never lifts");
   reading.drop_gap = sim.hammer_string_gap(sim.q());
-  reading.checked_at_end = contact_gap(gauge, marks.check_contact, sim.q()) <= 0.0;
+  reading.checked_at_end = gap_of(marks.check_contact) <= 0.0;
   return reading;
 }
 
@@ -141,20 +122,19 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   const InputContext context = input_context(model, rest);
   std::shared_ptr<const KeyInput> input =
       parse_input_spec("force:const:" + std::to_string(kForteBlowNewtons), context);
-  Simulator sim(std::shared_ptr<const ActionModel>(&model, [](const ActionModel*) {}), input,
-                options, &rest);
-  ActionDynamics gauge(model, nullptr);
+  Simulator sim(borrow(model), input, options, &rest);
+  auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
   ForteBlowReading reading;
   bool struck = false;
   double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_check = contact_gap(gauge, marks.check_contact, sim.q());
+  double previous_check = gap_of(marks.check_contact);
   const double limit = 0.3;
   while (sim.time() < limit) {
     if (!sim.step(limit))
       throw std::runtime_error("the forte blow stopped at t = " + std::to_string(sim.time()) +
                                " s: " + sim.stop_cause());
     const double gap = sim.hammer_string_gap(sim.q());
-    const double check = contact_gap(gauge, marks.check_contact, sim.q());
+    const double check = gap_of(marks.check_contact);
     if (!struck && sim.new_event_count() > 0) {
       for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
         if (e->type == "impact") {
@@ -164,8 +144,7 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
     }
     // caught: the hammer's tail (catcher) meets the backcheck on its way back from the string
     if (struck && previous_check > 0.0 && check <= 0.0) {
-      const double s = crossing_fraction(previous_check, check);
-      reading.checked_gap = previous_gap + s * (gap - previous_gap);
+      reading.checked_gap = at_crossing(previous_gap, gap, previous_check, check);
       return reading;
     }
     previous_gap = gap;

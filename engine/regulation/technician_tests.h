@@ -12,10 +12,6 @@ namespace pat {
 /// the parts overlap (minus the penetration). Same geometry as the dynamics (contact_geometry.h).
 double contact_gap(const ActionModel& model, int contact, const DofVector& q);
 
-class ActionDynamics;
-/// The same, reusing a dynamics object of the model (no set-up cost: for loops over steps).
-double contact_gap(ActionDynamics& dynamics, int contact, const DofVector& q);
-
 struct SlowPressReading {
   double let_off_gap = 0.0;           ///< m, hammer–string distance when the jack escapes
   double drop_gap = 0.0;              ///< m, hammer–string distance at the end, key held down
@@ -45,8 +41,8 @@ struct ForteBlowReading {
 inline constexpr double kForteBlowNewtons = 40.0;
 
 /// A forte blow with the key held down: the hammer strikes, falls back and is caught by the
-/// backcheck; the distance is read where the catcher first meets the backcheck. Throws std::runtime_error when the
-/// hammer does not strike or is not caught.
+/// backcheck; the distance is read where the catcher first meets the backcheck. Throws
+/// std::runtime_error when the hammer does not strike or is not caught.
 ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest);
 
 }  // namespace pat

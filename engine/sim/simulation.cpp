@@ -103,10 +103,8 @@ RestState find_rest_state(const ActionModel& model) {
 
 SimulationResult simulate(const ActionModel& model, const KeyInput* input,
                           const SimulationOptions& options, const RestState* given_rest) {
-  // the caller owns model and input for the whole call: non-owning shared pointers
-  Simulator sim(std::shared_ptr<const ActionModel>(&model, [](const ActionModel*) {}),
-                std::shared_ptr<const KeyInput>(input, [](const KeyInput*) {}), options,
-                given_rest);
+  // the caller owns model and input for the whole call
+  Simulator sim(borrow(model), input ? borrow(*input) : nullptr, options, given_rest);
   SimulationResult result;
   result.rest = sim.rest();
   const DofVector& q_rest = result.rest.q;
@@ -155,8 +153,8 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     // when it produced a finite state)
     while (options.sample_interval_s > 0.0 && next_sample <= sim.time() + 1e-12 &&
            sim.time() > sim.previous_time()) {
-      hermite(sim.previous_time(), sim.previous_q(), sim.previous_v(), sim.time(), sim.q(),
-              sim.v(), next_sample, qs, vs);
+      hermite(sim.previous_time(), sim.previous_q(), sim.previous_v(), sim.time(), sim.q(), sim.v(),
+              next_sample, qs, vs);
       if (!qs.allFinite() || !vs.allFinite()) break;
       record(next_sample, qs, vs);
       next_sample += options.sample_interval_s;

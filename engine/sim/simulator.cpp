@@ -32,7 +32,7 @@ Simulator::Simulator(std::shared_ptr<const ActionModel> model,
   restart_integrator();
   q0_ = q1_;
   v0_ = v1_;
-  dynamics_->contact_penetrations(q1_, previous_penetration_);
+  dynamics_->contact_penetrations(q1_, penetration_);
 }
 
 void Simulator::restart_integrator() {
@@ -53,7 +53,7 @@ void Simulator::set_model(std::shared_ptr<const ActionModel> model) {
     throw std::invalid_argument("Simulator::set_model: the new model has other joints");
   model_ = std::move(model);
   restart_integrator();
-  dynamics_->contact_penetrations(q1_, previous_penetration_);
+  dynamics_->contact_penetrations(q1_, penetration_);
 }
 
 void Simulator::set_input(std::shared_ptr<const KeyInput> input) {
@@ -91,10 +91,10 @@ bool Simulator::step(double t_max) {
       return false;
     }
   }
-  dynamics_->contact_penetrations(q1_, current_penetration_);
+  dynamics_->contact_penetrations(q1_, next_penetration_);
   check_penetrations();
   detect_events();
-  std::swap(previous_penetration_, current_penetration_);
+  std::swap(penetration_, next_penetration_);
   return !stopped_;
 }
 
@@ -107,10 +107,10 @@ void Simulator::check_penetrations() {
   const ActionModel& model = *model_;
   for (std::size_t c = 0; c < model.contacts.size(); ++c) {
     const Contact& contact = model.contacts[c];
-    if (current_penetration_[c] > contact.max_penetration) {
+    if (next_penetration_[c] > contact.max_penetration) {
       stop("unphysical penetration in contact '" + contact.name + "' (" +
            part_name(model, contact.body_a) + " into " + part_name(model, contact.body_b) +
-           "): " + format_mm(current_penetration_[c]) + " mm, limit " +
+           "): " + format_mm(next_penetration_[c]) + " mm, limit " +
            format_mm(contact.max_penetration) + " mm");
       return;
     }
@@ -119,8 +119,8 @@ void Simulator::check_penetrations() {
 
 void Simulator::detect_events() {
   const ActionLandmarks& marks = model_->landmarks;
-  const std::vector<double>& previous = previous_penetration_;
-  const std::vector<double>& current = current_penetration_;
+  const std::vector<double>& previous = penetration_;
+  const std::vector<double>& current = next_penetration_;
   const std::size_t before = events_.size();
   auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
   const double gap = dynamics_->hammer_string_gap(q1_);

@@ -17,6 +17,13 @@
 
 namespace pat {
 
+/// A non-owning pointer to something the caller keeps alive for the Simulator's whole life
+/// (simulate() and the technician's tests run a Simulator over a model they were handed).
+template <typename T>
+std::shared_ptr<const T> borrow(const T& object) {
+  return std::shared_ptr<const T>(&object, [](const T*) {});
+}
+
 class Simulator {
  public:
   /// Starts at t = 0 from the rest state (computed, or `rest` when given). `input` may be null
@@ -47,6 +54,8 @@ class Simulator {
 
   bool stopped() const { return stopped_; }
   const std::string& stop_cause() const { return stop_cause_; }
+  /// Signed contact penetrations at time() (m; < 0: the gap still open), by contact index.
+  const std::vector<double>& contact_penetrations() const { return penetration_; }
   /// Events found so far, in time order.
   const std::vector<SimEvent>& events() const { return events_; }
   /// Events found by the latest step() call.
@@ -84,7 +93,8 @@ class Simulator {
 
   double t0_ = 0.0, t1_ = 0.0;
   DofVector q0_, v0_, q1_, v1_;
-  std::vector<double> previous_penetration_, current_penetration_;
+  std::vector<double> penetration_;       // at t1_
+  std::vector<double> next_penetration_;  // scratch: at the end of the step being taken
   bool stopped_ = false;
   std::string stop_cause_;
   std::vector<SimEvent> events_;
