@@ -23,7 +23,6 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   const double rate = options.rate_mm_per_s * 1e-3;  // m/s
 
   RestState rest = find_rest_state(model);
-  const RestState initial_rest = rest;  // angles are reported from the starting rest position
   std::shared_ptr<const KeyInput> input = parse_input_spec(
       "motion:sine:" + std::to_string(options.frequency_hz) + ":full", input_context(model, rest));
   SimulationOptions sim_options;
@@ -35,27 +34,20 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   result.trace.columns.push_back("adjuster_mm");
   result.trace.metadata["action"] = model.kind;
   result.trace.metadata["input"] = input->spec();
-  result.trace.metadata["deregulation"] = options.setting + " at " +
-                                          std::to_string(options.rate_mm_per_s) + " mm/s";
+  result.trace.metadata["deregulation"] =
+      options.setting + " at " + std::to_string(options.rate_mm_per_s) + " mm/s";
   const int whippen = model.body_index("whippen");
   // the adjuster moves in steps (the paper's screw turns) or, continuously, every 10 ms
   const double interval = options.step_interval_s > 0.0 ? options.step_interval_s : 0.01;
   double value = start_value;
   double measured = measure_setting(model, options.setting, &rest);
-  DynamicsReading reading;
   const double period = 1.0 / options.frequency_hz;
   int next_cycle = 1;
   double next_row = 0.0;
   const double row_interval = 1e-3;
   auto record_row = [&]() {
-    sim.evaluate(sim.time(), sim.q(), sim.v(), reading);
-    std::vector<double> row{sim.time()};
-    for (int k = 0; k < model.dofs(); ++k)
-      row.push_back(model.bodies[k].trace_sign * deg(sim.q()[k] - initial_rest.q[k]));
-    row.push_back(sim.hammer_string_gap(sim.q()) * 1e3);
-    row.push_back(reading.finger_force);
-    for (const ContactReading& c : reading.contacts) row.push_back(c.normal_force);
-    for (double tension : reading.strap_tension) row.push_back(tension);
+    // the simulator's angles count from its starting rest, which set_model keeps
+    std::vector<double> row = sim.trace_row(sim.time(), sim.q(), sim.v());
     row.push_back(value * 1e3);
     result.trace.rows.push_back(std::move(row));
   };
@@ -70,8 +62,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       next_row += row_interval;
     }
     // the screw turns at every interval boundary
-    const double wanted =
-        start_value + rate * interval * std::floor((t + 1e-9) / interval);
+    const double wanted = start_value + rate * interval * std::floor((t + 1e-9) / interval);
     if (std::abs(wanted - value) > 1e-12) {
       if (wanted < adjuster.min || wanted > adjuster.max) {
         sim.stop("the adjuster '" + options.setting + "' reached the end of its range (" +
@@ -79,7 +70,8 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
         break;
       }
       value = wanted;
-      auto moved = std::make_shared<const ActionModel>(with_adjuster(model, options.setting, value));
+      auto moved =
+          std::make_shared<const ActionModel>(with_adjuster(model, options.setting, value));
       sim.set_model(moved);
       try {
         rest = rest_state_near(*moved, rest);
@@ -95,9 +87,9 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       sample.adjuster_mm = value * 1e3;
       sample.measured = measured;
       sample.hammer_string_gap_mm = sim.hammer_string_gap(sim.q()) * 1e3;
-      sample.whippen_angle_deg =
-          whippen >= 0 ? model.bodies[whippen].trace_sign * deg(sim.q()[whippen] - initial_rest.q[whippen])
-                       : 0.0;
+      sample.whippen_angle_deg = whippen >= 0 ? model.bodies[whippen].trace_sign *
+                                                    deg(sim.q()[whippen] - sim.rest().q[whippen])
+                                              : 0.0;
       result.samples.push_back(sample);
       ++next_cycle;
     }

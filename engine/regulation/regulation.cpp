@@ -7,22 +7,15 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "model/model_edits.h"
 #include "sim/static_equilibrium.h"
 
 namespace pat {
 namespace {
-
-std::string format(double value, int precision = 3) {
-  std::ostringstream out;
-  out.precision(precision);
-  out << value;
-  return out.str();
-}
 
 /// One setting's measurement as a function of its adjuster position (m), with the rest state
 /// carried from one evaluation to the next (Newton continuation).
@@ -64,8 +57,8 @@ struct Found {
 /// Finds the adjuster position where the measurement meets its target: a bracket around the
 /// target found by secant steps from the current position, then false position with the
 /// Illinois modification (a bracketing method like bisection, converging superlinearly).
-Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster,
-                    const RegulationSetting& setting, double x0, double e0, double aim) {
+Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const RegulationSetting& setting,
+                    double x0, double e0, double aim) {
   Found found;
   // Bracket the target: a small probe step gives the slope, then secant steps (at most four
   // times the previous step, clamped to the physical range) until the error changes sign.
@@ -79,11 +72,11 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster,
     // back toward the last measurable one
     for (int tries = 0; tries < 2; ++tries) {
       if (auto e = probe.error_at(x, &why)) {
-        tried.push_back(format(*e + setting.target) + " " + setting.unit + " at " +
-                        format(x * 1e3) + " mm");
+        tried.push_back(format_number(*e + setting.target) + " " + setting.unit + " at " +
+                        format_number(x * 1e3) + " mm");
         return e;
       }
-      tried.push_back("unmeasurable at " + format(x * 1e3) + " mm (" + why + ")");
+      tried.push_back("unmeasurable at " + format_number(x * 1e3) + " mm (" + why + ")");
       x = 0.5 * (x + xa);
       xb = x;
     }
@@ -116,9 +109,9 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster,
     eb = probe_at(xb);
   }
   if (!bracketed) {
-    found.message = "setting '" + setting.name + "': the target " + format(setting.target) + " " +
-                    setting.unit + " is out of reach within the adjuster's range [" +
-                    format(adjuster.min * 1e3) + ", " + format(adjuster.max * 1e3) +
+    found.message = "setting '" + setting.name + "': the target " + format_number(setting.target) +
+                    " " + setting.unit + " is out of reach within the adjuster's range [" +
+                    format_number(adjuster.min * 1e3) + ", " + format_number(adjuster.max * 1e3) +
                     "] mm (measured ";
     for (std::size_t i = 0; i < tried.size(); ++i) found.message += (i ? "; " : "") + tried[i];
     found.message += ")";
@@ -135,9 +128,9 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster,
     if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
     std::string why;
     const auto e = probe.error_at(x, &why);
-    if (!e) {  // unmeasurable inside the bracket: plain bisection of the side kept
+    if (!e) {  // unmeasurable inside a bracket measured at both ends: give up for this pass
       found.message = "setting '" + setting.name + "' cannot be measured at " +
-                      format(x * 1e3) + " mm: " + why;
+                      format_number(x * 1e3) + " mm: " + why;
       return found;
     }
     if (std::abs(*e) <= aim || hi - lo < 1e-7) {
@@ -146,8 +139,8 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster,
       found.error = *e;
       if (!found.ok)
         found.message = "setting '" + setting.name + "' jumps across its target near " +
-                        format(x * 1e3) + " mm (measured " + format(*e + setting.target) + " " +
-                        setting.unit + ")";
+                        format_number(x * 1e3) + " mm (measured " +
+                        format_number(*e + setting.target) + " " + setting.unit + ")";
       return found;
     }
     if ((*e > 0.0) == (e_lo > 0.0)) {
@@ -179,13 +172,17 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
     failures.clear();
     bool all_within = true;
     for (const RegulationSetting& setting : model.regulation) {
-      const Adjuster& adjuster =
-          result.model.adjusters[result.model.adjuster_index(setting.name)];
+      const Adjuster& adjuster = result.model.adjusters[result.model.adjuster_index(setting.name)];
       SettingProbe probe(result.model, setting, rest);
       std::string why;
       const auto e0 = probe.error_at(adjuster.value, &why);
-      RegulationStep step{pass, setting.name, adjuster.value * 1e3,
-                          e0 ? *e0 + setting.target : std::nan(""), setting.target, 1};
+      RegulationStep step{pass,
+                          setting.name,
+                          adjuster.value * 1e3,
+                          e0 ? *e0 + setting.target : std::nan(""),
+                          setting.target,
+                          1,
+                          {}};
       if (!e0) {
         // settings interact (e.g. let-off cannot be read while the drop screw lets the
         // repetition lever carry the hammer): go on, and try again in the next pass
@@ -198,8 +195,8 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
         const Found found =
             find_adjuster(probe, adjuster, setting, adjuster.value, *e0, 0.3 * setting.tolerance);
         if (found.ok) {
+          // `rest` already is the rest state there: the probe's last measurement was taken there
           result.model = with_adjuster(result.model, setting.name, found.adjuster_m);
-          rest = rest_state_near(result.model, rest);
           step.adjuster_mm = found.adjuster_m * 1e3;
           step.measured = found.error + setting.target;
         } else {
@@ -235,6 +232,8 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
 void write_preset(const ActionModel& model, const std::string& path) {
   if (model.preset_json.empty())
     throw InputError(path + ": the model was not read from a preset, nothing to write");
+  if (!model.removed_parts.empty())
+    throw InputError(path + ": a model with parts removed (--without) is not written as a preset");
   nlohmann::ordered_json root = nlohmann::ordered_json::parse(model.preset_json);
   auto& adjusters = root.at("adjusters");
   for (std::size_t i = 0; i < model.adjusters.size(); ++i) {
@@ -250,12 +249,11 @@ void write_preset(const ActionModel& model, const std::string& path) {
     else
       item.erase("regulated_offset_mm");
   }
-  if (!model.removed_parts.empty())
-    throw InputError(path + ": a model with parts removed (--without) is not written as a preset");
   const std::string temporary = path + ".tmp";
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot write the preset (cannot create " + temporary + ")");
+    if (!out)
+      throw InputError(path + ": cannot write the preset (cannot create " + temporary + ")");
     out << root.dump(1) << "\n";
     if (!out.flush()) {
       std::remove(temporary.c_str());

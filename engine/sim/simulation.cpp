@@ -2,22 +2,15 @@
 
 #include <chrono>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/format.h"
 #include "dynamics/action_dynamics.h"
 #include "sim/simulator.h"
 #include "sim/static_equilibrium.h"
 
 namespace pat {
 namespace {
-
-std::string format_mm(double metres) {
-  std::ostringstream out;
-  out.precision(3);
-  out << metres * 1e3;
-  return out.str();
-}
 
 /// Cubic Hermite interpolation of (q, v) between two step ends (q' = v exactly).
 void hermite(double t0, const DofVector& q0, const DofVector& v0, double t1, const DofVector& q1,
@@ -107,8 +100,6 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
   Simulator sim(borrow(model), input ? borrow(*input) : nullptr, options, given_rest);
   SimulationResult result;
   result.rest = sim.rest();
-  const DofVector& q_rest = result.rest.q;
-  const int n = model.dofs();
 
   if (options.sample_interval_s > 0.0) {
     result.trace.columns = trace_columns(model);
@@ -119,24 +110,15 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     std::string settings, removed;
     for (const Adjuster& a : model.adjusters)
       if (a.value != 0.0)
-        settings += (settings.empty() ? "" : " ") + a.name + "=" + format_mm(a.value) + "mm";
+        settings +=
+            (settings.empty() ? "" : " ") + a.name + "=" + format_number(a.value * 1e3) + "mm";
     for (const std::string& part : model.removed_parts)
       removed += (removed.empty() ? "" : " ") + part;
     result.trace.metadata["settings"] = settings.empty() ? "regulated" : settings;
     if (!removed.empty()) result.trace.metadata["without"] = removed;
   }
-  DynamicsReading reading;
   auto record = [&](double t, const DofVector& q, const DofVector& v) {
-    sim.evaluate(t, q, v, reading);
-    std::vector<double> row;
-    row.reserve(result.trace.columns.size());
-    row.push_back(t);
-    for (int k = 0; k < n; ++k) row.push_back(model.bodies[k].trace_sign * deg(q[k] - q_rest[k]));
-    row.push_back(sim.hammer_string_gap(q) * 1e3);
-    row.push_back(reading.finger_force);
-    for (const ContactReading& c : reading.contacts) row.push_back(c.normal_force);
-    for (double tension : reading.strap_tension) row.push_back(tension);
-    result.trace.rows.push_back(std::move(row));
+    result.trace.rows.push_back(sim.trace_row(t, q, v));
   };
   double next_sample = 0.0;
   if (options.sample_interval_s > 0.0) {

@@ -1,21 +1,15 @@
 #include "sim/simulator.h"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "core/format.h"
 
 namespace pat {
 namespace {
 
 std::string part_name(const ActionModel& model, int body) {
   return body < 0 ? std::string("frame") : model.bodies[body].name;
-}
-
-std::string format_mm(double metres) {
-  std::ostringstream out;
-  out.precision(3);
-  out << metres * 1e3;
-  return out.str();
 }
 
 }  // namespace
@@ -71,6 +65,21 @@ void Simulator::evaluate(double t, const DofVector& q, const DofVector& v, Dynam
   dynamics_->evaluate(t, q, v, out);
 }
 
+std::vector<double> Simulator::trace_row(double t, const DofVector& q, const DofVector& v) {
+  dynamics_->evaluate(t, q, v, reading_);
+  const ActionModel& model = *model_;
+  std::vector<double> row;
+  row.reserve(1 + model.dofs() + 2 + reading_.contacts.size() + reading_.strap_tension.size());
+  row.push_back(t);
+  for (int k = 0; k < model.dofs(); ++k)
+    row.push_back(model.bodies[k].trace_sign * deg(q[k] - rest_.q[k]));
+  row.push_back(dynamics_->hammer_string_gap(q) * 1e3);
+  row.push_back(reading_.finger_force);
+  for (const ContactReading& c : reading_.contacts) row.push_back(c.normal_force);
+  for (double tension : reading_.strap_tension) row.push_back(tension);
+  return row;
+}
+
 bool Simulator::step(double t_max) {
   new_events_ = 0;
   if (stopped_) return false;
@@ -110,8 +119,8 @@ void Simulator::check_penetrations() {
     if (next_penetration_[c] > contact.max_penetration) {
       stop("unphysical penetration in contact '" + contact.name + "' (" +
            part_name(model, contact.body_a) + " into " + part_name(model, contact.body_b) +
-           "): " + format_mm(next_penetration_[c]) + " mm, limit " +
-           format_mm(contact.max_penetration) + " mm");
+           "): " + format_number(next_penetration_[c] * 1e3) + " mm, limit " +
+           format_number(contact.max_penetration * 1e3) + " mm");
       return;
     }
   }

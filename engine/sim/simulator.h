@@ -70,6 +70,9 @@ class Simulator {
 
   /// Accelerations, contact forces and the finger force at (t, q, q̇) given.
   void evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out);
+  /// One row of the trace (trace_columns() order) at (t, q, q̇): body angles in degrees from
+  /// rest(), the hammer–string gap, the finger force, contact forces and strap tensions.
+  std::vector<double> trace_row(double t, const DofVector& q, const DofVector& v);
   /// Hammer–string gap (m) at q.
   double hammer_string_gap(const DofVector& q) { return dynamics_->hammer_string_gap(q); }
 
@@ -98,6 +101,7 @@ class Simulator {
   bool stopped_ = false;
   std::string stop_cause_;
   std::vector<SimEvent> events_;
+  DynamicsReading reading_;  // scratch for trace_row
   int new_events_ = 0;
   bool impact_since_check_ = false;
   double last_key_bottom_ = -1.0;
