@@ -7,14 +7,14 @@
 namespace pat {
 namespace {
 
-/// Penetration of the key-bottom contact with the key turned to `angle` (absolute joint value).
+/// Signed penetration of the key-bottom contact with the key turned to `angle` (absolute joint
+/// value); negative: the gap still open.
 double bottom_penetration(const ActionModel& model, ActionDynamics& dynamics, DofVector q,
                           double angle) {
-  const Contact& c = model.contacts[model.landmarks.key_bottom_contact];
   q[model.landmarks.key] = angle;
-  const Vec2 center = dynamics.point_position(c.body_a, c.center_a, q);
-  // the punching is on the frame: a negative value is the remaining gap
-  return c.radius_a - c.segment_normal.dot(center - c.segment_start);
+  std::vector<double> penetration;
+  dynamics.contact_penetrations(q, penetration);
+  return penetration[model.landmarks.key_bottom_contact];
 }
 
 }  // namespace
