@@ -22,7 +22,10 @@ bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0,
   const Vec2 u = s1 - s0;
   const Vec2 rel = center_a - s0;
   const double t = rel.dot(u) / u.squaredNorm();
-  if (t >= 0.0 && t <= 1.0) {
+  // a hybrid contact whose circle centre has gone below the face (the jack swinging back
+  // under a dropped knuckle) meets the nearer rounded corner from the side, not the face
+  const bool beside = corner_radius > 0.0 && normal.dot(rel) < 0.0;
+  if (t >= 0.0 && t <= 1.0 && !beside) {
     const double x = radius_a - normal.dot(rel);
     if (x <= 0.0) return false;
     patch.penetration = x;
@@ -31,7 +34,7 @@ bool circle_segment_patch(const Vec2& center_a, double radius_a, const Vec2& s0,
     return true;
   }
   // past an end: the rounded corner
-  const Vec2 corner = (t < 0.0 ? s0 : s1) - corner_radius * normal;
+  const Vec2 corner = (t < 0.5 ? s0 : s1) - corner_radius * normal;
   return circle_circle_patch(center_a, radius_a, corner, corner_radius, patch);
 }
 

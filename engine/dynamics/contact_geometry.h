@@ -4,7 +4,9 @@
 // or a segment [s0, s1] with a unit normal m toward the free side. For a segment,
 //   t* = (c − s0)·(s1 − s0)/|s1 − s0|²;  inside [0, 1]: x = r − m·(c − s0)  (circle–line),
 //   outside: circle against the rounded corner of radius ρ centred at the end point − ρ m
-//   (circle–circle), which makes the hybrid knuckle–jack contact continuous.
+//   (circle–circle), which makes the hybrid knuckle–jack contact continuous. A hybrid contact
+//   (ρ > 0) whose circle centre lies below the face (m·(c − s0) < 0) also uses the nearer
+//   corner: the circle is then beside the segment (a jack pushing on the knuckle's side).
 // For two circles, x = r_A + r_B − |c_A − c_B|. The normal n points from B toward A; the patch
 // centre is the middle of the overlap.
 #pragma once

@@ -27,5 +27,8 @@ int ActionModel::strap_index(const std::string& n) const {
 int ActionModel::adjuster_index(const std::string& n) const {
   return find_named(adjusters, n);
 }
+int ActionModel::setting_index(const std::string& n) const {
+  return find_named(regulation, n);
+}
 
 }  // namespace pat

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "model/model_edits.h"
 
 #ifndef PAT_PRESET_DIR
 #define PAT_PRESET_DIR "presets"
@@ -338,6 +339,49 @@ void read_adjusters(const PresetReader& r, const json& root, ActionModel& model)
   }
 }
 
+/// Offsets found by a regulation (`regulated_offset_mm`, written by write_preset) are baked
+/// into the geometry (fixtures included): that position becomes the regulated one (0), and the
+/// physical range stays relative to it.
+void apply_regulated_offsets(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& list = r.array(root, "", "adjusters");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string path = item_path("adjusters", i, list[i]);
+    const double offset = r.number_or(list[i], path, "regulated_offset_mm", 0.0) * kMm;
+    if (std::abs(offset) > 0.05)
+      r.fail(path + ".regulated_offset_mm",
+             "must be within ±50 mm (got " + PresetReader::format(offset / kMm) + ")");
+    if (offset == 0.0) continue;
+    const Adjuster original = model.adjusters[i];
+    model.adjusters[i].min = model.adjusters[i].max = offset;
+    model = with_adjuster(model, original.name, offset);
+    model.adjusters[i].min = original.min;
+    model.adjusters[i].max = original.max;
+    model.adjusters[i].value = 0.0;
+  }
+}
+
+void read_regulation(const PresetReader& r, const json& root, ActionModel& model) {
+  const json& list = r.array(root, "", "regulation");
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const json& item = list[i];
+    const std::string path = item_path("regulation", i, item);
+    RegulationSetting setting;
+    setting.name = r.text(item, path, "name");
+    if (model.adjuster_index(setting.name) < 0)
+      r.fail(path + ".name", "no adjuster named '" + setting.name + "'");
+    if (model.setting_index(setting.name) >= 0)
+      r.fail(path + ".name", "setting '" + setting.name + "' is listed twice");
+    setting.measurement = r.text(item, path, "measurement");
+    setting.unit = r.text(item, path, "unit");
+    if (setting.unit != "mm" && setting.unit != "fraction")
+      r.fail(path + ".unit", "expected \"mm\" or \"fraction\", got \"" + setting.unit + "\"");
+    setting.target = r.number(item, path, "target");
+    setting.tolerance = r.positive(item, path, "tolerance");
+    setting.source = r.text(item, path, "source");
+    model.regulation.push_back(setting);
+  }
+}
+
 void read_fixtures(const PresetReader& r, const json& root, ActionModel& model) {
   const json& list = r.array(root, "", "fixtures");
   for (std::size_t i = 0; i < list.size(); ++i) {
@@ -432,7 +476,10 @@ ActionModel parse_action(const std::string& json_text, const std::string& source
   read_springs_and_straps(r, root, model);
   read_adjusters(r, root, model);
   read_fixtures(r, root, model);
+  apply_regulated_offsets(r, root, model);
   read_landmarks(r, root, model);
+  read_regulation(r, root, model);
+  model.preset_json = json_text;
   return model;
 }
 

@@ -20,6 +20,7 @@ struct RegulationStep {
   double measured = 0.0;     ///< the setting's measurement there (its unit)
   double target = 0.0;
   int evaluations = 0;  ///< measurements taken to find it
+  std::string note;     ///< why the setting was left for the next pass, if it was
 };
 
 struct RegulationOptions {
@@ -38,8 +39,9 @@ struct RegulationResult {
   std::string message;  ///< why it did not converge, naming the setting
 };
 
-/// Regulates `model` from its current adjuster positions. Never throws for an unreachable
-/// target: converged = false and message names the setting and the bracket it searched.
+/// Regulates `model` from its current adjuster positions. A setting that cannot be measured or
+/// reached in one pass (settings interact) is retried in the next. Never throws for an
+/// unreachable target: converged = false and message names the setting and what was measured.
 RegulationResult regulate(const ActionModel& model, const RegulationOptions& options = {});
 
 /// Writes `model` as a preset: the preset it was read from, with every adjuster's current

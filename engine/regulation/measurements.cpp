@@ -1,0 +1,120 @@
+#include "regulation/measurements.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "dynamics/action_dynamics.h"
+#include "regulation/technician_tests.h"
+#include "sim/key_travel.h"
+
+namespace pat {
+namespace {
+
+std::string setting_names(const ActionModel& model) {
+  std::string names;
+  for (const RegulationSetting& s : model.regulation) names += (names.empty() ? "" : ", ") + s.name;
+  return names;
+}
+
+const RegulationSetting& find_setting(const ActionModel& model, const std::string& name) {
+  const int index = model.setting_index(name);
+  if (index < 0)
+    throw InputError("unknown setting '" + name + "' for the " + model.kind +
+                     " action (expected one of: " + setting_names(model) + ")");
+  return model.regulation[index];
+}
+
+/// The contact an adjuster moves (its first contact effect), or -1.
+int adjusted_contact(const ActionModel& model, const std::string& adjuster) {
+  const int index = model.adjuster_index(adjuster);
+  if (index < 0) return -1;
+  for (const AdjusterEffect& e : model.adjusters[index].effects)
+    if (e.target == AdjusterEffect::Target::ContactA ||
+        e.target == AdjusterEffect::Target::ContactB)
+      return e.index;
+  return -1;
+}
+
+/// Jack position (grand): the back edge of the jack top (the end of the escapement contact's
+/// segment nearest the strings, +x) relative to the knuckle core (the contact circle's centre),
+/// measured along the jack top; + means the edge lies toward the strings (jack too deep).
+double jack_position_mm(const ActionModel& model, const RestState& rest) {
+  const Contact& c = model.contacts[model.landmarks.escapement_contact];
+  if (c.shape != ContactShape::CircleSegment)
+    throw std::runtime_error("jack_position needs a circle-segment knuckle-jack contact");
+  ActionDynamics dynamics(model, nullptr);
+  const Vec2 core = dynamics.point_position(c.body_a, c.center_a, rest.q);
+  const Vec2 s0 = dynamics.point_position(c.body_b, c.segment_start, rest.q);
+  const Vec2 s1 = dynamics.point_position(c.body_b, c.segment_end, rest.q);
+  const Vec2 edge = s0.x() > s1.x() ? s0 : s1;
+  const Vec2 along = (edge - (s0.x() > s1.x() ? s1 : s0)).normalized();
+  return (edge - core).dot(along) * 1e3;
+}
+
+/// Bridle strap slack at rest (mm): how much farther apart its ends can move before it pulls.
+double bridle_slack_mm(const ActionModel& model, const RestState& rest) {
+  const int strap_index = model.strap_index("bridle");
+  if (strap_index < 0) throw std::runtime_error("this action has no bridle strap (removed?)");
+  const Strap& strap = model.straps[strap_index];
+  ActionDynamics dynamics(model, nullptr);
+  const DofVector zero = DofVector::Zero(model.dofs());
+  // the strap's free length: its ends' distance in the preset configuration plus its slack
+  const double free_length = (dynamics.point_position(strap.body_a, strap.point_a, zero) -
+                              dynamics.point_position(strap.body_b, strap.point_b, zero))
+                                 .norm() +
+                             strap.slack;
+  const double length = (dynamics.point_position(strap.body_a, strap.point_a, rest.q) -
+                         dynamics.point_position(strap.body_b, strap.point_b, rest.q))
+                            .norm();
+  return (free_length - length) * 1e3;
+}
+
+}  // namespace
+
+bool SettingReading::within_tolerance() const {
+  return std::abs(measured - target) <= tolerance;
+}
+
+double measure_setting(const ActionModel& model, const std::string& name,
+                       const RestState* given_rest) {
+  find_setting(model, name);
+  const RestState rest = given_rest ? *given_rest : find_rest_state(model);
+  const ActionLandmarks& marks = model.landmarks;
+  if (name == "key_dip")
+    return key_front_travel(model, rest, key_full_dip_angle(model, rest)) * 1e3;
+  if (name == "hammer_blow") return rest.hammer_string_gap * 1e3;
+  if (name == "lever_height" || name == "lost_motion")
+    return contact_gap(model, marks.escapement_contact, rest.q) * 1e3;
+  if (name == "jack_position") return jack_position_mm(model, rest);
+  if (name == "bridle") return bridle_slack_mm(model, rest);
+  if (name == "let_off" || name == "drop" || name == "damper_lift") {
+    const SlowPressReading press =
+        slow_press(model, rest, name == "damper_lift" ? adjusted_contact(model, name) : -1,
+                   name != "drop");
+    if (name == "let_off") return press.let_off_gap * 1e3;
+    if (name == "drop") return press.drop_gap * 1e3;
+    return press.damper_lift_fraction;
+  }
+  if (name == "checking") return forte_blow(model, rest).checked_gap * 1e3;
+  throw InputError("setting '" + name + "' has no measurement procedure");
+}
+
+std::vector<SettingReading> measure_settings(const ActionModel& model) {
+  const RestState rest = find_rest_state(model);
+  std::vector<SettingReading> readings;
+  for (const RegulationSetting& s : model.regulation) {
+    SettingReading r;
+    r.name = s.name;
+    r.unit = s.unit;
+    r.target = s.target;
+    r.tolerance = s.tolerance;
+    r.measured = measure_setting(model, s.name, &rest);
+    r.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
+    readings.push_back(r);
+  }
+  return readings;
+}
+
+}  // namespace pat

@@ -1,0 +1,52 @@
+// The technician's tests on the simulated action, as building blocks of the measurements:
+// contact gaps at rest, the slow key press (let-off, drop, damper lift) and the forte blow
+// (checking).
+#pragma once
+
+#include "model/action_model.h"
+#include "sim/simulation.h"
+
+namespace pat {
+
+/// Signed gap of contact `contact` at q (m): > 0 apart (the distance still to close), < 0 when
+/// the parts overlap (minus the penetration). Same geometry as the dynamics (contact_geometry.h).
+double contact_gap(const ActionModel& model, int contact, const DofVector& q);
+
+class ActionDynamics;
+/// The same, reusing a dynamics object of the model (no set-up cost: for loops over steps).
+double contact_gap(ActionDynamics& dynamics, int contact, const DofVector& q);
+
+struct SlowPressReading {
+  double let_off_gap = 0.0;           ///< m, hammer–string distance when the jack escapes
+  double drop_gap = 0.0;              ///< m, hammer–string distance at the end, key held down
+  double damper_lift_fraction = 0.0;  ///< hammer travel fraction when the damper contact starts
+  bool checked_at_end = false;        ///< the backcheck holds the hammer at the end
+};
+
+/// Duration of the slow press: the key goes from rest to full dip along a half cosine in
+/// this time, then is held while the hammer settles.
+inline constexpr double kSlowPressSeconds = 1.0;
+inline constexpr double kSlowPressHoldSeconds = 0.4;
+
+/// Presses the key slowly (quasi-static: the hammer's speed stays below ~0.05 m/s) to full dip
+/// and holds it. `damper_contact` (-1: none) is the contact whose first touch marks the damper
+/// lift. Throws std::runtime_error naming what did not happen (no escapement, a stopped run).
+/// With `until_escapement`, the press ends once the jack escapes (let-off only: drop_gap and
+/// checked_at_end are then not read).
+SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int damper_contact,
+                            bool until_escapement = false);
+
+struct ForteBlowReading {
+  double impact_velocity = 0.0;  ///< m/s
+  double checked_gap = 0.0;      ///< m, hammer–string distance when the backcheck catches it
+};
+
+/// Force of the forte blow (N at the key front, held so that the key stays down).
+inline constexpr double kForteBlowNewtons = 40.0;
+
+/// A forte blow with the key held down: the hammer strikes, falls back and is caught by the
+/// backcheck; the distance is read where the catcher first meets the backcheck. Throws std::runtime_error when the
+/// hammer does not strike or is not caught.
+ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest);
+
+}  // namespace pat
