@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
@@ -20,13 +21,16 @@
 #include "action_view.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
+#include "measurement_service.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
 #include "playback_controller.h"
 #include "plot_export.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "regulation/regulation.h"
 #include "regulation_panel.h"
+#include "regulation_runner.h"
 #include "run_controls.h"
 
 namespace pat::ui {
@@ -98,6 +102,40 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     change_model(regulated);
   });
 
+  // live measured values and automatic regulation, both off the window's thread
+  measurements_ = new MeasurementService(this);
+  connect(measurements_, &MeasurementService::measured, this,
+          [this](const QString& name, double value) {
+            if (RegulationRow* row = regulation_->row(name.toStdString())) row->set_measured(value);
+          });
+  connect(measurements_, &MeasurementService::failed, this,
+          [this](const QString& name, const QString& reason) {
+            if (RegulationRow* row = regulation_->row(name.toStdString()))
+              row->set_measurement_failed(reason);
+            else
+              regulation_->log(tr("Cannot measure: %1").arg(reason));
+          });
+  regulation_runner_ = new RegulationRunner(this);
+  regulate_button_ = regulation_->add_button(
+      tr("Regulate automatically"),
+      tr("Bisection on each adjuster in the technician's order, repeated until every "
+         "measurement is within tolerance; the steps are listed below"));
+  connect(regulate_button_, &QPushButton::clicked, this, [this] {
+    if (regulation_runner_->running())
+      regulation_runner_->cancel();
+    else
+      regulate_automatically();
+  });
+  connect(regulation_runner_, &RegulationRunner::stepDone, regulation_, &RegulationPanel::log);
+  connect(regulation_runner_, &RegulationRunner::finished, this,
+          [this](std::shared_ptr<const ActionModel> model, bool converged, const QString& msg) {
+            regulate_button_->setText(tr("Regulate automatically"));
+            regulation_->log(converged ? tr("Regulated: %1.").arg(msg)
+                                       : tr("Not regulated: %1.").arg(msg));
+            regulation_->show_adjusters(*model);
+            change_model(model);
+          });
+
   build_menus();
   build_shortcuts();
   statusBar()->showMessage(
@@ -112,6 +150,8 @@ void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
   file->addAction(tr("&Open preset…"), QKeySequence::Open, this,
                   &MainWindow::open_preset_from_menu);
+  file->addAction(tr("&Save current state as preset…"), QKeySequence::Save, this,
+                  &MainWindow::save_preset_from_menu);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -208,6 +248,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
   setWindowTitle(tr("Piano Action Trainer — %1").arg(QString::fromStdString(model->name)));
   QSettings().setValue("last_preset", QString::fromStdString(name_or_path));
   start(run_controls_->input_form()->spec());
+  measure_current_model();
 }
 
 void MainWindow::start(const std::string& spec) {
@@ -231,6 +272,37 @@ void MainWindow::set_adjuster(const std::string& name, double mm) {
 void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
   controller_->change_model(model_);
+  measure_current_model();
+}
+
+void MainWindow::measure_current_model() {
+  for (const auto& row : regulation_->rows()) row->set_measuring();
+  measurements_->request(model_);
+}
+
+void MainWindow::regulate_automatically() {
+  if (!model_ || regulation_runner_->running()) return;
+  regulation_->log(tr("Regulating %1 from the current adjuster positions…")
+                       .arg(QString::fromStdString(model_->name)));
+  regulate_button_->setText(tr("Cancel regulation"));
+  regulation_runner_->start(model_);
+}
+
+void MainWindow::save_preset(const std::string& path) {
+  write_preset(*model_, path);
+}
+
+void MainWindow::save_preset_from_menu() {
+  if (!model_) return;
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save current state as preset"), {},
+                                                    tr("Action presets (*.json)"));
+  if (path.isEmpty()) return;
+  try {
+    save_preset(path.toStdString());
+    statusBar()->showMessage(tr("Preset written to %1").arg(path));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Cannot save the preset"), QString::fromStdString(e.what()));
+  }
 }
 
 QString MainWindow::banner_text() const {

@@ -13,12 +13,15 @@
 
 class QAction;
 class QLabel;
+class QPushButton;
 class QScrollArea;
 
 namespace pat::ui {
 
 class ActionView;
+class MeasurementService;
 class PlaybackController;
+class RegulationRunner;
 class PlotStack;
 class RegulationPanel;
 class RunControls;
@@ -45,6 +48,12 @@ class MainWindow : public QMainWindow {
   PlotStack* plots() const { return plots_; }
   RegulationPanel* regulation() const { return regulation_; }
   RunControls* run_controls() const { return run_controls_; }
+  MeasurementService* measurements() const { return measurements_; }
+  RegulationRunner* regulation_runner() const { return regulation_runner_; }
+  /// Starts "Regulate automatically" (the button does the same).
+  void regulate_automatically();
+  /// Writes the current model (deregulated or not) as a preset. Throws InputError.
+  void save_preset(const std::string& path);
   /// The message shown over the action (empty when hidden).
   QString banner_text() const;
   QSize export_size() const { return export_size_; }
@@ -60,12 +69,17 @@ class MainWindow : public QMainWindow {
   void open_preset_from_menu();
   void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what);
   void restore_settings();
+  void measure_current_model();
+  void save_preset_from_menu();
 
   PlaybackController* controller_;
   ActionView* view_;
   PlotStack* plots_;
   RegulationPanel* regulation_;
   RunControls* run_controls_;
+  MeasurementService* measurements_;
+  RegulationRunner* regulation_runner_;
+  QPushButton* regulate_button_;
   QLabel* banner_;
   QScrollArea* regulation_scroll_;
   QAction* grand_action_;
