@@ -15,16 +15,16 @@ namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
 
-// text with a white halo, readable over any part
+// text on a translucent white box, readable over any part (cheaper than a stroked text path)
 void draw_label(QPainter& painter, const QPointF& at, const QString& text, const QColor& colour) {
-  QPainterPath path;
-  path.addText(at, painter.font(), text);
-  painter.setPen(QPen(QColor(255, 255, 255, 230), 4.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-  painter.setBrush(Qt::NoBrush);
-  painter.drawPath(path);
+  const QFontMetricsF metrics(painter.font());
+  const QRectF box(at.x() - 2, at.y() - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
+                   metrics.height() + 2);
   painter.setPen(Qt::NoPen);
-  painter.setBrush(colour);
-  painter.drawPath(path);
+  painter.setBrush(QColor(255, 255, 255, 190));
+  painter.drawRoundedRect(box, 3, 3);
+  painter.setPen(colour);
+  painter.drawText(at, text);
 }
 
 void draw_arrow(QPainter& painter, const QPointF& from, const QPointF& to, const QColor& colour) {

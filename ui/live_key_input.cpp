@@ -1,6 +1,7 @@
 #include "live_key_input.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pat::ui {
 
@@ -41,7 +42,9 @@ bool LiveKeyInput::update(double t, double transition_s) {
   angle0_ = now.angle;
   rate0_ = now.rate;
   angle1_ = goal;
-  duration_ = std::max(transition_s, 1e-4);
+  // no faster than a fortissimo finger: full dip in kFastestDipSeconds
+  const double slowest_allowed = std::abs(goal - now.angle) / max_angle_ * kFastestDipSeconds;
+  duration_ = std::max({transition_s, slowest_allowed, 1e-4});
   return true;
 }
 

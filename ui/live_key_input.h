@@ -1,7 +1,8 @@
 // The key played with the mouse: a prescribed key motion whose target angle the window sets
 // while the simulation runs. The worker moves toward each new target along a cubic that starts
 // from the current angle and rate and ends at rest on the target after `transition_s`, so the
-// key rate and acceleration stay finite however the mouse jumps.
+// key rate and acceleration stay finite however the mouse jumps, and the key never moves
+// faster than a fortissimo finger.
 #pragma once
 
 #include <atomic>
@@ -13,6 +14,10 @@ namespace pat::ui {
 
 class LiveKeyInput : public KeyInput {
  public:
+  /// The fastest key descent from rest to full dip (s), about a fortissimo blow: a jump of the
+  /// mouse never moves the key faster.
+  static constexpr double kFastestDipSeconds = 0.02;
+
   /// Starts at `angle_rad` (from rest, positive down) moving at `rate_rad_s` at time `t0`;
   /// targets are kept within [0, max_angle_rad].
   LiveKeyInput(double t0, double angle_rad, double rate_rad_s, double max_angle_rad);

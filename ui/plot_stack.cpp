@@ -11,6 +11,7 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeptSeconds = 60.0;  // plot memory bound in long runs
+constexpr int kReplotIntervalMs = 33;
 
 // a legend label short enough for six series on one line
 QString short_contact_label(const ActionModel& model, int c) {
@@ -46,6 +47,9 @@ PlotStack::PlotStack(QWidget* parent) : QWidget(parent) {
   grid->addWidget(contacts_, 1, 1);
   grid->setColumnStretch(0, 1);
   grid->setColumnStretch(1, 1);
+  since_replot_.start();
+  deferred_replot_.setSingleShot(true);
+  connect(&deferred_replot_, &QTimer::timeout, this, &PlotStack::replot);
   for (PlotPanel* panel : panels()) {
     connect(panel, &PlotPanel::userChangedTimeRange, this,
             [this, panel](double lo, double hi) { sync_time_range(panel, lo, hi); });
@@ -140,6 +144,12 @@ void PlotStack::sync_time_range(PlotPanel* source, double lo, double hi) {
 }
 
 void PlotStack::replot() {
+  const qint64 elapsed = since_replot_.elapsed();
+  if (elapsed < kReplotIntervalMs) {
+    if (!deferred_replot_.isActive()) deferred_replot_.start(int(kReplotIntervalMs - elapsed));
+    return;
+  }
+  since_replot_.restart();
   for (PlotPanel* panel : panels()) panel->request_replot();
 }
 

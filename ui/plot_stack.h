@@ -3,6 +3,8 @@
 // follow the displayed time until the user zooms or pans one (Follow brings it back).
 #pragma once
 
+#include <QElapsedTimer>
+#include <QTimer>
 #include <QWidget>
 #include <memory>
 #include <vector>
@@ -54,6 +56,9 @@ class PlotStack : public QWidget {
   bool following_ = true;
   double window_s_ = 0.25;
   double latest_t_ = 0.0;
+  // replots at most about 30 times a second (the action view takes the full 60)
+  QElapsedTimer since_replot_;
+  QTimer deferred_replot_;
 };
 
 }  // namespace pat::ui
