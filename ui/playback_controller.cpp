@@ -7,7 +7,7 @@ namespace pat::ui {
 namespace {
 
 constexpr int kRedrawIntervalMs = 16;  // at most about 60 redraws a second
-constexpr double kLeadWallS = 0.1;     // the worker computes this far ahead (wall seconds)
+constexpr double kLeadWallS = 0.04;    // the worker computes this far ahead (wall seconds)
 
 }  // namespace
 

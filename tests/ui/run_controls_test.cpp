@@ -99,6 +99,8 @@ void RunControlsTest::moving_a_slider_changes_the_running_model() {
   QVERIFY(wait_until([&] { return c->display_time() > 0.01; }));
   pat::ui::RegulationRow* row = window.regulation()->row("hammer_blow");
   QVERIFY(row);
+  QElapsedTimer since_move;
+  since_move.start();
   row->slider()->setValue(80);  // 0.01 mm per slider step
   const int a = window.model()->adjuster_index("hammer_blow");
   QCOMPARE(window.model()->adjusters[a].value, 0.8e-3);
@@ -107,6 +109,9 @@ void RunControlsTest::moving_a_slider_changes_the_running_model() {
     const auto& f = c->current_frame();
     return f.model && std::abs(f.model->adjusters[a].value - 0.8e-3) < 1e-12;
   }));
+  // reported, not asserted (timing depends on the machine)
+  qInfo("slider to the first frame shown with the new model: %.1f ms",
+        since_move.nsecsElapsed() * 1e-6);
   QVERIFY(c->playing());
   QVERIFY(!c->run_stopped());
 }
