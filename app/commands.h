@@ -9,5 +9,7 @@ namespace pat::app {
 
 int run_simulate(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
+int run_regulate(const std::vector<std::string>& args);
+int run_deregulate(const std::vector<std::string>& args);
 
 }  // namespace pat::app

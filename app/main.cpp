@@ -21,6 +21,10 @@ usage:
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
                         [--without PART]... [--out CSV] [--plot FILE] [--sample-interval S]
                         [--json]
+  pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--json]
+  pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
+                        [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
+                        [--json]
   pianoaction bench     [--json] [--duration S]
 
 input SPEC:
@@ -75,6 +79,8 @@ int main(int argc, char** argv) {
   try {
     if (command == "simulate") return pat::app::run_simulate(args);
     if (command == "bench") return pat::app::run_bench(args);
+    if (command == "regulate") return pat::app::run_regulate(args);
+    if (command == "deregulate") return pat::app::run_deregulate(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

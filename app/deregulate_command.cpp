@@ -1,0 +1,63 @@
+// pianoaction deregulate: an adjuster moves while the key plays a sine (DESIGN.md section 5;
+// the paper's section 7.2).
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "action_setup.h"
+#include "core/error.h"
+#include "commands.h"
+#include "io/csv.h"
+#include "regulation/deregulation.h"
+
+namespace pat::app {
+
+int run_deregulate(const std::vector<std::string>& args) {
+  const CommandLine cl(args,
+                       {"--action", "--set", "--without", "--setting", "--rate", "--frequency",
+                        "--duration", "--step-interval", "--out"},
+                       {"--json"});
+  const ActionModel model = load_configured_action(cl);
+  DeregulationOptions options;
+  options.setting = cl.value("--setting");
+  options.rate_mm_per_s = parse_number(cl.value("--rate"), "--rate");
+  options.frequency_hz = cl.positive_number_or("--frequency", 3.0);
+  options.duration_s = cl.positive_number_or("--duration", 10.0);
+  options.step_interval_s = cl.has("--step-interval")
+                                ? parse_number(cl.value("--step-interval"), "--step-interval")
+                                : 0.5;
+  if (options.step_interval_s < 0.0)
+    throw InputError("--step-interval: must not be negative (0 moves the adjuster continuously)");
+  const DeregulationResult result = deregulate(model, options);
+  const std::string out_path = cl.value_or("--out", "");
+  if (!out_path.empty()) write_csv(out_path, result.trace);
+
+  if (cl.has("--json")) {
+    nlohmann::json samples = nlohmann::json::array();
+    for (const DeregulationSample& s : result.samples)
+      samples.push_back(
+          {{"t_s", s.t},
+           {"adjuster_mm", s.adjuster_mm},
+           {"measured", std::isfinite(s.measured) ? nlohmann::json(s.measured) : nullptr},
+           {"hammer_string_gap_mm", s.hammer_string_gap_mm},
+           {"whippen_angle_deg", s.whippen_angle_deg}});
+    nlohmann::json out{{"status", result.status},
+                       {"setting", options.setting},
+                       {"stop_t_s", result.stop_t},
+                       {"stop_cause", result.status == "ok" ? nlohmann::json(nullptr)
+                                                            : nlohmann::json(result.stop_cause)},
+                       {"samples", samples}};
+    std::cout << out.dump(1) << "\n";
+  } else {
+    std::cout << "deregulating " << options.setting << " at " << options.rate_mm_per_s
+              << " mm/s, key at " << options.frequency_hz << " Hz\n";
+    for (const DeregulationSample& s : result.samples)
+      std::cout << "  t " << s.t << " s  adjuster " << s.adjuster_mm << " mm  measured "
+                << s.measured << "  whippen " << s.whippen_angle_deg << " deg\n";
+    std::cout << result.status << " at t = " << result.stop_t << " s"
+              << (result.stop_cause.empty() ? "" : ": " + result.stop_cause) << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

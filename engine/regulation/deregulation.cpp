@@ -1,0 +1,115 @@
+#include "regulation/deregulation.h"
+
+#include <cmath>
+#include <memory>
+
+#include "core/error.h"
+#include "model/model_edits.h"
+#include "regulation/measurements.h"
+#include "sim/key_travel.h"
+#include "sim/simulator.h"
+#include "sim/static_equilibrium.h"
+
+namespace pat {
+
+DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options) {
+  const int setting_index = model.setting_index(options.setting);
+  if (setting_index < 0) measure_setting(model, options.setting);  // throws, naming the settings
+  if (!(options.frequency_hz > 0.0) || !(options.duration_s > 0.0) ||
+      !std::isfinite(options.rate_mm_per_s))
+    throw InputError("deregulate: frequency, duration and rate must be finite, positive numbers");
+  const Adjuster& adjuster = model.adjusters[model.adjuster_index(options.setting)];
+  const double start_value = adjuster.value;
+  const double rate = options.rate_mm_per_s * 1e-3;  // m/s
+
+  RestState rest = find_rest_state(model);
+  const RestState initial_rest = rest;  // angles are reported from the starting rest position
+  std::shared_ptr<const KeyInput> input = parse_input_spec(
+      "motion:sine:" + std::to_string(options.frequency_hz) + ":full", input_context(model, rest));
+  SimulationOptions sim_options;
+  sim_options.sample_interval_s = 0.0;
+  Simulator sim(std::make_shared<const ActionModel>(model), input, sim_options, &rest);
+
+  DeregulationResult result;
+  result.trace.columns = trace_columns(model);
+  result.trace.columns.push_back("adjuster_mm");
+  result.trace.metadata["action"] = model.kind;
+  result.trace.metadata["input"] = input->spec();
+  result.trace.metadata["deregulation"] = options.setting + " at " +
+                                          std::to_string(options.rate_mm_per_s) + " mm/s";
+  const int whippen = model.body_index("whippen");
+  // the adjuster moves in steps (the paper's screw turns) or, continuously, every 10 ms
+  const double interval = options.step_interval_s > 0.0 ? options.step_interval_s : 0.01;
+  double value = start_value;
+  double measured = measure_setting(model, options.setting, &rest);
+  DynamicsReading reading;
+  const double period = 1.0 / options.frequency_hz;
+  int next_cycle = 1;
+  double next_row = 0.0;
+  const double row_interval = 1e-3;
+  auto record_row = [&]() {
+    sim.evaluate(sim.time(), sim.q(), sim.v(), reading);
+    std::vector<double> row{sim.time()};
+    for (int k = 0; k < model.dofs(); ++k)
+      row.push_back(model.bodies[k].trace_sign * deg(sim.q()[k] - initial_rest.q[k]));
+    row.push_back(sim.hammer_string_gap(sim.q()) * 1e3);
+    row.push_back(reading.finger_force);
+    for (const ContactReading& c : reading.contacts) row.push_back(c.normal_force);
+    for (double tension : reading.strap_tension) row.push_back(tension);
+    row.push_back(value * 1e3);
+    result.trace.rows.push_back(std::move(row));
+  };
+  record_row();
+  next_row = row_interval;
+  while (sim.time() < options.duration_s - 1e-12) {
+    const double t_stop = std::min({options.duration_s, next_cycle * period, next_row});
+    if (!sim.advance_to(t_stop)) break;
+    const double t = sim.time();
+    if (t >= next_row - 1e-12) {
+      record_row();
+      next_row += row_interval;
+    }
+    // the screw turns at every interval boundary
+    const double wanted =
+        start_value + rate * interval * std::floor((t + 1e-9) / interval);
+    if (std::abs(wanted - value) > 1e-12) {
+      if (wanted < adjuster.min || wanted > adjuster.max) {
+        sim.stop("the adjuster '" + options.setting + "' reached the end of its range (" +
+                 std::to_string(wanted * 1e3) + " mm)");
+        break;
+      }
+      value = wanted;
+      auto moved = std::make_shared<const ActionModel>(with_adjuster(model, options.setting, value));
+      sim.set_model(moved);
+      try {
+        rest = rest_state_near(*moved, rest);
+        measured = measure_setting(*moved, options.setting, &rest);
+      } catch (const std::exception&) {
+        measured = std::nan("");  // cannot be measured there (e.g. the jack never escapes)
+      }
+    }
+    // one sample per key cycle, at its top (key back at rest)
+    if (t >= next_cycle * period - 1e-12) {
+      DeregulationSample sample;
+      sample.t = t;
+      sample.adjuster_mm = value * 1e3;
+      sample.measured = measured;
+      sample.hammer_string_gap_mm = sim.hammer_string_gap(sim.q()) * 1e3;
+      sample.whippen_angle_deg =
+          whippen >= 0 ? model.bodies[whippen].trace_sign * deg(sim.q()[whippen] - initial_rest.q[whippen])
+                       : 0.0;
+      result.samples.push_back(sample);
+      ++next_cycle;
+    }
+    if (options.on_progress && !options.on_progress(t)) {
+      sim.stop("cancelled");
+      break;
+    }
+  }
+  result.status = sim.stopped() ? "stopped" : "ok";
+  result.stop_cause = sim.stop_cause();
+  result.stop_t = sim.time();
+  return result;
+}
+
+}  // namespace pat

@@ -1,0 +1,216 @@
+// Regulation: the technician's measurements, the static equilibrium they stand on, automatic
+// regulation, writing a regulated preset, live deregulation, and their bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <random>
+
+#include "core/error.h"
+#include "dynamics/action_dynamics.h"
+#include "model/model_edits.h"
+#include "regulation/deregulation.h"
+#include "regulation/measurements.h"
+#include "regulation/regulation.h"
+#include "sim/static_equilibrium.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+using test::shipped;
+
+double measure_at(const ActionModel& model, const std::string& setting, double mm) {
+  const ActionModel moved = with_adjuster(model, setting, mm * 1e-3);
+  const RestState rest = find_rest_state(moved);
+  return measure_setting(moved, setting, &rest);
+}
+
+// Newton's static equilibrium agrees with the damped dynamic settle. Tolerance 1e-4 rad
+// (0.014 mm at the strike point): the settle ends with joint speeds below 1e-2 rad/s and the
+// felts still creeping.
+TEST(Regulation, NewtonRestStateMatchesTheDynamicSettle) {
+  for (const char* name : {"grand", "upright"}) {
+    const ActionModel model = shipped(name);
+    const RestState settled = find_rest_state(model);
+    DofVector q;
+    ASSERT_TRUE(solve_static_equilibrium(model, settled.q, q)) << name;
+    EXPECT_LT((q - settled.q).cwiseAbs().maxCoeff(), 1e-4) << name;
+    // from a neighbouring model (an adjuster moved by 0.3 mm) continuation finds that
+    // model's own settled rest
+    const ActionModel moved = with_adjuster(model, "hammer_blow", 0.3e-3);
+    const RestState near = rest_state_near(moved, settled);
+    EXPECT_LT((near.q - find_rest_state(moved).q).cwiseAbs().maxCoeff(), 1e-4) << name;
+  }
+}
+
+// Closed forms: the blow is the strike point's distance to the string plane at rest, and the
+// key dip is the key front's drop when the key turns to the punching (geometry).
+TEST(Regulation, RestMeasurementsAgreeWithDirectGeometry) {
+  for (const char* name : {"grand", "upright"}) {
+    const ActionModel model = shipped(name);
+    const RestState rest = find_rest_state(model);
+    ActionDynamics dynamics(model, nullptr);
+    const ActionLandmarks& m = model.landmarks;
+    const Vec2 strike = dynamics.point_position(m.hammer, m.strike_point, rest.q);
+    const double blow_mm = -m.string_normal.dot(m.string_point - strike) * -1e3;
+    EXPECT_NEAR(measure_setting(model, "hammer_blow", &rest), std::abs(blow_mm), 1e-9) << name;
+    // key dip: turn the key until the punching contact closes; the key front's drop
+    const Contact& bottom = model.contacts[m.key_bottom_contact];
+    const Vec2 key_point = bottom.center_a;  // the key's side of the punching contact
+    // the contact point closes its gap d over an arc of radius |p|; the key front drops by the
+    // same angle times its own arm: dip = d / |p_x| * |front_x| (small angle, to 1 %)
+    const double gap = bottom.segment_normal.dot(
+                           dynamics.point_position(m.key, key_point, rest.q) - bottom.segment_start) -
+                       bottom.radius_a;
+    const double small_angle_dip = gap / std::abs(key_point.x()) * std::abs(m.key_front.x());
+    EXPECT_NEAR(measure_setting(model, "key_dip", &rest), small_angle_dip * 1e3,
+                0.01 * small_angle_dip * 1e3)
+        << name;
+  }
+}
+
+struct MonotoneCase {
+  const char* action;
+  const char* setting;
+  double from_mm, to_mm;
+};
+
+class MeasurementResponse : public ::testing::TestWithParam<MonotoneCase> {};
+
+// Each measurement responds monotonically to its own adjuster over the range tested (strictly:
+// every 0.5 mm step changes it by more than 1 µm, always in the same direction).
+TEST_P(MeasurementResponse, IsMonotoneInItsAdjuster) {
+  const MonotoneCase c = GetParam();
+  const ActionModel model = shipped(c.action);
+  std::vector<double> values;
+  for (double x = c.from_mm; x <= c.to_mm + 1e-9; x += 0.5) values.push_back(measure_at(model, c.setting, x));
+  const double direction = values.back() > values.front() ? 1.0 : -1.0;
+  for (std::size_t i = 1; i < values.size(); ++i)
+    EXPECT_GT(direction * (values[i] - values[i - 1]), 1e-3)
+        << c.action << " " << c.setting << " at step " << i;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Settings, MeasurementResponse,
+    // not yet here (known limits, see README): grand jack_position, lever_height, let_off,
+    // drop, checking and upright lost_motion, let_off, checking, damper_lift
+    ::testing::Values(MonotoneCase{"grand", "key_dip", -2, 2},
+                      MonotoneCase{"grand", "hammer_blow", -1, 1},
+                      MonotoneCase{"upright", "key_dip", -2, 2},
+                      MonotoneCase{"upright", "hammer_blow", -2, 2},
+                      MonotoneCase{"upright", "bridle", -2, 2}),
+    [](const auto& info) {
+      return std::string(info.param.action) + "_" + info.param.setting;
+    });
+
+// A regulated (here: deliberately offset) preset written and read back measures the same, and
+// its adjusters read 0 again. Tolerance 1e-3 mm: offsets are written to 0.1 µm.
+TEST(Regulation, WrittenPresetReadsBackWithTheSameMeasurements) {
+  ActionModel model = shipped("grand");
+  model = with_adjuster(model, "hammer_blow", 0.4e-3);
+  model = with_adjuster(model, "checking", -0.7e-3);
+  model = with_adjuster(model, "key_dip", 0.25e-3);
+  const std::string path = ::testing::TempDir() + "/regulated-grand.json";
+  write_preset(model, path);
+  const ActionModel back = load_action(path);
+  for (const Adjuster& a : back.adjusters) EXPECT_EQ(a.value, 0.0) << a.name;
+  const RestState rest_a = find_rest_state(model), rest_b = find_rest_state(back);
+  for (const char* s : {"key_dip", "jack_position", "lever_height", "hammer_blow", "checking"})
+    EXPECT_NEAR(measure_setting(model, s, &rest_a), measure_setting(back, s, &rest_b), 1e-3) << s;
+  // every contact's geometry and every fixture came through
+  ASSERT_EQ(back.contacts.size(), model.contacts.size());
+  for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+    EXPECT_LT((back.contacts[i].center_a - model.contacts[i].center_a).norm(), 1e-9);
+    EXPECT_LT((back.contacts[i].segment_start - model.contacts[i].segment_start).norm(), 1e-9);
+  }
+  ASSERT_EQ(back.fixtures.size(), model.fixtures.size());
+  for (std::size_t i = 0; i < model.fixtures.size(); ++i)
+    for (std::size_t k = 0; k < model.fixtures[i].outline.size(); ++k)
+      EXPECT_LT((back.fixtures[i].outline[k] - model.fixtures[i].outline[k]).norm(), 1e-9);
+  EXPECT_EQ(back.regulation.size(), model.regulation.size());
+  // written twice, the offsets accumulate on the preset's own (not reset)
+  const std::string again = ::testing::TempDir() + "/regulated-grand-2.json";
+  write_preset(with_adjuster(back, "hammer_blow", 0.1e-3), again);
+  EXPECT_NEAR(measure_setting(load_action(again), "hammer_blow"),
+              measure_setting(with_adjuster(model, "hammer_blow", 0.5e-3), "hammer_blow"), 1e-3);
+  std::remove(path.c_str());
+  std::remove(again.c_str());
+}
+
+// The bracketing search on settings measured at rest: from seeded random deregulated starts
+// (each adjuster off by up to ±2 mm) the grand's key dip and hammer blow converge to their
+// targets within tolerance.
+TEST(Regulation, RestSettingsConvergeFromRandomDeregulatedStarts) {
+  ActionModel base = shipped("grand");
+  std::vector<RegulationSetting> rest_settings;
+  for (const RegulationSetting& s : base.regulation)
+    if (s.name == "key_dip" || s.name == "hammer_blow")
+      rest_settings.push_back(s);
+  base.regulation = rest_settings;
+  std::mt19937 random(20261121);
+  std::uniform_real_distribution<double> offset(-2e-3, 2e-3);
+  for (int start = 0; start < 5; ++start) {
+    ActionModel model = base;
+    for (const RegulationSetting& s : rest_settings)
+      model = with_adjuster(model, s.name, offset(random));
+    const RegulationResult result = regulate(model);
+    EXPECT_TRUE(result.converged) << "start " << start << ": " << result.message;
+    for (const SettingReading& r : result.settings)
+      EXPECT_LE(std::abs(r.measured - r.target), r.tolerance) << "start " << start << " " << r.name;
+  }
+}
+
+// A target out of reach gives converged = false and a message naming the setting; nothing
+// throws. Unknown settings and out-of-range adjusters are InputErrors naming them.
+TEST(Regulation, ImpossibleAndUnknownSettingsAreReported) {
+  ActionModel model = shipped("grand");
+  for (RegulationSetting& s : model.regulation)
+    if (s.name == "hammer_blow") s.target = 80.0;  // the hammer cannot rest 80 mm away
+  std::vector<RegulationSetting> only;
+  for (const RegulationSetting& s : model.regulation)
+    if (s.name == "hammer_blow") only.push_back(s);
+  model.regulation = only;
+  RegulationOptions options;
+  options.max_passes = 2;
+  const RegulationResult result = regulate(model, options);
+  EXPECT_FALSE(result.converged);
+  EXPECT_NE(result.message.find("hammer_blow"), std::string::npos) << result.message;
+  EXPECT_NE(result.message.find("out of reach"), std::string::npos) << result.message;
+
+  try {
+    measure_setting(shipped("grand"), "bridle");
+    FAIL() << "the grand has no bridle setting";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bridle"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("let_off"), std::string::npos);  // lists the valid ones
+  }
+  EXPECT_THROW(with_adjuster(shipped("grand"), "let_off", 9e-3), InputError);
+}
+
+// Live deregulation (paper 7.2): screwing the capstan (key pilot) up at 1 mm/s while the key
+// plays at 3 Hz shrinks the grand's blow and raises its whippen, until a contact becomes
+// unphysical; moving the upright's blow adjuster shrinks its blow.
+TEST(Regulation, DeregulatingTheHammerBlowShrinksItAndRaisesTheWhippen) {
+  DeregulationOptions options;
+  options.setting = "hammer_blow";
+  options.rate_mm_per_s = 1.0;
+  options.duration_s = 3.0;
+  const DeregulationResult grand = deregulate(shipped("grand"), options);
+  ASSERT_GE(grand.samples.size(), 3u);
+  EXPECT_LT(grand.samples.back().measured, grand.samples.front().measured - 5.0);
+  EXPECT_GT(grand.samples.back().whippen_angle_deg, grand.samples.front().whippen_angle_deg + 0.5);
+  EXPECT_EQ(grand.status, "stopped");
+  // the cause names the contact and both parts
+  EXPECT_NE(grand.stop_cause.find("unphysical penetration"), std::string::npos) << grand.stop_cause;
+  EXPECT_NE(grand.stop_cause.find("jack"), std::string::npos) << grand.stop_cause;
+
+  options.duration_s = 2.5;
+  const DeregulationResult upright = deregulate(shipped("upright"), options);
+  ASSERT_GE(upright.samples.size(), 3u);
+  EXPECT_LT(upright.samples.back().measured, upright.samples.front().measured - 3.0);
+}
+
+}  // namespace
+}  // namespace pat
