@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSettings>
@@ -19,6 +20,7 @@
 #include <exception>
 
 #include "action_view.h"
+#include "deregulation_runner.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
 #include "measurement_service.h"
@@ -134,6 +136,45 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                        : tr("Not regulated: %1.").arg(msg));
             regulation_->show_adjusters(*model);
             change_model(model);
+          });
+
+  deregulation_runner_ = new DeregulationRunner(this);
+  deregulate_button_ = regulation_->add_button(
+      tr("Deregulation demo"),
+      tr("The capstan (hammer blow) screwed up 0.5 mm every 0.5 s while the key plays a 3 Hz "
+         "sine, until the action fails (paper section 7.2); then replayed"));
+  progress_ = new QProgressBar(regulation_);
+  progress_->setRange(0, 100);
+  progress_->hide();
+  regulation_->layout()->addWidget(progress_);
+  connect(deregulate_button_, &QPushButton::clicked, this, [this] {
+    if (deregulation_runner_->running())
+      deregulation_runner_->cancel();
+    else
+      run_deregulation_demo();
+  });
+  connect(deregulation_runner_, &DeregulationRunner::progress, this,
+          [this](double f) { progress_->setValue(int(100 * f)); });
+  connect(deregulation_runner_, &DeregulationRunner::finished, this,
+          [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
+            progress_->hide();
+            deregulate_button_->setText(tr("Deregulation demo"));
+            for (const DeregulationSample& s : result.samples)
+              regulation_->log(tr("t = %1 s  adjuster %2 mm  measured %3")
+                                   .arg(s.t, 0, 'f', 2)
+                                   .arg(s.adjuster_mm, 0, 'f', 2)
+                                   .arg(s.measured, 0, 'f', 2));
+            regulation_->log(result.stop_cause.empty()
+                                 ? tr("Deregulation: the action held to the end.")
+                                 : tr("Deregulation stopped at t = %1 s: %2")
+                                       .arg(result.stop_t, 0, 'f', 2)
+                                       .arg(QString::fromStdString(result.stop_cause)));
+            if (!frames.empty()) {
+              controller_->replay(frames);
+              statusBar()->showMessage(
+                  tr("Replaying the deregulation demo; Start from rest "
+                     "returns to the live action."));
+            }
           });
 
   build_menus();
@@ -286,6 +327,23 @@ void MainWindow::regulate_automatically() {
                        .arg(QString::fromStdString(model_->name)));
   regulate_button_->setText(tr("Cancel regulation"));
   regulation_runner_->start(model_);
+}
+
+void MainWindow::run_deregulation_demo() {
+  if (!model_ || deregulation_runner_->running()) return;
+  DeregulationOptions options;
+  options.setting = "hammer_blow";
+  options.rate_mm_per_s = 1.0;
+  options.frequency_hz = 3.0;
+  options.duration_s = 10.0;
+  options.step_interval_s = 0.5;
+  regulation_->log(tr("Deregulation demo: hammer_blow +%1 mm/s, key at %2 Hz…")
+                       .arg(options.rate_mm_per_s)
+                       .arg(options.frequency_hz));
+  progress_->setValue(0);
+  progress_->show();
+  deregulate_button_->setText(tr("Cancel the deregulation demo"));
+  deregulation_runner_->start(model_, options);
 }
 
 void MainWindow::save_preset(const std::string& path) {

@@ -13,6 +13,7 @@
 
 class QAction;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 class QScrollArea;
 
@@ -21,6 +22,7 @@ namespace pat::ui {
 class ActionView;
 class MeasurementService;
 class PlaybackController;
+class DeregulationRunner;
 class RegulationRunner;
 class PlotStack;
 class RegulationPanel;
@@ -52,6 +54,10 @@ class MainWindow : public QMainWindow {
   RegulationRunner* regulation_runner() const { return regulation_runner_; }
   /// Starts "Regulate automatically" (the button does the same).
   void regulate_automatically();
+  /// The deregulation demo (paper section 7.2): the hammer-blow adjuster moved while the key
+  /// plays a 3 Hz sine, then replayed with the measured value over time in the log.
+  void run_deregulation_demo();
+  DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
   /// The message shown over the action (empty when hidden).
@@ -79,6 +85,9 @@ class MainWindow : public QMainWindow {
   RunControls* run_controls_;
   MeasurementService* measurements_;
   RegulationRunner* regulation_runner_;
+  DeregulationRunner* deregulation_runner_;
+  QPushButton* deregulate_button_;
+  QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;
   QScrollArea* regulation_scroll_;

@@ -44,6 +44,7 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   ++run_id_;
   history_.clear();
   stopped_ = false;
+  replay_ = false;
   has_frame_ = false;
   display_time_ = 0.0;
   passed_time_ = -1.0;
@@ -55,7 +56,27 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   emit runRestarted();
 }
 
+void PlaybackController::replay(std::vector<Frame> frames) {
+  pause();
+  ++run_id_;  // frames still coming from the worker's run are dropped
+  history_.clear();
+  for (Frame& f : frames) {
+    f.run = run_id_;
+    history_.append(std::move(f));
+  }
+  stopped_ = false;
+  replay_ = true;
+  passed_time_ = -1.0;
+  has_frame_ = false;
+  emit runRestarted();
+  if (history_.empty()) return;
+  model_ = history_.at(0).model;
+  show_time(history_.first_time());
+  play();
+}
+
 void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) {
+  if (replay_) return;  // a recorded analysis cannot change
   model_ = model;
   worker_->request_model(std::move(model));
   // a paused run still shows the change: compute one frame further
@@ -63,14 +84,14 @@ void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) 
 }
 
 void PlaybackController::strike(const std::string& force_spec) {
-  if (stopped_) return;
+  if (stopped_ || replay_) return;
   seek(history_.last_time());
   worker_->request_blow(force_spec);
   play();
 }
 
 void PlaybackController::play_key(double angle_rad) {
-  if (stopped_) return;
+  if (stopped_ || replay_) return;
   if (!playing_) {
     seek(history_.last_time());
     play();
@@ -90,7 +111,7 @@ void PlaybackController::play() {
 void PlaybackController::pause() {
   if (!playing_) return;
   playing_ = false;
-  worker_->set_target_time(display_time_);
+  if (!replay_) worker_->set_target_time(display_time_);
   emit playingChanged(false);
 }
 
@@ -100,7 +121,7 @@ void PlaybackController::step_forward() {
   const std::size_t i = history_.index_at(display_time_);
   if (i + 1 < history_.size()) {
     show_time(history_.at(i + 1).t);
-  } else if (!stopped_) {
+  } else if (!stopped_ && !replay_) {
     // the next frame is computed; drain() shows it when it arrives
     display_time_ = history_.last_time() + sample_interval();
     worker_->set_target_time(display_time_);
@@ -153,8 +174,9 @@ void PlaybackController::tick() {
 
   const double before = display_time_;
   const double wanted = display_time_ + wall_dt * speed_;
-  worker_->set_target_time(wanted + kLeadWallS * speed_);
+  if (!replay_) worker_->set_target_time(wanted + kLeadWallS * speed_);
   show_time(std::min(wanted, history_.last_time()));
+  if (replay_ && display_time_ >= history_.last_time()) pause();
 
   factor_window_sim_ += display_time_ - before;
   factor_window_wall_ += wall_dt;

@@ -24,6 +24,10 @@ class PlaybackController : public QObject {
 
   /// Starts a new run of `model` under `input_spec` ("" = no finger) from rest at t = 0.
   void restart(std::shared_ptr<const ActionModel> model, const std::string& input_spec);
+  /// Plays recorded frames (an analysis result such as the deregulation demo) instead of a
+  /// live run; playback stops at the last frame.
+  void replay(std::vector<Frame> frames);
+  bool replaying() const { return replay_; }
   /// Replaces the running model at the next step boundary (a slider moved).
   void change_model(std::shared_ptr<const ActionModel> model);
   /// A blow (force SPEC) struck now; starts playing.
@@ -93,6 +97,7 @@ class PlaybackController : public QObject {
   double full_dip_rad_ = 0.0;
   bool playing_ = false;
   bool stopped_ = false;
+  bool replay_ = false;  // frames from an analysis: no worker behind them
   double speed_ = 0.1;
   double display_time_ = 0.0;
   double passed_time_ = -1.0;  // frames up to here went to framesPassed

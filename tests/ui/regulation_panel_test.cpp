@@ -15,9 +15,11 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "deregulation_runner.h"
 #include "main_window.h"
 #include "measurement_service.h"
 #include "model/preset_loader.h"
+#include "playback_controller.h"
 #include "regulation_runner.h"
 #include "ui_test_support.h"
 
@@ -32,6 +34,7 @@ class RegulationPanelTest : public QObject {
   void slider_moves_the_adjuster_and_the_measured_value();
   void reset_to_regulated();
   void regulate_automatically_shows_steps_and_can_be_cancelled();
+  void deregulation_demo_can_be_cancelled_and_replays();
   void saved_state_loads_back();
   void broken_preset_names_the_field();
 };
@@ -116,6 +119,34 @@ void RegulationPanelTest::regulate_automatically_shows_steps_and_can_be_cancelle
   QVERIFY2(log.contains("pass 1"), qPrintable(log));
   const auto model = finished.first().first().value<std::shared_ptr<const pat::ActionModel>>();
   QCOMPARE(window.model().get(), model.get());
+}
+
+void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  pat::ui::DeregulationRunner* runner = window.deregulation_runner();
+  QSignalSpy progress(runner, &pat::ui::DeregulationRunner::progress);
+  bool done = false;
+  std::size_t frame_count = 0;
+  connect(runner, &pat::ui::DeregulationRunner::finished, this,
+          [&](const std::vector<pat::ui::Frame>& frames, const pat::DeregulationResult& result) {
+            done = true;
+            frame_count = frames.size();
+            QCOMPARE(result.stop_cause, std::string("cancelled"));
+          });
+  window.run_deregulation_demo();
+  QVERIFY(runner->running());
+  QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
+  runner->cancel();
+  QVERIFY(wait_until([&] { return done; }, 60000));
+  QVERIFY(!runner->running());
+  // what was simulated before the cancel is replayed in the window
+  QVERIFY(frame_count > 0);
+  QVERIFY(window.controller()->replaying());
+  QCOMPARE(window.controller()->history().size(), frame_count);
+  window.start("");  // back to a live run
+  QVERIFY(!window.controller()->replaying());
 }
 
 void RegulationPanelTest::saved_state_loads_back() {
