@@ -294,6 +294,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
 
 void MainWindow::start(const std::string& spec) {
   if (!model_) return;
+  run_controls_->input_form()->set_spec(spec);  // the form shows what runs
   controller_->restart(model_, spec);
   controller_->play();
   statusBar()->showMessage(tr("Running %1 with %2")
