@@ -4,17 +4,23 @@
 #include <string>
 #include <vector>
 
+#include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
+#ifdef PAT_HAVE_UI
+#include "trainer_app.h"
+#endif
 
 namespace {
 
 const char* kUsage = R"(Piano Action Trainer: grand and upright piano actions as multibody models.
 
 usage:
+  pianoaction [--action grand|upright|FILE] [--screenshot PNG]     the trainer window
   pianoaction simulate  --action grand|upright|FILE --input SPEC --duration S
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
-                        [--without PART]... [--out CSV] [--sample-interval S] [--json]
+                        [--without PART]... [--out CSV] [--plot FILE] [--sample-interval S]
+                        [--json]
   pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--json]
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
@@ -25,16 +31,48 @@ input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
   motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  csv:PATH
 
-The trainer window is not part of this build yet; the subcommands above are.
+--plot FILE writes the plots (key and hammer angles, hammer-string gap, finger force); the
+format comes from the extension: .png .pdf .svg, or .csv for the plotted columns.
+--screenshot PNG opens the window, plays a blow until just after escapement, saves a
+screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";
+
+// The window: no subcommand, or only --action / --screenshot.
+int run_window(int argc, char** argv, const std::vector<std::string>& args) {
+#ifdef PAT_HAVE_UI
+  const pat::app::CommandLine cl(args, {"--action", "--screenshot"}, {});
+  pat::ui::TrainerOptions options;
+  options.action_given = cl.has("--action");
+  options.action = cl.value_or("--action", "grand");
+  options.screenshot = cl.value_or("--screenshot", "");
+  return pat::ui::run_trainer(argc, argv, options);
+#else
+  (void)argc, (void)argv, (void)args;
+  std::cerr << "pianoaction: this build has no trainer window (configured with "
+               "PAT_ENGINE_ONLY); use a subcommand\n\n"
+            << kUsage;
+  return 2;
+#endif
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+  if (!args.empty() && (args[0] == "--help" || args[0] == "-h" || args[0] == "help")) {
     std::cout << kUsage;
     return 0;
+  }
+  if (args.empty() || args[0].rfind("--", 0) == 0) {
+    try {
+      return run_window(argc, argv, args);
+    } catch (const pat::InputError& e) {
+      std::cerr << "pianoaction: " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "pianoaction: " << e.what() << "\n";
+      return 1;
+    }
   }
   const std::string command = args[0];
   args.erase(args.begin());

@@ -5,6 +5,7 @@
 #include "action_setup.h"
 #include "commands.h"
 #include "io/csv.h"
+#include "plot_output.h"
 #include "sim/key_travel.h"
 #include "sim/simulation.h"
 
@@ -24,7 +25,7 @@ nlohmann::json events_json(const std::vector<SimEvent>& events) {
 int run_simulate(const std::vector<std::string>& args) {
   const CommandLine cl(args,
                        {"--action", "--input", "--duration", "--integrator", "--step", "--set",
-                        "--without", "--out", "--sample-interval"},
+                        "--without", "--out", "--plot", "--sample-interval"},
                        {"--json"});
   const ActionModel model = load_configured_action(cl);
   SimulationOptions options;
@@ -36,9 +37,12 @@ int run_simulate(const std::vector<std::string>& args) {
   const RestState rest = find_rest_state(model);
   const auto input = parse_input_spec(cl.value("--input"), input_context(model, rest));
   const std::string out_path = cl.value_or("--out", "");
+  const std::string plot_path = cl.value_or("--plot", "");
+  if (!plot_path.empty()) check_plot_path(plot_path);  // a wrong extension fails before the run
 
   const SimulationResult result = simulate(model, input.get(), options, &rest);
   if (!out_path.empty()) write_csv(out_path, result.trace);
+  if (!plot_path.empty()) write_plot(plot_path, result.trace);
 
   if (cl.has("--json")) {
     nlohmann::json out{{"status", result.status},
@@ -68,6 +72,7 @@ int run_simulate(const std::vector<std::string>& args) {
     }
     std::cout << "  " << result.steps << " steps, " << result.realtime_factor << "x real time\n";
     if (!out_path.empty()) std::cout << "  trace written to " << out_path << "\n";
+    if (!plot_path.empty()) std::cout << "  plot written to " << plot_path << "\n";
   }
   return 0;
 }

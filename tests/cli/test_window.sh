@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The window from the command line (issue 5): --screenshot works offscreen for both actions and
+# writes a PNG of the whole window; simulate --plot writes PNG, PDF, SVG and CSV plots (format
+# from the extension) and refuses an unknown one; --help still prints the usage.
+# usage: test_window.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
+set -euo pipefail
+
+exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+work="$(mktemp -d)"
+cleanup() { rm -rf "$work"; }
+trap cleanup EXIT
+cd "$work"
+export QT_QPA_PLATFORM=offscreen
+export XDG_CONFIG_HOME="$work/config"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# magic bytes of a file, as hex
+magic() { head -c "$2" "$1" | od -An -tx1 | tr -d ' \n'; }
+
+"$exe" --help | grep -q "screenshot PNG" || fail "--help does not mention --screenshot"
+
+for action in grand upright; do
+  "$exe" --action "$action" --screenshot "shot-$action.png" > out.txt 2> err.txt \
+    || { cat err.txt; fail "--screenshot exited with an error for $action"; }
+  [ "$(magic "shot-$action.png" 8)" = "89504e470d0a1a0a" ] || fail "$action screenshot is not a PNG"
+  python3 - "shot-$action.png" <<'PY'
+import struct, sys
+with open(sys.argv[1], "rb") as f:
+    data = f.read(32)
+width, height = struct.unpack(">II", data[16:24])
+if width < 1000 or height < 700:
+    sys.exit("window screenshot is only %dx%d" % (width, height))
+PY
+done
+
+# a broken action file is refused before any window opens
+"$exe" --action /nonexistent/preset.json --screenshot x.png 2> err.txt && fail "bad --action accepted"
+grep -q "preset.json" err.txt || fail "the error does not name the preset file"
+
+for ext in png pdf svg csv; do
+  "$exe" simulate --action grand --input force:pulse:20:40 --duration 0.05 --plot "trace.$ext" \
+    > out.txt || fail "simulate --plot trace.$ext failed"
+  [ -s "trace.$ext" ] || fail "trace.$ext is empty"
+done
+[ "$(magic trace.png 4)" = "89504e47" ] || fail "trace.png is not a PNG"
+head -c 4 trace.pdf | grep -q "%PDF" || fail "trace.pdf is not a PDF"
+grep -q "<svg" trace.svg || fail "trace.svg has no <svg"
+grep -q "^time_s,key_angle_deg,hammer_angle_deg,hammer_string_gap_mm,finger_force_n" trace.csv \
+  || fail "trace.csv header: $(grep -v '^#' trace.csv | head -1)"
+
+if "$exe" simulate --action grand --input force:const:5 --duration 0.01 --plot trace.bmp \
+  2> err.txt; then fail "a .bmp plot was accepted"; fi
+grep -q "trace.bmp" err.txt || fail "the .bmp error does not name the file"
+echo "ok"

@@ -1,0 +1,108 @@
+// The action view (issue 5): it draws grand and upright from a running simulation, highlights
+// active contacts, zooms and pans, and a drag on the key front plays the key.
+#include "action_view.h"
+
+#include <QSignalSpy>
+#include <QTest>
+
+#include "main_window.h"
+#include "playback_controller.h"
+#include "ui_test_support.h"
+
+using pat::ui::ActionView;
+using pat::ui::MainWindow;
+using pat::ui::test::wait_until;
+
+class ActionViewTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void draws_both_actions_with_the_key_front_inside();
+  void a_blow_shows_active_contacts();
+  void wheel_zooms_and_right_drag_pans();
+  void dragging_the_key_front_down_plays_the_key();
+};
+
+void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  for (const char* action : {"grand", "upright"}) {
+    window.open_action(action);
+    QVERIFY(wait_until([&] { return window.view()->frame() != nullptr; }));
+    QCOMPARE(window.view()->frame()->model->kind, std::string(action));
+    const auto front = window.view()->key_front_on_screen();
+    QVERIFY(front.has_value());
+    QVERIFY2(window.view()->rect().contains(front->toPoint()), action);
+    // the rendering is not blank: the action is drawn in several colours
+    const QImage image = window.view()->grab().toImage();
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 7)
+      for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
+    QVERIFY2(colours.size() > 20, action);
+  }
+}
+
+void ActionViewTest::a_blow_shows_active_contacts() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("force:const:20");
+  // at rest contacts carry the action's weight; during the press the capstan and jack push
+  QVERIFY(wait_until([&] {
+    const auto* f = window.view()->frame();
+    return f && f->t > 0.01;
+  }));
+  window.view()->repaint();
+  QVERIFY(window.view()->active_contact_count() >= 2);
+}
+
+void ActionViewTest::wheel_zooms_and_right_drag_pans() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  ActionView* view = window.view();
+  QVERIFY(wait_until([&] { return view->frame() != nullptr; }));
+  const QTransform before = view->model_to_widget();
+  QWheelEvent wheel(QPointF(100, 100), view->mapToGlobal(QPointF(100, 100)), QPoint(),
+                    QPoint(0, 240), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+  QCoreApplication::sendEvent(view, &wheel);
+  QVERIFY(view->model_to_widget().m11() > before.m11() * 1.2);
+  const QTransform zoomed = view->model_to_widget();
+  QTest::mousePress(view, Qt::RightButton, {}, QPoint(200, 200));
+  QMouseEvent move(QEvent::MouseMove, QPointF(260, 230), view->mapToGlobal(QPointF(260, 230)),
+                   Qt::NoButton, Qt::RightButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(view, &move);
+  QTest::mouseRelease(view, Qt::RightButton, {}, QPoint(260, 230));
+  QCOMPARE(view->model_to_widget().dx(), zoomed.dx() + 60);
+  QCOMPARE(view->model_to_widget().dy(), zoomed.dy() + 30);
+}
+
+void ActionViewTest::dragging_the_key_front_down_plays_the_key() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("");
+  ActionView* view = window.view();
+  QVERIFY(wait_until([&] { return view->frame() != nullptr; }));
+  QSignalSpy played(view, &ActionView::keyPlayed);
+  const QPoint front = view->key_front_on_screen()->toPoint();
+  QTest::mousePress(view, Qt::LeftButton, {}, front);
+  const QPoint below = front + QPoint(0, 30);
+  QMouseEvent move(QEvent::MouseMove, QPointF(below), view->mapToGlobal(QPointF(below)),
+                   Qt::NoButton, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(view, &move);
+  QCOMPARE(played.count(), 1);
+  QVERIFY(played.first().first().toDouble() > 0.0);
+  // the running simulation follows: the key goes down
+  const int key = window.model()->landmarks.key;
+  QVERIFY(wait_until([&] { return view->frame()->angle_deg[key] > 0.3; }));
+  QTest::mouseRelease(view, Qt::LeftButton, {}, below);
+  const bool up = wait_until([&] { return view->frame()->angle_deg[key] < 0.05; });
+  QVERIFY2(up, qPrintable(QString("key at %1 deg, t = %2 s; %3")
+                              .arg(view->frame()->angle_deg[key])
+                              .arg(view->frame()->t)
+                              .arg(window.banner_text())));
+}
+
+QTEST_MAIN(ActionViewTest)
+#include "action_view_test.moc"

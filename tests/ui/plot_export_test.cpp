@@ -1,0 +1,133 @@
+// Plots and their export (issue 5): PNG, PDF and SVG files of one or all plots at a chosen
+// size, CSV of the visible time range, cursors with Δt and Δvalue, and the trace plots the
+// command line's --plot writes.
+#include "plot_export.h"
+
+#include <QFile>
+#include <QImage>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "core/error.h"
+#include "io/csv.h"
+#include "plot_panel.h"
+#include "trace_plots.h"
+
+using pat::ui::PlotPanel;
+
+class PlotExportTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void init();
+  void png_pdf_svg_have_their_magic_and_size();
+  void csv_holds_the_visible_range_only();
+  void cursors_give_delta_t_and_delta_value();
+  void unknown_extension_and_bad_folder_are_refused();
+  void trace_plots_of_a_simulation_trace();
+
+ private:
+  QByteArray head(const QString& path, int n = 64) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.read(n) : QByteArray();
+  }
+  std::unique_ptr<PlotPanel> angles_, gap_;
+  QTemporaryDir dir_;
+};
+
+void PlotExportTest::init() {
+  angles_ = std::make_unique<PlotPanel>("Key and hammer", "angle (deg)");
+  gap_ = std::make_unique<PlotPanel>("Gap", "gap (mm)");
+  angles_->add_series("key", "key_angle_deg", Qt::blue);
+  angles_->add_series("hammer", "hammer_angle_deg", Qt::red);
+  gap_->add_series("gap", "hammer_string_gap_mm", Qt::darkGreen);
+  for (int i = 0; i <= 100; ++i) {
+    const double t = i * 1e-3;
+    angles_->append(0, t, 2.0 * t / 0.1);
+    angles_->append(1, t, 30.0 * t / 0.1);
+    gap_->append(0, t, 45.0 - 44.0 * t / 0.1);
+  }
+  angles_->fit_all();
+  gap_->fit_all();
+}
+
+void PlotExportTest::png_pdf_svg_have_their_magic_and_size() {
+  const std::vector<PlotPanel*> both{angles_.get(), gap_.get()};
+  const QString png = dir_.filePath("all.png"), pdf = dir_.filePath("all.pdf"),
+                svg = dir_.filePath("one.svg");
+  pat::ui::export_plots(both, png, QSize(900, 700));
+  pat::ui::export_plots(both, pdf, QSize(900, 700));
+  pat::ui::export_plots({gap_.get()}, svg, QSize(640, 300));
+  QVERIFY(head(png).startsWith("\x89PNG\r\n\x1a\n"));
+  QVERIFY(head(pdf).startsWith("%PDF"));
+  QVERIFY(head(svg, 400).contains("<svg"));
+  const QImage image(png);
+  QCOMPARE(image.size(), QSize(900, 700));
+  // both plots are in the image: the upper and the lower half each have drawn (non-white) pixels
+  auto inked = [&](int y0, int y1) {
+    int count = 0;
+    for (int y = y0; y < y1; y += 3)
+      for (int x = 0; x < image.width(); x += 3) count += image.pixel(x, y) != qRgb(255, 255, 255);
+    return count;
+  };
+  QVERIFY(inked(0, 350) > 500);
+  QVERIFY(inked(350, 700) > 500);
+  QFile svg_file(svg);
+  QVERIFY(svg_file.open(QIODevice::ReadOnly));
+  QVERIFY(svg_file.readAll().contains("gap (mm)"));  // axis title with its unit
+}
+
+void PlotExportTest::csv_holds_the_visible_range_only() {
+  angles_->set_x_range(0.020, 0.040);
+  gap_->set_x_range(0.020, 0.040);
+  const QString path = dir_.filePath("visible.csv");
+  pat::ui::export_plots({angles_.get(), gap_.get()}, path, QSize(800, 600));
+  const pat::CsvTable table = pat::read_csv(path.toStdString());
+  QCOMPARE(table.columns, (std::vector<std::string>{"time_s", "key_angle_deg", "hammer_angle_deg",
+                                                    "hammer_string_gap_mm"}));
+  QCOMPARE(table.rows.size(), std::size_t(21));
+  QVERIFY(std::abs(table.rows.front()[0] - 0.020) < 1e-12);
+  QVERIFY(std::abs(table.rows.back()[0] - 0.040) < 1e-12);
+  QVERIFY(std::abs(table.rows[10][2] - 30.0 * 0.030 / 0.1) < 1e-9);
+  QVERIFY(std::abs(table.rows[10][3] - (45.0 - 44.0 * 0.3)) < 1e-9);
+}
+
+void PlotExportTest::cursors_give_delta_t_and_delta_value() {
+  QVERIFY(angles_->cursor_readout().isEmpty());
+  angles_->set_cursor(0, 0.010);
+  angles_->set_cursor(1, 0.050);
+  const QString readout = angles_->cursor_readout();
+  QVERIFY2(readout.contains("Δt = 40.00 ms"), qPrintable(readout));
+  QVERIFY2(readout.contains("Δ hammer = 12 deg"), qPrintable(readout));
+  QVERIFY2(readout.contains("Δ key = 0.8 deg"), qPrintable(readout));
+  QVERIFY(!angles_->value_at(0, 0.5).has_value());  // outside the data
+}
+
+void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
+  try {
+    pat::ui::export_plots({gap_.get()}, dir_.filePath("plot.bmp"), QSize(400, 300));
+    QFAIL("a .bmp export was accepted");
+  } catch (const pat::InputError& e) {
+    QVERIFY(QString(e.what()).contains("plot.bmp"));
+  }
+  QVERIFY_THROWS_EXCEPTION(
+      pat::InputError,
+      pat::ui::export_plots({gap_.get()}, "/nonexistent/dir/p.png", QSize(400, 300)));
+}
+
+void PlotExportTest::trace_plots_of_a_simulation_trace() {
+  pat::CsvTable trace;
+  trace.columns = {"time_s", "key_angle_deg", "hammer_angle_deg", "hammer_string_gap_mm",
+                   "finger_force_n"};
+  for (int i = 0; i < 50; ++i)
+    trace.rows.push_back({i * 1e-3, 0.05 * i, 0.5 * i, 45 - 0.9 * i, 5.0});
+  const auto plots = pat::ui::make_trace_plots(trace);
+  QCOMPARE(plots.size(), std::size_t(3));
+  QCOMPARE(plots[0]->series_count(), 2);
+  QCOMPARE(plots[0]->point_count(1), std::size_t(50));
+  const QString path = dir_.filePath("trace.pdf");
+  pat::ui::write_trace_plot(trace, path);
+  QVERIFY(head(path).startsWith("%PDF"));
+}
+
+QTEST_MAIN(PlotExportTest)
+#include "plot_export_test.moc"

@@ -1,0 +1,197 @@
+// The regulation panel (issue 5): a slider moves the adjuster and the measured value follows;
+// spin box and slider agree; Reset to regulated; Regulate automatically shows its steps and
+// can be cancelled; the current state saved as a preset loads back with the same geometry; a
+// broken preset is refused with a message naming the field.
+#include "regulation_panel.h"
+
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QPlainTextEdit>
+#include <QSignalSpy>
+#include <QSlider>
+#include <QTemporaryDir>
+#include <QTest>
+#include <cmath>
+
+#include "core/error.h"
+#include "deregulation_runner.h"
+#include "main_window.h"
+#include "measurement_service.h"
+#include "model/preset_loader.h"
+#include "playback_controller.h"
+#include "regulation_runner.h"
+#include "ui_test_support.h"
+
+using pat::ui::MainWindow;
+using pat::ui::RegulationRow;
+using pat::ui::test::wait_until;
+
+class RegulationPanelTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void rows_follow_the_settings_with_their_ranges();
+  void slider_moves_the_adjuster_and_the_measured_value();
+  void reset_to_regulated();
+  void regulate_automatically_shows_steps_and_can_be_cancelled();
+  void deregulation_demo_can_be_cancelled_and_replays();
+  void saved_state_loads_back();
+  void broken_preset_names_the_field();
+};
+
+namespace {
+
+bool measured_all(MainWindow& window) {
+  if (window.measurements()->busy()) return false;
+  for (const auto& row : window.regulation()->rows())
+    if (!row->measured()) return false;
+  return true;
+}
+
+}  // namespace
+
+void RegulationPanelTest::rows_follow_the_settings_with_their_ranges() {
+  MainWindow window;
+  window.open_action("grand");
+  const pat::ActionModel& model = *window.model();
+  QCOMPARE(window.regulation()->rows().size(), model.adjusters.size());
+  for (const pat::Adjuster& a : model.adjusters) {
+    RegulationRow* row = window.regulation()->row(a.name);
+    QVERIFY(row);
+    QCOMPARE(row->spin_box()->minimum(), a.min * 1e3);
+    QCOMPARE(row->spin_box()->maximum(), a.max * 1e3);
+    QVERIFY(row->spin_box()->toolTip().contains(QString::fromStdString(a.description)));
+  }
+  // the technician's order of the preset's settings
+  for (std::size_t i = 0; i < model.regulation.size(); ++i)
+    QCOMPARE(window.regulation()->rows()[i]->name(), model.regulation[i].name);
+}
+
+void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  QVERIFY(wait_until([&] { return measured_all(window); }, 60000));
+  RegulationRow* row = window.regulation()->row("hammer_blow");
+  const double before = *row->measured();
+
+  row->slider()->setValue(100);  // capstan screwed up 1 mm: a shorter blow
+  QCOMPARE(row->spin_box()->value(), 1.0);
+  const int a = window.model()->adjuster_index("hammer_blow");
+  QCOMPARE(window.model()->adjusters[a].value, 1e-3);
+  QVERIFY(wait_until([&] { return measured_all(window); }, 60000));
+  const double after = *row->measured();
+  qInfo("hammer blow measured %.3f mm, after +1 mm on the capstan %.3f mm", before, after);
+  QVERIFY(after < before - 1.0);  // the key ratio multiplies the capstan's millimetre
+  // the tolerance colour follows the measurement
+  const auto& setting = window.model()->regulation[window.model()->setting_index("hammer_blow")];
+  QCOMPARE(row->out_of_tolerance(), std::abs(after - setting.target) > setting.tolerance);
+}
+
+void RegulationPanelTest::reset_to_regulated() {
+  MainWindow window;
+  window.open_action("upright");
+  window.set_adjuster("let_off", 0.7);
+  window.set_adjuster("bridle", -0.5);
+  window.regulation()->show_adjusters(*window.model());
+  QCOMPARE(window.regulation()->row("let_off")->value_mm(), 0.7);
+  emit window.regulation()->resetRequested();
+  for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
+  QCOMPARE(window.regulation()->row("let_off")->value_mm(), 0.0);
+  QCOMPARE(window.regulation()->row("bridle")->value_mm(), 0.0);
+}
+
+void RegulationPanelTest::regulate_automatically_shows_steps_and_can_be_cancelled() {
+  MainWindow window;
+  window.open_action("grand");
+  window.set_adjuster("hammer_blow", 1.0);
+  QSignalSpy steps(window.regulation_runner(), &pat::ui::RegulationRunner::stepDone);
+  QSignalSpy finished(window.regulation_runner(), &pat::ui::RegulationRunner::finished);
+  window.regulate_automatically();
+  QVERIFY(window.regulation_runner()->running());
+  QVERIFY(wait_until([&] { return steps.count() >= 1; }, 120000));
+  QVERIFY(steps.first().first().toString().contains("pass 1"));
+  window.regulation_runner()->cancel();
+  QVERIFY(wait_until([&] { return finished.count() == 1; }, 120000));
+  QVERIFY(!window.regulation_runner()->running());
+  // the log shows the steps; the model in the window is the one the regulation left
+  const QString log = window.regulation()->findChild<QPlainTextEdit*>()->toPlainText();
+  QVERIFY2(log.contains("pass 1"), qPrintable(log));
+  const auto model = finished.first().first().value<std::shared_ptr<const pat::ActionModel>>();
+  QCOMPARE(window.model().get(), model.get());
+}
+
+void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  pat::ui::DeregulationRunner* runner = window.deregulation_runner();
+  QSignalSpy progress(runner, &pat::ui::DeregulationRunner::progress);
+  bool done = false;
+  std::size_t frame_count = 0;
+  connect(runner, &pat::ui::DeregulationRunner::finished, this,
+          [&](const std::vector<pat::ui::Frame>& frames, const pat::DeregulationResult& result) {
+            done = true;
+            frame_count = frames.size();
+            QCOMPARE(result.stop_cause, std::string("cancelled"));
+          });
+  window.run_deregulation_demo();
+  QVERIFY(runner->running());
+  QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
+  runner->cancel();
+  QVERIFY(wait_until([&] { return done; }, 60000));
+  QVERIFY(!runner->running());
+  // what was simulated before the cancel is replayed in the window
+  QVERIFY(frame_count > 0);
+  QVERIFY(window.controller()->replaying());
+  QCOMPARE(window.controller()->history().size(), frame_count);
+  window.start("");  // back to a live run
+  QVERIFY(!window.controller()->replaying());
+}
+
+void RegulationPanelTest::saved_state_loads_back() {
+  QTemporaryDir dir;
+  MainWindow window;
+  window.open_action("grand");
+  window.set_adjuster("let_off", 0.6);
+  const QString path = dir.filePath("deregulated.json");
+  window.save_preset(path.toStdString());
+  const pat::ActionModel loaded = pat::load_action(path.toStdString());
+  // the offset is baked into the geometry: the let-off button sits where the slider put it
+  const pat::ActionModel& current = *window.model();
+  const int button = current.contact_index("jack toe–let-off button");
+  QVERIFY(button >= 0);
+  const auto& a = current.contacts[button];
+  const auto& b = loaded.contacts[button];
+  QVERIFY((a.segment_start - b.segment_start).norm() < 1e-9 ||
+          (a.center_b - b.center_b).norm() < 1e-9);
+  for (const pat::Adjuster& adj : loaded.adjusters) QCOMPARE(adj.value, 0.0);
+}
+
+void RegulationPanelTest::broken_preset_names_the_field() {
+  QTemporaryDir dir;
+  QFile source(QString::fromStdString(pat::preset_directory()) + "/grand.json");
+  QVERIFY(source.open(QIODevice::ReadOnly));
+  QString text = QString::fromUtf8(source.readAll());
+  text.replace("\"mass_g\": 95", "\"mass_g\": -95");
+  const QString path = dir.filePath("broken.json");
+  QFile broken(path);
+  QVERIFY(broken.open(QIODevice::WriteOnly));
+  broken.write(text.toUtf8());
+  broken.close();
+
+  MainWindow window;
+  window.open_action("grand");
+  const auto before = window.model();
+  try {
+    window.open_action(path.toStdString());
+    QFAIL("a broken preset was accepted");
+  } catch (const pat::InputError& e) {
+    const QString message = e.what();
+    QVERIFY2(message.contains("broken.json") && message.contains("mass_g"), e.what());
+  }
+  QCOMPARE(window.model().get(), before.get());  // the running action is kept
+}
+
+QTEST_MAIN(RegulationPanelTest)
+#include "regulation_panel_test.moc"

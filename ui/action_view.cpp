@@ -1,0 +1,325 @@
+#include "action_view.h"
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
+
+#include "action_style.h"
+#include "label_placer.h"
+
+namespace pat::ui {
+namespace {
+
+constexpr double kKeyGrabRadiusPx = 24.0;
+
+// text on a translucent white box, readable over any part (cheaper than a stroked text path)
+void draw_label(QPainter& painter, const QPointF& at, const QString& text, const QColor& colour) {
+  const QFontMetricsF metrics(painter.font());
+  const QRectF box(at.x() - 2, at.y() - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
+                   metrics.height() + 2);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(QColor(255, 255, 255, 190));
+  painter.drawRoundedRect(box, 3, 3);
+  painter.setPen(colour);
+  painter.drawText(at, text);
+}
+
+void draw_arrow(QPainter& painter, const QPointF& from, const QPointF& to, const QColor& colour) {
+  painter.setPen(QPen(colour, 3.0, Qt::SolidLine, Qt::RoundCap));
+  painter.drawLine(from, to);
+  const QPointF d = to - from;
+  const double length = std::hypot(d.x(), d.y());
+  if (length < 1.0) return;
+  const QPointF u = d / length, n(-u.y(), u.x());
+  const double head = std::min(10.0, length * 0.5);
+  QPolygonF tip;
+  tip << to << to - head * u + 0.5 * head * n << to - head * u - 0.5 * head * n;
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(colour);
+  painter.drawPolygon(tip);
+}
+
+}  // namespace
+
+ActionView::ActionView(QWidget* parent) : QWidget(parent) {
+  setMinimumSize(320, 240);
+  setMouseTracking(true);
+  setFocusPolicy(Qt::ClickFocus);
+  setToolTip(
+      tr("Wheel: zoom · right or middle drag: pan · double click: fit\n"
+         "Left drag on the key front (the ring): play the key"));
+}
+
+void ActionView::show_frame(const Frame& frame) {
+  if (frame.model != model_) {
+    model_ = frame.model;
+    dynamics_ = std::make_unique<ActionDynamics>(*model_, nullptr);
+    const Body& key = model_->bodies[model_->landmarks.key];
+    key_arm_m_ = std::max(1e-3, std::abs(model_->landmarks.key_front.x() - key.pivot.x()));
+  }
+  frame_ = frame;
+  dynamics_->evaluate(frame.t, frame.q, frame.v, reading_);
+  if (!fitted_) fit();
+  update();
+}
+
+void ActionView::reset_view() {
+  fitted_ = false;
+  frame_.reset();
+  model_.reset();
+  dynamics_.reset();
+  update();
+}
+
+void ActionView::set_labels_visible(bool visible) {
+  labels_ = visible;
+  update();
+}
+
+QTransform ActionView::model_to_widget() const {
+  return QTransform(scale_, 0, 0, -scale_, offset_.x(), offset_.y());
+}
+
+QPointF ActionView::to_screen(const Vec2& p) const {
+  return {offset_.x() + scale_ * p.x(), offset_.y() - scale_ * p.y()};
+}
+
+Vec2 ActionView::to_model(const QPointF& p) const {
+  return {(p.x() - offset_.x()) / scale_, (offset_.y() - p.y()) / scale_};
+}
+
+Vec2 ActionView::body_point(int body, const Vec2& rest_point) {
+  return dynamics_->point_position(body, rest_point, frame_->q);
+}
+
+std::optional<QPointF> ActionView::key_front_on_screen() const {
+  if (!frame_ || !dynamics_) return std::nullopt;
+  auto* self = const_cast<ActionView*>(this);
+  return to_screen(self->body_point(model_->landmarks.key, model_->landmarks.key_front));
+}
+
+void ActionView::fit() {
+  if (!frame_ || width() <= 0 || height() <= 0) return;
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  auto include = [&](const Vec2& p) {
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  };
+  for (int b = 0; b < model_->dofs(); ++b)
+    for (const Vec2& p : model_->bodies[b].outline) include(body_point(b, p));
+  for (const Fixture& f : model_->fixtures)
+    for (const Vec2& p : f.outline) include(p);
+  if (x1 <= x0 || y1 <= y0) return;
+  const double margin = 0.06;
+  const double w = (x1 - x0) * (1 + 2 * margin), h = (y1 - y0) * (1 + 2 * margin);
+  scale_ = std::min(width() / w, height() / h);
+  offset_ =
+      QPointF(width() / 2.0 - scale_ * (x0 + x1) / 2.0, height() / 2.0 + scale_ * (y0 + y1) / 2.0);
+  fitted_ = true;
+}
+
+void ActionView::resizeEvent(QResizeEvent*) {
+  if (frame_) fit();
+}
+
+void ActionView::paintEvent(QPaintEvent*) {
+  QPainter painter(this);
+  painter.setRenderHint(QPainter::Antialiasing);
+  painter.fillRect(rect(), QColor(250, 250, 246));
+  if (!frame_) {
+    painter.setPen(QColor(90, 90, 90));
+    painter.drawText(rect(), Qt::AlignCenter, tr("Starting the simulation…"));
+    return;
+  }
+  const ActionModel& model = *model_;
+  QFont label_font = font();
+  label_font.setPointSizeF(std::max(9.0, label_font.pointSizeF()));
+  label_font.setBold(true);
+  painter.setFont(label_font);
+
+  // fixtures
+  for (const Fixture& f : model.fixtures) {
+    QPolygonF polygon;
+    for (const Vec2& p : f.outline) polygon << to_screen(p);
+    const QColor colour = fixture_colour(f.name);
+    painter.setPen(QPen(colour.darker(160), 1.5));
+    painter.setBrush(f.name == "string" ? colour : colour.lighter(120));
+    painter.drawPolygon(polygon);
+  }
+  // bodies, parents first (children drawn over them)
+  for (int b = 0; b < model.dofs(); ++b) {
+    const Body& body = model.bodies[b];
+    QPolygonF polygon;
+    for (const Vec2& p : body.outline) polygon << to_screen(body_point(b, p));
+    QColor fill = body_colour(body.name);
+    fill.setAlpha(215);
+    painter.setPen(QPen(fill.darker(200), 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+    painter.setBrush(fill);
+    painter.drawPolygon(polygon);
+  }
+  // contact features: felts, buttons, capstan, jack top, backcheck (moved by the adjusters)
+  painter.setBrush(Qt::NoBrush);
+  for (const Contact& c : model.contacts) {
+    const QColor ink(60, 60, 60, 170);
+    painter.setPen(QPen(ink, 1.5));
+    if (c.radius_a > 0.0) {
+      const QPointF centre = to_screen(body_point(c.body_a, c.center_a));
+      painter.drawEllipse(centre, c.radius_a * scale_, c.radius_a * scale_);
+    }
+    if (c.shape == ContactShape::CircleCircle && c.radius_b > 0.0) {
+      const QPointF centre = to_screen(body_point(c.body_b, c.center_b));
+      painter.drawEllipse(centre, c.radius_b * scale_, c.radius_b * scale_);
+    } else if (c.shape == ContactShape::CircleSegment) {
+      painter.setPen(QPen(ink, 3.0, Qt::SolidLine, Qt::RoundCap));
+      painter.drawLine(to_screen(body_point(c.body_b, c.segment_start)),
+                       to_screen(body_point(c.body_b, c.segment_end)));
+    }
+  }
+  // pivots
+  painter.setPen(QPen(Qt::black, 1.5));
+  painter.setBrush(Qt::white);
+  for (int b = 0; b < model.dofs(); ++b) {
+    const Body& body = model.bodies[b];
+    painter.drawEllipse(to_screen(body_point(body.parent, body.pivot)), 4.0, 4.0);
+  }
+  // active contacts with their force arrows (length grows with the square root of the force)
+  struct Label {
+    QPointF anchor;
+    QString text;
+    QColor colour;
+    bool small;
+  };
+  std::vector<Label> labels;  // in placement priority
+  std::vector<Label> force_labels, fixture_labels;
+  active_contacts_ = 0;
+  for (std::size_t c = 0; c < reading_.contacts.size(); ++c) {
+    const ContactReading& r = reading_.contacts[c];
+    if (!r.active || r.normal_force <= 1e-3) continue;
+    ++active_contacts_;
+    const QPointF at = to_screen(r.point);
+    const double length = std::clamp(14.0 * std::sqrt(r.normal_force), 10.0, 90.0);
+    const QPointF tip = at + QPointF(r.normal.x(), -r.normal.y()) * length;
+    painter.setPen(QPen(contact_colour(), 2.0));
+    painter.setBrush(Qt::white);
+    painter.drawEllipse(at, 5.0, 5.0);
+    draw_arrow(painter, at, tip, contact_colour());
+    if (r.normal_force >= 0.5)
+      force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
+                              contact_colour().darker(130), true});
+  }
+  // key front: where the finger presses (drag it to play the key)
+  const QPointF key_front = to_screen(body_point(model.landmarks.key, model.landmarks.key_front));
+  painter.setPen(QPen(QColor(0, 110, 200), playing_key_ ? 4.0 : 2.5));
+  painter.setBrush(Qt::NoBrush);
+  painter.drawEllipse(key_front, 9.0, 9.0);
+
+  // time and gap readout
+  QFont big = font();
+  big.setPointSizeF(big.pointSizeF() + 3);
+  big.setBold(true);
+  painter.setFont(big);
+  const QString readout = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
+                              .arg(frame_->t * 1e3, 0, 'f', 2)
+                              .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
+                              .arg(frame_->finger_force_n, 0, 'f', 1);
+  draw_label(painter, QPointF(10, 24), readout, QColor(20, 20, 20));
+  if (!labels_) return;
+
+  // labels without overlap: parts first, then forces, then fixtures
+  LabelPlacer placer{QRectF(rect())};
+  placer.reserve(QRectF(QPointF(8, 4), QFontMetricsF(big).size(0, readout) + QSizeF(8, 8)));
+  for (int b = 0; b < model.dofs(); ++b) {
+    const Body& body = model.bodies[b];
+    Vec2 centre = Vec2::Zero();
+    for (const Vec2& p : body.outline) centre += p;
+    centre /= std::max<std::size_t>(1, body.outline.size());
+    labels.push_back({to_screen(body_point(b, centre)) + QPointF(-16, 5),
+                      QString::fromStdString(body.name), body_colour(body.name).darker(250),
+                      false});
+  }
+  labels.push_back({key_front + QPointF(-24, 28), tr("finger"), QColor(0, 90, 170), false});
+  // the adjustable fixtures (buttons, screws) and the string before the forces, rails last
+  std::vector<Label> rail_labels;
+  for (const Fixture& f : model.fixtures) {
+    if (f.outline.empty()) continue;
+    Vec2 lowest = f.outline.front();
+    for (const Vec2& p : f.outline) lowest = p.y() < lowest.y() ? p : lowest;
+    const Label label{to_screen(lowest) + QPointF(-10, 15), QString::fromStdString(f.name),
+                      QColor(70, 70, 70), true};
+    (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
+  }
+  labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
+  labels.insert(labels.end(), force_labels.begin(), force_labels.end());
+  labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
+  QFont small = label_font;
+  small.setBold(false);
+  for (const Label& l : labels) {
+    painter.setFont(l.small ? small : label_font);
+    const auto at = placer.place(l.anchor, l.text, QFontMetricsF(painter.font()));
+    if (at) draw_label(painter, *at, l.text, l.colour);
+  }
+}
+
+void ActionView::wheelEvent(QWheelEvent* event) {
+  const double factor = std::pow(1.0015, event->angleDelta().y());
+  const QPointF at = event->position();
+  offset_ = at + (offset_ - at) * factor;
+  scale_ *= factor;
+  update();
+}
+
+void ActionView::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton) {
+    panning_ = true;
+    drag_start_ = event->position();
+    offset_at_drag_ = offset_;
+    setCursor(Qt::ClosedHandCursor);
+    return;
+  }
+  if (event->button() == Qt::LeftButton && frame_) {
+    const auto front = key_front_on_screen();
+    if (front && QLineF(*front, event->position()).length() <= kKeyGrabRadiusPx) {
+      playing_key_ = true;
+      const int key = model_->landmarks.key;
+      key_angle_at_press_ = frame_->angle_deg[key] * model_->bodies[key].trace_sign * M_PI / 180.0;
+      press_y_m_ = to_model(event->position()).y();
+      update();
+    }
+  }
+}
+
+void ActionView::mouseMoveEvent(QMouseEvent* event) {
+  if (panning_) {
+    offset_ = offset_at_drag_ + (event->position() - drag_start_);
+    update();
+  } else if (playing_key_) {
+    const double down_m = press_y_m_ - to_model(event->position()).y();
+    emit keyPlayed(key_angle_at_press_ + down_m / key_arm_m_);
+  } else if (frame_) {
+    const auto front = key_front_on_screen();
+    const bool over_key = front && QLineF(*front, event->position()).length() <= kKeyGrabRadiusPx;
+    setCursor(over_key ? Qt::PointingHandCursor : Qt::ArrowCursor);
+  }
+}
+
+void ActionView::mouseReleaseEvent(QMouseEvent* event) {
+  if (panning_ && (event->button() == Qt::MiddleButton || event->button() == Qt::RightButton)) {
+    panning_ = false;
+    setCursor(Qt::ArrowCursor);
+  }
+  if (playing_key_ && event->button() == Qt::LeftButton) {
+    playing_key_ = false;
+    emit keyReleased();
+    update();
+  }
+}
+
+void ActionView::mouseDoubleClickEvent(QMouseEvent*) {
+  fit();
+  update();
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,78 @@
+// The animated action: every body's outline at its joint angle, the fixtures (rails, let-off
+// button, drop screw, string), the contact features (capstan, jack top, backcheck, felts),
+// pivots, and each active contact highlighted with an arrow scaled by its normal force.
+// Wheel: zoom about the cursor; middle or right drag: pan; double click: fit the action.
+// Left drag on the key front plays the key (keyPlayed); releasing lets it up.
+#pragma once
+
+#include <QPointF>
+#include <QTransform>
+#include <QWidget>
+#include <memory>
+#include <optional>
+
+#include "dynamics/action_dynamics.h"
+#include "frame.h"
+
+namespace pat::ui {
+
+class ActionView : public QWidget {
+  Q_OBJECT
+ public:
+  explicit ActionView(QWidget* parent = nullptr);
+
+  /// Shows a frame (its model may differ from the previous one: a moved adjuster).
+  void show_frame(const Frame& frame);
+  /// Forgets the view fit (a new action): the next frame is fitted to the widget.
+  void reset_view();
+  void set_labels_visible(bool visible);
+  bool labels_visible() const { return labels_; }
+  /// Model (m) to widget (px) transform in use.
+  QTransform model_to_widget() const;
+  /// Screen position of the key front in the frame shown (where a left drag plays the key).
+  std::optional<QPointF> key_front_on_screen() const;
+  /// Active contacts in the frame shown (those drawn with a force arrow).
+  int active_contact_count() const { return active_contacts_; }
+  const Frame* frame() const { return frame_ ? &*frame_ : nullptr; }
+  QSize sizeHint() const override { return {640, 420}; }
+
+ signals:
+  /// The key played with the mouse: angle (rad from rest, positive down).
+  void keyPlayed(double angle_rad);
+  void keyReleased();
+
+ protected:
+  void paintEvent(QPaintEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void wheelEvent(QWheelEvent* event) override;
+  void mousePressEvent(QMouseEvent* event) override;
+  void mouseMoveEvent(QMouseEvent* event) override;
+  void mouseReleaseEvent(QMouseEvent* event) override;
+  void mouseDoubleClickEvent(QMouseEvent* event) override;
+
+ private:
+  void fit();
+  QPointF to_screen(const Vec2& p) const;
+  Vec2 to_model(const QPointF& p) const;
+  Vec2 body_point(int body, const Vec2& rest_point);
+
+  std::optional<Frame> frame_;
+  std::shared_ptr<const ActionModel> model_;
+  std::unique_ptr<ActionDynamics> dynamics_;
+  DynamicsReading reading_;
+  bool labels_ = true;
+  bool fitted_ = false;
+  double scale_ = 1000.0;  // px per m
+  QPointF offset_;         // widget position of the model origin
+  int active_contacts_ = 0;
+  // panning and key play
+  QPointF drag_start_;
+  QPointF offset_at_drag_;
+  bool panning_ = false;
+  bool playing_key_ = false;
+  double key_angle_at_press_ = 0.0;
+  double key_arm_m_ = 0.2;
+  double press_y_m_ = 0.0;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,428 @@
+#include "main_window.h"
+
+#include <QActionGroup>
+#include <QCloseEvent>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QSettings>
+#include <QShortcut>
+#include <QSplitter>
+#include <QStatusBar>
+#include <QToolBar>
+#include <QVBoxLayout>
+#include <exception>
+
+#include "action_view.h"
+#include "deregulation_runner.h"
+#include "export_size_dialog.h"
+#include "input_spec_form.h"
+#include "measurement_service.h"
+#include "model/model_edits.h"
+#include "model/preset_loader.h"
+#include "playback_controller.h"
+#include "plot_export.h"
+#include "plot_panel.h"
+#include "plot_stack.h"
+#include "regulation/regulation.h"
+#include "regulation_panel.h"
+#include "regulation_runner.h"
+#include "run_controls.h"
+
+namespace pat::ui {
+
+MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
+  setWindowTitle(tr("Piano Action Trainer"));
+  controller_ = new PlaybackController(this);
+
+  auto* central = new QWidget(this);
+  auto* column = new QVBoxLayout(central);
+  column->setContentsMargins(2, 2, 2, 2);
+  column->setSpacing(2);
+  // the run controls span the whole window width, above the regulation panel too
+  run_controls_ = new RunControls(controller_, this);
+  QToolBar* bar = addToolBar(tr("Run"));
+  bar->setObjectName("run_toolbar");
+  bar->setMovable(false);
+  bar->addWidget(run_controls_);
+  banner_ = new QLabel(central);
+  banner_->setWordWrap(true);
+  banner_->setStyleSheet(
+      "background: #c0392b; color: white; font-weight: bold; padding: 6px; font-size: 11pt;");
+  banner_->hide();
+  column->addWidget(banner_);
+  auto* split = new QSplitter(Qt::Vertical, central);
+  view_ = new ActionView(split);
+  plots_ = new PlotStack(split);
+  split->addWidget(view_);
+  split->addWidget(plots_);
+  split->setStretchFactor(0, 1);
+  split->setStretchFactor(1, 1);
+  split->setSizes({330, 370});
+  column->addWidget(split, 1);
+  setCentralWidget(central);
+
+  regulation_ = new RegulationPanel;
+  regulation_scroll_ = new QScrollArea;
+  auto* scroll = regulation_scroll_;
+  scroll->setWidget(regulation_);
+  scroll->setWidgetResizable(true);
+  auto* dock = new QDockWidget(tr("Regulation"), this);
+  dock->setObjectName("regulation_dock");
+  dock->setWidget(scroll);
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::RightDockWidgetArea, dock);
+
+  connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
+  connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
+  connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
+    show_banner(tr("Run paused at t = %1 ms: %2. Move the setting back and press \"Start from "
+                   "rest\".")
+                    .arg(controller_->display_time() * 1e3, 0, 'f', 2)
+                    .arg(cause));
+  });
+  connect(controller_, &PlaybackController::runRestarted, this, [this] {
+    hide_banner();
+    plots_->clear();
+  });
+  connect(view_, &ActionView::keyPlayed, controller_, &PlaybackController::play_key);
+  connect(view_, &ActionView::keyReleased, this, [this] { controller_->play_key(0.0); });
+  connect(run_controls_, &RunControls::startRequested, this, &MainWindow::start);
+  connect(regulation_, &RegulationPanel::adjusterChanged, this, &MainWindow::set_adjuster);
+  connect(regulation_, &RegulationPanel::resetRequested, this, [this] {
+    if (!model_) return;
+    auto regulated = std::make_shared<ActionModel>(*model_);
+    for (const Adjuster& a : model_->adjusters) *regulated = with_adjuster(*regulated, a.name, 0.0);
+    regulation_->show_adjusters(*regulated);
+    regulation_->log(tr("Reset: every adjuster at its regulated position."));
+    change_model(regulated);
+  });
+
+  // live measured values and automatic regulation, both off the window's thread
+  measurements_ = new MeasurementService(this);
+  connect(measurements_, &MeasurementService::measured, this,
+          [this](const QString& name, double value) {
+            if (RegulationRow* row = regulation_->row(name.toStdString())) row->set_measured(value);
+          });
+  connect(measurements_, &MeasurementService::failed, this,
+          [this](const QString& name, const QString& reason) {
+            if (RegulationRow* row = regulation_->row(name.toStdString()))
+              row->set_measurement_failed(reason);
+            else
+              regulation_->log(tr("Cannot measure: %1").arg(reason));
+          });
+  regulation_runner_ = new RegulationRunner(this);
+  regulate_button_ = regulation_->add_button(
+      tr("Regulate automatically"),
+      tr("Bisection on each adjuster in the technician's order, repeated until every "
+         "measurement is within tolerance; the steps are listed below"));
+  connect(regulate_button_, &QPushButton::clicked, this, [this] {
+    if (regulation_runner_->running())
+      regulation_runner_->cancel();
+    else
+      regulate_automatically();
+  });
+  connect(regulation_runner_, &RegulationRunner::stepDone, regulation_, &RegulationPanel::log);
+  connect(regulation_runner_, &RegulationRunner::finished, this,
+          [this](std::shared_ptr<const ActionModel> model, bool converged, const QString& msg) {
+            regulate_button_->setText(tr("Regulate automatically"));
+            regulation_->log(converged ? tr("Regulated: %1.").arg(msg)
+                                       : tr("Not regulated: %1.").arg(msg));
+            regulation_->show_adjusters(*model);
+            change_model(model);
+          });
+
+  deregulation_runner_ = new DeregulationRunner(this);
+  deregulate_button_ = regulation_->add_button(
+      tr("Deregulation demo"),
+      tr("The capstan (hammer blow) screwed up 0.5 mm every 0.5 s while the key plays a 3 Hz "
+         "sine, until the action fails (paper section 7.2); then replayed"));
+  progress_ = new QProgressBar(regulation_);
+  progress_->setRange(0, 100);
+  progress_->hide();
+  regulation_->layout()->addWidget(progress_);
+  connect(deregulate_button_, &QPushButton::clicked, this, [this] {
+    if (deregulation_runner_->running())
+      deregulation_runner_->cancel();
+    else
+      run_deregulation_demo();
+  });
+  connect(deregulation_runner_, &DeregulationRunner::progress, this,
+          [this](double f) { progress_->setValue(int(100 * f)); });
+  connect(deregulation_runner_, &DeregulationRunner::finished, this,
+          [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
+            progress_->hide();
+            deregulate_button_->setText(tr("Deregulation demo"));
+            for (const DeregulationSample& s : result.samples)
+              regulation_->log(tr("t = %1 s  adjuster %2 mm  measured %3")
+                                   .arg(s.t, 0, 'f', 2)
+                                   .arg(s.adjuster_mm, 0, 'f', 2)
+                                   .arg(s.measured, 0, 'f', 2));
+            regulation_->log(result.stop_cause.empty()
+                                 ? tr("Deregulation: the action held to the end.")
+                                 : tr("Deregulation stopped at t = %1 s: %2")
+                                       .arg(result.stop_t, 0, 'f', 2)
+                                       .arg(QString::fromStdString(result.stop_cause)));
+            if (!frames.empty()) {
+              controller_->replay(frames);
+              statusBar()->showMessage(
+                  tr("Replaying the deregulation demo; Start from rest "
+                     "returns to the live action."));
+            }
+          });
+
+  build_menus();
+  build_shortcuts();
+  statusBar()->showMessage(
+      tr("Drag the key front (blue ring) to play the key; space strikes a "
+         "blow."));
+  restore_settings();
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::build_menus() {
+  QMenu* file = menuBar()->addMenu(tr("&File"));
+  file->addAction(tr("&Open preset…"), QKeySequence::Open, this,
+                  &MainWindow::open_preset_from_menu);
+  file->addAction(tr("&Save current state as preset…"), QKeySequence::Save, this,
+                  &MainWindow::save_preset_from_menu);
+  file->addSeparator();
+  file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
+
+  QMenu* action = menuBar()->addMenu(tr("&Action"));
+  auto* group = new QActionGroup(this);
+  grand_action_ = action->addAction(tr("&Grand (double escapement)"));
+  upright_action_ = action->addAction(tr("&Upright"));
+  for (QAction* a : {grand_action_, upright_action_}) {
+    a->setCheckable(true);
+    group->addAction(a);
+  }
+  connect(grand_action_, &QAction::triggered, this, [this] { open_action("grand"); });
+  connect(upright_action_, &QAction::triggered, this, [this] { open_action("upright"); });
+
+  QMenu* exports = menuBar()->addMenu(tr("&Export"));
+  exports->addAction(tr("&All plots…"), QKeySequence(tr("Ctrl+E")), this,
+                     [this] { export_from_menu(plots_->panels(), tr("all plots")); });
+  QMenu* one = exports->addMenu(tr("One &plot"));
+  for (PlotPanel* panel : plots_->panels()) {
+    const QString title = panel->title();
+    one->addAction(title + "…", this, [this, title] {
+      for (PlotPanel* p : plots_->panels())
+        if (p->title() == title) export_from_menu({p}, title);
+    });
+  }
+  exports->addAction(tr("Export &size…"), this,
+                     [this] { export_size_ = ask_export_size(this, export_size_); });
+  exports->addSeparator();
+  exports->addAction(tr("&Window screenshot…"), this, [this] {
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Window screenshot"), {}, tr("PNG images (*.png)"));
+    if (!path.isEmpty() && !grab().save(path, "PNG"))
+      statusBar()->showMessage(tr("Could not write %1").arg(path));
+  });
+
+  QMenu* view = menuBar()->addMenu(tr("&View"));
+  QAction* labels = view->addAction(tr("Show &labels"));
+  labels->setCheckable(true);
+  labels->setChecked(true);
+  connect(labels, &QAction::toggled, view_, &ActionView::set_labels_visible);
+  QAction* cursors = view->addAction(tr("Plot &cursors (click A, right click B)"));
+  cursors->setCheckable(true);
+  cursors->setChecked(true);
+  connect(cursors, &QAction::toggled, this, [this](bool on) {
+    for (PlotPanel* p : plots_->panels()) p->set_cursors_enabled(on);
+  });
+  QAction* follow = view->addAction(tr("Plots &follow the time"));
+  follow->setCheckable(true);
+  follow->setChecked(true);
+  connect(follow, &QAction::toggled, plots_, &PlotStack::set_following);
+  connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
+  view->addAction(tr("&Fit the action"), this, [this] {
+    view_->reset_view();
+    if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
+  });
+}
+
+void MainWindow::build_shortcuts() {
+  auto shortcut = [this](const QKeySequence& keys, auto slot) {
+    auto* s = new QShortcut(keys, this);
+    connect(s, &QShortcut::activated, this, slot);
+  };
+  shortcut(QKeySequence(Qt::Key_Space),
+           [this] { controller_->strike(run_controls_->blow_spec()); });
+  for (int level = 1; level <= 5; ++level) {
+    shortcut(QKeySequence(Qt::Key_0 + level), [this, level] {
+      run_controls_->set_blow_level(level);
+      controller_->strike(run_controls_->blow_spec(level));
+    });
+  }
+  shortcut(QKeySequence(Qt::Key_P), [this] {
+    if (controller_->playing())
+      controller_->pause();
+    else
+      controller_->play();
+  });
+  shortcut(QKeySequence(Qt::Key_Right), [this] { controller_->step_forward(); });
+  shortcut(QKeySequence(Qt::Key_Left), [this] { controller_->step_back(); });
+  shortcut(QKeySequence(Qt::Key_Home), [this] { controller_->rewind(); });
+}
+
+void MainWindow::open_action(const std::string& name_or_path) {
+  auto model = std::make_shared<const ActionModel>(load_action(name_or_path));
+  action_name_ = name_or_path;
+  model_ = model;
+  grand_action_->setChecked(model->kind == "grand");
+  upright_action_->setChecked(model->kind == "upright");
+  regulation_->set_model(*model);
+  regulation_->clear_log();
+  // the whole panel visible without a horizontal scroll bar
+  regulation_scroll_->setMinimumWidth(regulation_->sizeHint().width() + 24);
+  plots_->set_model(*model);
+  view_->reset_view();
+  setWindowTitle(tr("Piano Action Trainer — %1").arg(QString::fromStdString(model->name)));
+  QSettings().setValue("last_preset", QString::fromStdString(name_or_path));
+  start(run_controls_->input_form()->spec());
+  measure_current_model();
+}
+
+void MainWindow::start(const std::string& spec) {
+  if (!model_) return;
+  run_controls_->input_form()->set_spec(spec);  // the form shows what runs
+  controller_->restart(model_, spec);
+  controller_->play();
+  statusBar()->showMessage(tr("Running %1 with %2")
+                               .arg(QString::fromStdString(model_->name))
+                               .arg(spec.empty() ? tr("no finger") : QString::fromStdString(spec)));
+}
+
+void MainWindow::set_adjuster(const std::string& name, double mm) {
+  if (!model_) return;
+  try {
+    change_model(std::make_shared<const ActionModel>(with_adjuster(*model_, name, mm * 1e-3)));
+  } catch (const std::exception& e) {
+    statusBar()->showMessage(QString::fromStdString(e.what()));
+  }
+}
+
+void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
+  model_ = std::move(model);
+  controller_->change_model(model_);
+  measure_current_model();
+}
+
+void MainWindow::measure_current_model() {
+  for (const auto& row : regulation_->rows()) row->set_measuring();
+  measurements_->request(model_);
+}
+
+void MainWindow::regulate_automatically() {
+  if (!model_ || regulation_runner_->running()) return;
+  regulation_->log(tr("Regulating %1 from the current adjuster positions…")
+                       .arg(QString::fromStdString(model_->name)));
+  regulate_button_->setText(tr("Cancel regulation"));
+  regulation_runner_->start(model_);
+}
+
+void MainWindow::run_deregulation_demo() {
+  if (!model_ || deregulation_runner_->running()) return;
+  DeregulationOptions options;
+  options.setting = "hammer_blow";
+  options.rate_mm_per_s = 1.0;
+  options.frequency_hz = 3.0;
+  options.duration_s = 10.0;
+  options.step_interval_s = 0.5;
+  regulation_->log(tr("Deregulation demo: hammer_blow +%1 mm/s, key at %2 Hz…")
+                       .arg(options.rate_mm_per_s)
+                       .arg(options.frequency_hz));
+  progress_->setValue(0);
+  progress_->show();
+  deregulate_button_->setText(tr("Cancel the deregulation demo"));
+  deregulation_runner_->start(model_, options);
+}
+
+void MainWindow::save_preset(const std::string& path) {
+  write_preset(*model_, path);
+}
+
+void MainWindow::save_preset_from_menu() {
+  if (!model_) return;
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save current state as preset"), {},
+                                                    tr("Action presets (*.json)"));
+  if (path.isEmpty()) return;
+  try {
+    save_preset(path.toStdString());
+    statusBar()->showMessage(tr("Preset written to %1").arg(path));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Cannot save the preset"), QString::fromStdString(e.what()));
+  }
+}
+
+QString MainWindow::banner_text() const {
+  return banner_->isVisible() ? banner_->text() : QString();
+}
+
+void MainWindow::show_banner(const QString& text) {
+  banner_->setText(text);
+  banner_->show();
+  statusBar()->showMessage(text);
+}
+
+void MainWindow::hide_banner() {
+  banner_->hide();
+  banner_->clear();
+}
+
+void MainWindow::open_preset_from_menu() {
+  const QString path = QFileDialog::getOpenFileName(this, tr("Open preset"),
+                                                    QString::fromStdString(preset_directory()),
+                                                    tr("Action presets (*.json);;All files (*)"));
+  if (path.isEmpty()) return;
+  try {
+    open_action(path.toStdString());
+  } catch (const std::exception& e) {
+    // from a menu: a dialog is fine; the running action stays as it was
+    QMessageBox::warning(this, tr("Cannot open the preset"), QString::fromStdString(e.what()));
+  }
+}
+
+void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QString& what) {
+  QSettings settings;
+  const QString folder = settings.value("export_folder").toString();
+  const QString path = QFileDialog::getSaveFileName(
+      this, tr("Export %1").arg(what), folder,
+      tr("PNG image (*.png);;PDF (*.pdf);;SVG (*.svg);;CSV of the visible range (*.csv)"));
+  if (path.isEmpty()) return;
+  try {
+    export_plots(plots, path, export_size_);
+    settings.setValue("export_folder", QFileInfo(path).absolutePath());
+    statusBar()->showMessage(tr("Exported %1 to %2").arg(what, path));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
+  }
+}
+
+void MainWindow::restore_settings() {
+  QSettings settings;
+  restoreGeometry(settings.value("window/geometry").toByteArray());
+  restoreState(settings.value("window/state").toByteArray());
+  export_size_ = settings.value("export/size", export_size_).toSize();
+  run_controls_->set_speed_index(settings.value("run/speed_index", 3).toInt());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+  QSettings settings;
+  settings.setValue("window/geometry", saveGeometry());
+  settings.setValue("window/state", saveState());
+  settings.setValue("export/size", export_size_);
+  settings.setValue("run/speed_index", run_controls_->speed_index());
+  QMainWindow::closeEvent(event);
+}
+
+}  // namespace pat::ui

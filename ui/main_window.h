@@ -1,0 +1,101 @@
+// The trainer window (DESIGN.md section 6): run controls on top, the animated action over the
+// live plots, the regulation panel at the side; menus for the action, presets, exports and the
+// view. A run that stops (unphysical contact, divergence) pauses and shows its cause in a
+// banner over the action, never in a dialog.
+#pragma once
+
+#include <QMainWindow>
+#include <QSize>
+#include <memory>
+#include <string>
+
+#include "model/action_model.h"
+
+class QAction;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QScrollArea;
+
+namespace pat::ui {
+
+class ActionView;
+class MeasurementService;
+class PlaybackController;
+class DeregulationRunner;
+class RegulationRunner;
+class PlotStack;
+class RegulationPanel;
+class RunControls;
+
+class MainWindow : public QMainWindow {
+  Q_OBJECT
+ public:
+  explicit MainWindow(QWidget* parent = nullptr);
+  ~MainWindow() override;
+
+  /// Loads an action ("grand", "upright" or a preset file) and starts it at rest with the
+  /// input of the run controls. Throws InputError (the caller shows it).
+  void open_action(const std::string& name_or_path);
+  /// Sets one adjuster of the running model (mm), as the slider does.
+  void set_adjuster(const std::string& name, double mm);
+  /// Replaces the running model at the next step boundary (keeps the run going).
+  void change_model(std::shared_ptr<const ActionModel> model);
+  /// Starts a new run from rest under `spec`.
+  void start(const std::string& spec);
+
+  std::shared_ptr<const ActionModel> model() const { return model_; }
+  PlaybackController* controller() const { return controller_; }
+  ActionView* view() const { return view_; }
+  PlotStack* plots() const { return plots_; }
+  RegulationPanel* regulation() const { return regulation_; }
+  RunControls* run_controls() const { return run_controls_; }
+  MeasurementService* measurements() const { return measurements_; }
+  RegulationRunner* regulation_runner() const { return regulation_runner_; }
+  /// Starts "Regulate automatically" (the button does the same).
+  void regulate_automatically();
+  /// The deregulation demo (paper section 7.2): the hammer-blow adjuster moved while the key
+  /// plays a 3 Hz sine, then replayed with the measured value over time in the log.
+  void run_deregulation_demo();
+  DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
+  /// Writes the current model (deregulated or not) as a preset. Throws InputError.
+  void save_preset(const std::string& path);
+  /// The message shown over the action (empty when hidden).
+  QString banner_text() const;
+  QSize export_size() const { return export_size_; }
+
+ protected:
+  void closeEvent(QCloseEvent* event) override;
+
+ private:
+  void build_menus();
+  void build_shortcuts();
+  void show_banner(const QString& text);
+  void hide_banner();
+  void open_preset_from_menu();
+  void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what);
+  void restore_settings();
+  void measure_current_model();
+  void save_preset_from_menu();
+
+  PlaybackController* controller_;
+  ActionView* view_;
+  PlotStack* plots_;
+  RegulationPanel* regulation_;
+  RunControls* run_controls_;
+  MeasurementService* measurements_;
+  RegulationRunner* regulation_runner_;
+  DeregulationRunner* deregulation_runner_;
+  QPushButton* deregulate_button_;
+  QProgressBar* progress_;
+  QPushButton* regulate_button_;
+  QLabel* banner_;
+  QScrollArea* regulation_scroll_;
+  QAction* grand_action_;
+  QAction* upright_action_;
+  std::shared_ptr<const ActionModel> model_;
+  std::string action_name_;
+  QSize export_size_{1600, 1000};
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,234 @@
+#include "playback_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pat::ui {
+namespace {
+
+constexpr int kRedrawIntervalMs = 16;  // at most about 60 redraws a second
+constexpr double kLeadWallS = 0.04;    // the worker computes this far ahead (wall seconds)
+
+}  // namespace
+
+PlaybackController::PlaybackController(QObject* parent)
+    : QObject(parent), worker_(new SimulationWorker) {
+  worker_->moveToThread(&thread_);
+  connect(&thread_, &QThread::finished, worker_, &QObject::deleteLater);
+  connect(worker_, &SimulationWorker::framesAvailable, this, &PlaybackController::drain,
+          Qt::QueuedConnection);
+  connect(worker_, &SimulationWorker::runStarted, this, &PlaybackController::on_run_started,
+          Qt::QueuedConnection);
+  connect(worker_, &SimulationWorker::runFailed, this, &PlaybackController::on_run_failed,
+          Qt::QueuedConnection);
+  connect(worker_, &SimulationWorker::runStopped, this, &PlaybackController::on_run_stopped,
+          Qt::QueuedConnection);
+  thread_.setObjectName("simulation");
+  thread_.start();
+  timer_.setInterval(kRedrawIntervalMs);
+  timer_.setTimerType(Qt::PreciseTimer);
+  connect(&timer_, &QTimer::timeout, this, &PlaybackController::tick);
+  wall_.start();
+  timer_.start();
+}
+
+PlaybackController::~PlaybackController() {
+  timer_.stop();
+  thread_.quit();
+  thread_.wait();
+}
+
+void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
+                                 const std::string& input_spec) {
+  model_ = std::move(model);
+  ++run_id_;
+  history_.clear();
+  stopped_ = false;
+  replay_ = false;
+  has_frame_ = false;
+  display_time_ = 0.0;
+  passed_time_ = -1.0;
+  worker_->take_frames();
+  worker_->set_sample_interval(sample_interval());
+  const RunSetup setup{model_, input_spec, run_id_};
+  QMetaObject::invokeMethod(
+      worker_, [w = worker_, setup] { w->start_run(setup); }, Qt::QueuedConnection);
+  emit runRestarted();
+}
+
+void PlaybackController::replay(std::vector<Frame> frames) {
+  pause();
+  ++run_id_;  // frames still coming from the worker's run are dropped
+  history_.clear();
+  for (Frame& f : frames) {
+    f.run = run_id_;
+    history_.append(std::move(f));
+  }
+  stopped_ = false;
+  replay_ = true;
+  passed_time_ = -1.0;
+  has_frame_ = false;
+  emit runRestarted();
+  if (history_.empty()) return;
+  model_ = history_.at(0).model;
+  show_time(history_.first_time());
+  play();
+}
+
+void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) {
+  if (replay_) return;  // a recorded analysis cannot change
+  model_ = model;
+  worker_->request_model(std::move(model));
+  // a paused run still shows the change: compute one frame further
+  if (!playing_ && !stopped_) step_forward();
+}
+
+void PlaybackController::strike(const std::string& force_spec) {
+  if (stopped_ || replay_) return;
+  seek(history_.last_time());
+  worker_->request_blow(force_spec);
+  play();
+}
+
+void PlaybackController::play_key(double angle_rad) {
+  if (stopped_ || replay_) return;
+  if (!playing_) {
+    seek(history_.last_time());
+    play();
+  }
+  // the key follows the mouse within 30 ms of wall time (shorter in simulated time when slowed)
+  const double transition = std::clamp(0.03 * speed_, 2e-3, 0.03);
+  worker_->request_key_angle(std::clamp(angle_rad, 0.0, full_dip_rad_), transition);
+}
+
+void PlaybackController::play() {
+  if (stopped_ || playing_) return;
+  playing_ = true;
+  last_tick_ns_ = wall_.nsecsElapsed();
+  emit playingChanged(true);
+}
+
+void PlaybackController::pause() {
+  if (!playing_) return;
+  playing_ = false;
+  if (!replay_) worker_->set_target_time(display_time_);
+  emit playingChanged(false);
+}
+
+void PlaybackController::step_forward() {
+  pause();
+  if (history_.empty()) return;
+  const std::size_t i = history_.index_at(display_time_);
+  if (i + 1 < history_.size()) {
+    show_time(history_.at(i + 1).t);
+  } else if (!stopped_ && !replay_) {
+    // the next frame is computed; drain() shows it when it arrives
+    display_time_ = history_.last_time() + sample_interval();
+    worker_->set_target_time(display_time_);
+  }
+}
+
+void PlaybackController::step_back() {
+  pause();
+  if (history_.empty()) return;
+  const std::size_t i = history_.index_at(display_time_);
+  show_time(history_.at(i > 0 ? i - 1 : 0).t);
+}
+
+void PlaybackController::rewind() {
+  pause();
+  if (!history_.empty()) show_time(history_.first_time());
+}
+
+void PlaybackController::seek(double t) {
+  if (history_.empty()) return;
+  show_time(std::clamp(t, history_.first_time(), history_.last_time()));
+}
+
+void PlaybackController::set_speed(double speed) {
+  speed_ = std::clamp(speed, 1e-3, 1.0);
+  worker_->set_sample_interval(sample_interval());
+}
+
+double PlaybackController::sample_interval() const {
+  // about four frames per redraw, from one integrator step (1e-5 s) up to 0.2 ms
+  return std::clamp(speed_ / 240.0, 1e-5, 2e-4);
+}
+
+void PlaybackController::drain() {
+  std::vector<Frame> frames = worker_->take_frames();
+  for (Frame& f : frames)
+    if (f.run == run_id_) history_.append(std::move(f));
+  // a single step waiting for its frame
+  if (!playing_ && !history_.empty() && display_time_ > current_.t &&
+      history_.last_time() >= display_time_ - 1e-12)
+    show_time(display_time_);
+}
+
+void PlaybackController::tick() {
+  drain();
+  const qint64 now = wall_.nsecsElapsed();
+  const double wall_dt = (now - last_tick_ns_) * 1e-9;
+  last_tick_ns_ = now;
+  if (!playing_ || history_.empty()) return;
+
+  const double before = display_time_;
+  const double wanted = display_time_ + wall_dt * speed_;
+  if (!replay_) worker_->set_target_time(wanted + kLeadWallS * speed_);
+  show_time(std::min(wanted, history_.last_time()));
+  if (replay_ && display_time_ >= history_.last_time()) pause();
+
+  factor_window_sim_ += display_time_ - before;
+  factor_window_wall_ += wall_dt;
+  ++redraws_in_window_;
+  if (factor_window_wall_ >= 0.5) {
+    achieved_factor_ = factor_window_sim_ / factor_window_wall_;
+    redraw_rate_hz_ = redraws_in_window_ / factor_window_wall_;
+    factor_window_sim_ = factor_window_wall_ = 0.0;
+    redraws_in_window_ = 0;
+    emit realtimeFactorChanged(achieved_factor_);
+  }
+}
+
+void PlaybackController::show_time(double t) {
+  display_time_ = t;
+  current_ = history_.interpolated(t);
+  has_frame_ = true;
+  // frames between the last shown time and now go to the plots, in order
+  if (t > passed_time_) {
+    std::vector<Frame> passed;
+    for (std::size_t i = passed_time_ < 0.0 ? 0 : history_.index_at(passed_time_) + 1;
+         i < history_.size() && history_.at(i).t <= t; ++i)
+      passed.push_back(history_.at(i));
+    if (!passed.empty()) {
+      passed_time_ = passed.back().t;
+      emit framesPassed(passed);
+    }
+  }
+  emit frameShown(current_);
+}
+
+void PlaybackController::on_run_started(int run_id, double full_dip_rad) {
+  if (run_id != run_id_) return;
+  full_dip_rad_ = full_dip_rad;
+  drain();
+  if (!history_.empty()) show_time(history_.first_time());
+}
+
+void PlaybackController::on_run_failed(int run_id, const QString& message) {
+  if (run_id != run_id_) return;
+  stopped_ = true;
+  pause();
+  emit runStopped(message);
+}
+
+void PlaybackController::on_run_stopped(int run_id, const QString& cause) {
+  if (run_id != run_id_) return;
+  drain();
+  stopped_ = true;
+  pause();
+  if (!history_.empty()) show_time(history_.last_time());
+  emit runStopped(cause);
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,113 @@
+// Playback of a simulation run in the window: owns the worker thread, keeps the history of
+// frames, and moves the displayed time with the wall clock times the playback speed (real time
+// down to 1/1000). The worker is asked to compute a little ahead of the displayed time; when it
+// cannot keep up, the display waits and the achieved real-time factor says so. A redraw timer
+// drains the worker's frames at most 60 times a second.
+#pragma once
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QThread>
+#include <QTimer>
+#include <memory>
+
+#include "frame_history.h"
+#include "simulation_worker.h"
+
+namespace pat::ui {
+
+class PlaybackController : public QObject {
+  Q_OBJECT
+ public:
+  explicit PlaybackController(QObject* parent = nullptr);
+  ~PlaybackController() override;
+
+  /// Starts a new run of `model` under `input_spec` ("" = no finger) from rest at t = 0.
+  void restart(std::shared_ptr<const ActionModel> model, const std::string& input_spec);
+  /// Plays recorded frames (an analysis result such as the deregulation demo) instead of a
+  /// live run; playback stops at the last frame.
+  void replay(std::vector<Frame> frames);
+  bool replaying() const { return replay_; }
+  /// Replaces the running model at the next step boundary (a slider moved).
+  void change_model(std::shared_ptr<const ActionModel> model);
+  /// A blow (force SPEC) struck now; starts playing.
+  void strike(const std::string& force_spec);
+  /// The key played with the mouse: key angle (rad from rest, positive down), kept between
+  /// rest and full dip; starts playing.
+  void play_key(double angle_rad);
+  /// Key angle at full dip (rad) of the current run.
+  double full_dip_rad() const { return full_dip_rad_; }
+
+  void play();
+  void pause();
+  /// Paused: one frame forward (computed if needed) or back.
+  void step_forward();
+  void step_back();
+  /// Paused, at the oldest frame kept.
+  void rewind();
+  /// Displayed time (within the history), paused.
+  void seek(double t);
+  /// Playback speed, simulated seconds per wall second (1 = real time, 0.001 = 1/1000).
+  void set_speed(double speed);
+
+  bool playing() const { return playing_; }
+  double speed() const { return speed_; }
+  double display_time() const { return display_time_; }
+  double achieved_realtime_factor() const { return achieved_factor_; }
+  const FrameHistory& history() const { return history_; }
+  std::shared_ptr<const ActionModel> model() const { return model_; }
+  /// The frame shown now (interpolated between recorded frames in slow motion).
+  const Frame& current_frame() const { return current_; }
+  bool has_frame() const { return has_frame_; }
+  bool run_stopped() const { return stopped_; }
+  /// Redraw timer ticks that showed a new frame, and their count per wall second (measured).
+  double redraw_rate_hz() const { return redraw_rate_hz_; }
+
+ signals:
+  /// A new frame is shown (at most once per redraw tick).
+  void frameShown(const pat::ui::Frame& frame);
+  /// New frames reached the display (in time order): the plots append them.
+  void framesPassed(const std::vector<pat::ui::Frame>& frames);
+  void playingChanged(bool playing);
+  void runRestarted();
+  /// The run stopped by itself or could not start; the message says why.
+  void runStopped(const QString& message);
+  void realtimeFactorChanged(double factor);
+
+ private slots:
+  void tick();
+  void on_run_started(int run_id, double full_dip_rad);
+  void on_run_failed(int run_id, const QString& message);
+  void on_run_stopped(int run_id, const QString& cause);
+
+ private:
+  void drain();
+  void show_time(double t);
+  double sample_interval() const;
+
+  QThread thread_;
+  SimulationWorker* worker_;  // lives in thread_, deleted when it finishes
+  QTimer timer_;
+  QElapsedTimer wall_;
+  qint64 last_tick_ns_ = 0;
+
+  FrameHistory history_;
+  std::shared_ptr<const ActionModel> model_;
+  int run_id_ = 0;
+  double full_dip_rad_ = 0.0;
+  bool playing_ = false;
+  bool stopped_ = false;
+  bool replay_ = false;  // frames from an analysis: no worker behind them
+  double speed_ = 0.1;
+  double display_time_ = 0.0;
+  double passed_time_ = -1.0;  // frames up to here went to framesPassed
+  Frame current_;
+  bool has_frame_ = false;
+  // achieved real-time factor and redraw rate, averaged over about half a second
+  double factor_window_sim_ = 0.0, factor_window_wall_ = 0.0;
+  double achieved_factor_ = 0.0;
+  int redraws_in_window_ = 0;
+  double redraw_rate_hz_ = 0.0;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,119 @@
+#include "plot_export.h"
+
+#include <QFileInfo>
+#include <QImage>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QSvgGenerator>
+#include <cmath>
+#include <map>
+
+#include "core/error.h"
+#include "io/csv.h"
+#include "plot_panel.h"
+
+namespace pat::ui {
+namespace {
+
+std::vector<std::pair<PlotPanel*, QRect>> stacked(const std::vector<PlotPanel*>& plots,
+                                                  QSize size) {
+  std::vector<std::pair<PlotPanel*, QRect>> out;
+  const int n = static_cast<int>(plots.size());
+  for (int i = 0; i < n; ++i) {
+    const int top = size.height() * i / n, bottom = size.height() * (i + 1) / n;
+    out.push_back({plots[i], QRect(0, top, size.width(), bottom - top)});
+  }
+  return out;
+}
+
+// one table: the time column, then every plot's series; rows at the first plot's times where
+// every series has a value
+CsvTable merged_table(const std::vector<PlotPanel*>& plots) {
+  CsvTable merged;
+  merged.columns.push_back("time_s");
+  std::map<double, std::vector<double>> rows;
+  std::size_t width = 0;
+  for (std::size_t p = 0; p < plots.size(); ++p) {
+    const CsvTable table = plots[p]->visible_table();
+    for (std::size_t c = 1; c < table.columns.size(); ++c)
+      merged.columns.push_back(table.columns[c]);
+    for (const auto& row : table.rows) {
+      if (p > 0 && !rows.count(row[0])) continue;
+      auto& values = rows[row[0]];
+      if (values.size() != width) continue;  // missing in an earlier plot
+      values.insert(values.end(), row.begin() + 1, row.end());
+    }
+    width += table.columns.size() - 1;
+  }
+  for (auto& [t, values] : rows) {
+    if (values.size() != width) continue;
+    std::vector<double> row{t};
+    row.insert(row.end(), values.begin(), values.end());
+    merged.rows.push_back(std::move(row));
+  }
+  if (!merged.rows.empty()) {
+    merged.metadata["range_s"] =
+        std::to_string(merged.rows.front()[0]) + " to " + std::to_string(merged.rows.back()[0]);
+  }
+  merged.metadata["exported_by"] = "pianoaction (visible time range of the plots)";
+  return merged;
+}
+
+[[noreturn]] void fail(const QString& path, const std::string& problem) {
+  throw InputError(located_message(path.toStdString(), "", problem));
+}
+
+}  // namespace
+
+ExportFormat export_format(const QString& path) {
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (suffix == "png") return ExportFormat::Png;
+  if (suffix == "pdf") return ExportFormat::Pdf;
+  if (suffix == "svg") return ExportFormat::Svg;
+  if (suffix == "csv") return ExportFormat::Csv;
+  fail(path, "unknown plot format '." + suffix.toStdString() + "' (use .png, .pdf, .svg or .csv)");
+}
+
+void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size) {
+  if (plots.empty()) fail(path, "there is no plot to export");
+  if (size.width() < 50 || size.height() < 50 || size.width() > 20000 || size.height() > 20000)
+    fail(path, "export size must be between 50 and 20000 pixels a side");
+  const ExportFormat format = export_format(path);
+  const QFileInfo dir(QFileInfo(path).absolutePath());
+  if (!dir.isDir() || !dir.isWritable()) fail(path, "the folder does not exist or is read-only");
+
+  switch (format) {
+    case ExportFormat::Png: {
+      QImage image(size, QImage::Format_ARGB32_Premultiplied);
+      image.fill(Qt::white);
+      PlotPanel::render(image, stacked(plots, size));
+      if (!image.save(path, "PNG")) fail(path, "could not write the PNG file");
+      break;
+    }
+    case ExportFormat::Pdf: {
+      QPdfWriter writer(path);
+      writer.setResolution(72);
+      writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
+      writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+      writer.setCreator("pianoaction");
+      PlotPanel::render(writer, stacked(plots, size));
+      if (!QFileInfo(path).exists()) fail(path, "could not write the PDF file");
+      break;
+    }
+    case ExportFormat::Svg: {
+      QSvgGenerator generator;
+      generator.setFileName(path);
+      generator.setSize(size);
+      generator.setViewBox(QRect(QPoint(0, 0), size));
+      generator.setTitle("Piano Action Trainer plots");
+      PlotPanel::render(generator, stacked(plots, size));
+      if (!QFileInfo(path).exists()) fail(path, "could not write the SVG file");
+      break;
+    }
+    case ExportFormat::Csv:
+      write_csv(path.toStdString(), merged_table(plots));
+      break;
+  }
+}
+
+}  // namespace pat::ui

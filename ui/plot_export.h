@@ -1,0 +1,25 @@
+// Export of one plot or several (stacked top to bottom on one page or image): PNG at a chosen
+// pixel size, PDF and SVG as vector graphics of that size, CSV of the time range shown. The
+// format comes from the file extension. Used by the window and by `--plot` on the command line.
+#pragma once
+
+#include <QSize>
+#include <QString>
+#include <vector>
+
+namespace pat::ui {
+
+class PlotPanel;
+
+enum class ExportFormat { Png, Pdf, Svg, Csv };
+
+/// The format of a file name's extension (.png .pdf .svg .csv, any case). Throws InputError
+/// naming the file for any other extension.
+ExportFormat export_format(const QString& path);
+
+/// Writes `plots` to `path` (format from the extension). `size` is the whole export in pixels
+/// (points for PDF); the plots share its height. Throws InputError naming the file when it
+/// cannot be written.
+void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size);
+
+}  // namespace pat::ui

@@ -1,0 +1,274 @@
+#include "plot_panel.h"
+
+#include <qcustomplot.h>
+
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+
+namespace pat::ui {
+namespace {
+
+const QColor kCursorColours[2] = {QColor(0, 120, 0), QColor(160, 0, 160)};
+const char* kCursorNames[2] = {"A", "B"};
+
+// the unit at the end of an axis title or column name ("gap (mm)" → "mm", "x_force_n" → "n")
+QString unit_of(const QString& column) {
+  const int underscore = column.lastIndexOf('_');
+  if (underscore < 0) return {};
+  const QString unit = column.mid(underscore + 1);
+  if (unit == "n") return "N";
+  return unit;
+}
+
+}  // namespace
+
+PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* parent)
+    : QWidget(parent), title_(title), y_title_(y_title), plot_(new QCustomPlot(this)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  layout->addWidget(plot_);
+  setMinimumHeight(120);
+
+  QFont axis_font = font();
+  axis_font.setPointSizeF(std::max(9.0, axis_font.pointSizeF()));
+  QFont label_font = axis_font;
+  label_font.setBold(true);
+  // title above; the legend inside the plot, top right, over headroom left by fit_values()
+  plot_->plotLayout()->insertRow(0);
+  plot_->plotLayout()->addElement(0, 0, new QCPTextElement(plot_, title, label_font));
+  QFont legend_font = axis_font;
+  legend_font.setPointSizeF(axis_font.pointSizeF() - 0.5);
+  plot_->legend->setVisible(true);
+  plot_->legend->setFont(legend_font);
+  plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
+  plot_->legend->setBrush(QColor(255, 255, 255, 210));
+  plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+  plot_->legend->setRowSpacing(0);
+  plot_->legend->setColumnSpacing(6);
+  plot_->legend->setIconSize(16, 8);
+  plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignRight | Qt::AlignTop);
+  plot_->xAxis->setLabel(tr("time (s)"));
+  plot_->yAxis->setLabel(y_title);
+  for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) {
+    axis->setLabelFont(label_font);
+    axis->setTickLabelFont(axis_font);
+  }
+  plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+  plot_->axisRect()->setRangeDrag(Qt::Horizontal);
+  plot_->axisRect()->setRangeZoom(Qt::Horizontal);
+  plot_->setNoAntialiasingOnDrag(true);
+
+  for (int i = 0; i < 2; ++i) {
+    cursor_lines_[i] = new QCPItemStraightLine(plot_);
+    cursor_lines_[i]->setPen(QPen(kCursorColours[i], 1.5, Qt::DashLine));
+    cursor_lines_[i]->setVisible(false);
+  }
+  readout_ = new QCPItemText(plot_);
+  readout_->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+  readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
+  readout_->position->setCoords(0.01, 0.02);
+  readout_->setFont(axis_font);
+  readout_->setBrush(QColor(255, 255, 255, 220));
+  readout_->setPadding(QMargins(4, 2, 4, 2));
+  readout_->setTextAlignment(Qt::AlignLeft);
+  readout_->setVisible(false);
+
+  connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+          [this](const QCPRange& range) {
+            if (!setting_range_) emit userChangedTimeRange(range.lower, range.upper);
+          });
+  connect(plot_, &QCustomPlot::mousePress, this,
+          [this](QMouseEvent* event) { press_position_ = event->pos(); });
+  connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent* event) {
+    // a click (not a drag) places a cursor: left A, right B
+    if (!cursors_enabled_ || (event->pos() - press_position_).manhattanLength() > 3) return;
+    const int which = event->button() == Qt::RightButton ? 1 : 0;
+    set_cursor(which, plot_->xAxis->pixelToCoord(event->pos().x()));
+  });
+}
+
+PlotPanel::~PlotPanel() = default;
+
+int PlotPanel::add_series(const QString& label, const QString& column, const QColor& colour) {
+  QCPGraph* graph = plot_->addGraph();
+  graph->setName(label);
+  graph->setPen(QPen(colour, 2.0));
+  graph->setAdaptiveSampling(true);
+  series_.push_back({graph, label, column});
+  // many series: the legend wraps into rows of three
+  plot_->legend->setWrap(series_count() > 4 ? 3 : 0);
+  plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // re-arranged with the wrap
+  return series_count() - 1;
+}
+
+QString PlotPanel::series_label(int series) const {
+  return series_[series].label;
+}
+
+void PlotPanel::append(int series, double t, double value) {
+  series_[series].graph->addData(t, value);
+}
+
+void PlotPanel::set_data(int series, const std::vector<double>& t,
+                         const std::vector<double>& values) {
+  series_[series].graph->setData(QVector<double>(t.begin(), t.end()),
+                                 QVector<double>(values.begin(), values.end()), true);
+}
+
+void PlotPanel::clear_data() {
+  for (Series& s : series_) s.graph->data()->clear();
+  for (auto& c : cursors_) c.reset();
+  update_cursor_items();
+}
+
+void PlotPanel::remove_before(double t) {
+  for (Series& s : series_) s.graph->data()->removeBefore(t);
+}
+
+std::size_t PlotPanel::point_count(int series) const {
+  return static_cast<std::size_t>(series_[series].graph->data()->size());
+}
+
+void PlotPanel::set_x_range(double lo, double hi) {
+  setting_range_ = true;
+  plot_->xAxis->setRange(lo, hi);
+  setting_range_ = false;
+}
+
+std::pair<double, double> PlotPanel::x_range() const {
+  return {plot_->xAxis->range().lower, plot_->xAxis->range().upper};
+}
+
+void PlotPanel::fit_values() {
+  bool first = true;
+  for (Series& s : series_) {
+    bool found = false;
+    s.graph->getValueRange(found, QCP::sdBoth, plot_->xAxis->range());
+    if (!found) continue;
+    s.graph->rescaleValueAxis(!first, true);
+    first = false;
+  }
+  // a flat line gets a visible band around it
+  QCPRange range = plot_->yAxis->range();
+  if (range.size() < 1e-9) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
+  // headroom at the top for the legend
+  const int legend_rows = (series_count() + 2) / 3;
+  const double pad = 0.08 * range.size();
+  plot_->yAxis->setRange(range.lower - pad, range.upper + pad + 0.3 * legend_rows * range.size());
+}
+
+void PlotPanel::fit_all() {
+  setting_range_ = true;
+  plot_->rescaleAxes();
+  setting_range_ = false;
+  fit_values();
+}
+
+void PlotPanel::request_replot() {
+  plot_->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotPanel::set_cursors_enabled(bool enabled) {
+  cursors_enabled_ = enabled;
+  update_cursor_items();
+  request_replot();
+}
+
+void PlotPanel::set_cursor(int which, double t) {
+  cursors_[which] = t;
+  update_cursor_items();
+  request_replot();
+}
+
+std::optional<double> PlotPanel::cursor(int which) const {
+  return cursors_[which];
+}
+
+std::optional<double> PlotPanel::value_at(int series, double t) const {
+  const auto data = series_[series].graph->data();
+  if (data->isEmpty() || t < data->constBegin()->key || t > (data->constEnd() - 1)->key)
+    return std::nullopt;
+  auto after = data->findBegin(t, false);
+  if (after == data->constEnd()) return (data->constEnd() - 1)->value;
+  if (after->key <= t || after == data->constBegin()) return after->value;
+  const auto before = after - 1;
+  const double w = (t - before->key) / (after->key - before->key);
+  return before->value + w * (after->value - before->value);
+}
+
+QString PlotPanel::cursor_readout() const {
+  if (!cursors_[0] || !cursors_[1]) return {};
+  const double a = *cursors_[0], b = *cursors_[1];
+  QStringList lines;
+  lines << tr("A %1 ms  B %2 ms  Δt = %3 ms")
+               .arg(a * 1e3, 0, 'f', 2)
+               .arg(b * 1e3, 0, 'f', 2)
+               .arg((b - a) * 1e3, 0, 'f', 2);
+  for (int s = 0; s < series_count(); ++s) {
+    const auto va = value_at(s, a), vb = value_at(s, b);
+    if (!va || !vb) continue;
+    lines << tr("Δ %1 = %2 %3")
+                 .arg(series_[s].label)
+                 .arg(*vb - *va, 0, 'g', 4)
+                 .arg(unit_of(series_[s].column));
+  }
+  return lines.join('\n');
+}
+
+void PlotPanel::update_cursor_items() {
+  for (int i = 0; i < 2; ++i) {
+    const bool shown = cursors_enabled_ && cursors_[i].has_value();
+    cursor_lines_[i]->setVisible(shown);
+    if (shown) {
+      cursor_lines_[i]->point1->setCoords(*cursors_[i], 0.0);
+      cursor_lines_[i]->point2->setCoords(*cursors_[i], 1.0);
+    }
+  }
+  QString text = cursors_enabled_ ? cursor_readout() : QString();
+  if (text.isEmpty() && cursors_enabled_ && (cursors_[0] || cursors_[1])) {
+    const int which = cursors_[0] ? 0 : 1;
+    text = tr("%1 at %2 ms (click: A, right click: B)")
+               .arg(kCursorNames[which])
+               .arg(*cursors_[which] * 1e3, 0, 'f', 2);
+  }
+  readout_->setText(text);
+  readout_->setVisible(!text.isEmpty());
+}
+
+void PlotPanel::render(QPaintDevice& device,
+                       const std::vector<std::pair<PlotPanel*, QRect>>& plots) {
+  QCPPainter painter(&device);
+  painter.setRenderHint(QPainter::Antialiasing);
+  painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
+  for (const auto& [panel, rect] : plots) {
+    panel->update_cursor_items();
+    painter.save();
+    painter.translate(rect.topLeft());
+    panel->plot_->toPainter(&painter, rect.width(), rect.height());
+    painter.restore();
+  }
+}
+
+CsvTable PlotPanel::visible_table() const {
+  CsvTable table;
+  table.columns.push_back("time_s");
+  for (const Series& s : series_) table.columns.push_back(s.column.toStdString());
+  if (series_.empty()) return table;
+  const QCPRange range = plot_->xAxis->range();
+  const auto base = series_.front().graph->data();
+  for (auto it = base->findBegin(range.lower, false); it != base->constEnd(); ++it) {
+    if (it->key > range.upper) break;
+    std::vector<double> row{it->key};
+    for (int s = 0; s < series_count(); ++s) {
+      const auto v = value_at(s, it->key);
+      if (!v) break;
+      row.push_back(*v);
+    }
+    // rows where a series has no value are left out (every value written is a sample)
+    if (row.size() == table.columns.size()) table.rows.push_back(std::move(row));
+  }
+  return table;
+}
+
+}  // namespace pat::ui

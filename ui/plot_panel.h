@@ -1,0 +1,93 @@
+// One plot of time series, the only class that includes <qcustomplot.h> (DESIGN.md section 1:
+// a move to another plotting library touches this class only). Axis titles carry units; two
+// cursors (A: left click, B: right click) show Δt and Δvalue of every series; wheel zooms,
+// left drag pans. Plots render onto any paint device for export (plot_export.h).
+#pragma once
+
+#include <QColor>
+#include <QRect>
+#include <QString>
+#include <QWidget>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "io/csv.h"
+
+class QCustomPlot;
+class QCPGraph;
+class QCPItemStraightLine;
+class QCPItemText;
+class QPaintDevice;
+
+namespace pat::ui {
+
+class PlotPanel : public QWidget {
+  Q_OBJECT
+ public:
+  /// `y_title` names the quantity with its unit, e.g. "gap (mm)".
+  PlotPanel(const QString& title, const QString& y_title, QWidget* parent = nullptr);
+  ~PlotPanel() override;
+
+  /// Adds a series; `column` is its CSV column name with the unit (e.g. hammer_angle_deg).
+  int add_series(const QString& label, const QString& column, const QColor& colour);
+  int series_count() const { return static_cast<int>(series_.size()); }
+  QString series_label(int series) const;
+  /// Appends one point (times in increasing order), t in s.
+  void append(int series, double t, double value);
+  void set_data(int series, const std::vector<double>& t, const std::vector<double>& values);
+  void clear_data();
+  /// Drops points older than t (keeps memory bounded in long runs).
+  void remove_before(double t);
+  std::size_t point_count(int series) const;
+
+  QString title() const { return title_; }
+  void set_x_range(double lo, double hi);
+  std::pair<double, double> x_range() const;
+  /// Fits the value axis to the data within the time range shown.
+  void fit_values();
+  /// Fits both axes to all data.
+  void fit_all();
+  /// Replots at the next event-loop turn (several calls coalesce into one).
+  void request_replot();
+
+  void set_cursors_enabled(bool enabled);
+  /// Places cursor 0 (A) or 1 (B) at time t.
+  void set_cursor(int which, double t);
+  std::optional<double> cursor(int which) const;
+  /// Value of a series at time t (linear interpolation), if t is within its data.
+  std::optional<double> value_at(int series, double t) const;
+  /// "Δt = … ms, Δ<series> = … <unit>" for the two cursors (empty without both).
+  QString cursor_readout() const;
+
+  /// Draws plots into `device`, each in its rectangle (pixels), with one painter (a PDF or
+  /// SVG device takes a single painter session).
+  static void render(QPaintDevice& device, const std::vector<std::pair<PlotPanel*, QRect>>& plots);
+  /// The series within the time range shown: time_s and one column per series (values taken
+  /// at each series' own sample times; series of one plot share them in this program).
+  CsvTable visible_table() const;
+
+ signals:
+  /// The user zoomed or panned the time axis (not emitted for set_x_range).
+  void userChangedTimeRange(double lo, double hi);
+
+ private:
+  void update_cursor_items();
+
+  QString title_;
+  QString y_title_;
+  QCustomPlot* plot_;
+  struct Series {
+    QCPGraph* graph;
+    QString label, column;
+  };
+  std::vector<Series> series_;
+  QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
+  QCPItemText* readout_ = nullptr;
+  std::optional<double> cursors_[2];
+  bool cursors_enabled_ = true;
+  bool setting_range_ = false;
+  QPoint press_position_;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,64 @@
+// The window's live plots: key and hammer angles, hammer–string gap, finger force, contact
+// forces. Frames are appended as the display passes them; the time axes move together and
+// follow the displayed time until the user zooms or pans one (Follow brings it back).
+#pragma once
+
+#include <QElapsedTimer>
+#include <QTimer>
+#include <QWidget>
+#include <memory>
+#include <vector>
+
+#include "frame.h"
+
+class QCheckBox;
+
+namespace pat::ui {
+
+class PlotPanel;
+
+class PlotStack : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PlotStack(QWidget* parent = nullptr);
+
+  /// Builds the series of a model's action (contacts differ between grand and upright).
+  void set_model(const ActionModel& model);
+  void clear();
+  /// Appends frames (in time order) and moves the time axes if following.
+  void append(const std::vector<Frame>& frames);
+  /// The displayed time (a rewind moves it back inside the plotted data).
+  void show_time(double t);
+  void set_following(bool follow);
+  bool following() const { return following_; }
+  /// Width of the followed time window, s.
+  void set_window(double seconds) { window_s_ = seconds; }
+
+  std::vector<PlotPanel*> panels() const;
+  PlotPanel* angles() const { return angles_; }
+  PlotPanel* gap() const { return gap_; }
+  PlotPanel* finger() const { return finger_; }
+  PlotPanel* contacts() const { return contacts_; }
+
+ signals:
+  void followingChanged(bool follow);
+
+ private:
+  void sync_time_range(PlotPanel* source, double lo, double hi);
+  void replot();
+
+  PlotPanel* angles_;
+  PlotPanel* gap_;
+  PlotPanel* finger_;
+  PlotPanel* contacts_;
+  int key_body_ = 0, hammer_body_ = 0;
+  std::vector<int> plotted_contacts_;  // contact index of each contact-force series
+  bool following_ = true;
+  double window_s_ = 0.25;
+  double latest_t_ = 0.0;
+  // replots at most about 30 times a second (the action view takes the full 60)
+  QElapsedTimer since_replot_;
+  QTimer deferred_replot_;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,107 @@
+#include "regulation_panel.h"
+
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace pat::ui {
+
+RegulationPanel::RegulationPanel(QWidget* parent) : QWidget(parent) {
+  auto* column = new QVBoxLayout(this);
+  column->setContentsMargins(6, 4, 6, 4);
+  title_ = new QLabel(this);
+  QFont heading = title_->font();
+  heading.setBold(true);
+  heading.setPointSizeF(heading.pointSizeF() + 1);
+  title_->setFont(heading);
+  column->addWidget(title_);
+  grid_host_ = new QWidget(this);
+  grid_ = new QGridLayout(grid_host_);
+  grid_->setContentsMargins(0, 0, 0, 0);
+  grid_->setHorizontalSpacing(6);
+  grid_->setColumnStretch(1, 1);
+  column->addWidget(grid_host_);
+  buttons_ = new QVBoxLayout;
+  column->addLayout(buttons_);
+  auto* reset = add_button(tr("Reset to regulated"),
+                           tr("Every adjuster back to its regulated position (0 mm)"));
+  connect(reset, &QPushButton::clicked, this, &RegulationPanel::resetRequested);
+  log_ = new QPlainTextEdit(this);
+  log_->setReadOnly(true);
+  log_->setMaximumBlockCount(500);
+  log_->setPlaceholderText(tr("Regulation steps and messages appear here."));
+  column->addWidget(log_, 1);
+}
+
+QPushButton* RegulationPanel::add_button(const QString& text, const QString& tip) {
+  auto* button = new QPushButton(text, this);
+  button->setToolTip(tip);
+  buttons_->addWidget(button);
+  return button;
+}
+
+void RegulationPanel::set_model(const ActionModel& model) {
+  rows_.clear();
+  // a fresh grid: the old row widgets go with their host
+  auto* old_host = grid_host_;
+  grid_host_ = new QWidget(this);
+  grid_ = new QGridLayout(grid_host_);
+  grid_->setContentsMargins(0, 0, 0, 0);
+  grid_->setHorizontalSpacing(6);
+  grid_->setColumnStretch(1, 1);
+  static_cast<QVBoxLayout*>(layout())->replaceWidget(old_host, grid_host_);
+  old_host->deleteLater();
+
+  title_->setText(tr("Regulation — %1").arg(QString::fromStdString(model.name)));
+  const QStringList headers{tr("setting"), tr("adjuster"), tr("position"), tr("measured"),
+                            tr("target")};
+  for (int c = 0; c < headers.size(); ++c) {
+    auto* label = new QLabel("<i>" + headers[c] + "</i>", grid_host_);
+    grid_->addWidget(label, 0, c);
+  }
+  // the technician's order when the model lists its settings, else the adjusters' order
+  std::vector<std::string> names;
+  for (const RegulationSetting& s : model.regulation) names.push_back(s.name);
+  for (const Adjuster& a : model.adjusters)
+    if (std::find(names.begin(), names.end(), a.name) == names.end()) names.push_back(a.name);
+  int row = 1;
+  for (const std::string& name : names) {
+    const int a = model.adjuster_index(name);
+    if (a < 0) continue;
+    const auto setting = std::find_if(model.regulation.begin(), model.regulation.end(),
+                                      [&](const RegulationSetting& s) { return s.name == name; });
+    auto r = std::make_unique<RegulationRow>(
+        model.adjusters[a], setting != model.regulation.end() ? &*setting : nullptr, grid_, row++,
+        grid_host_);
+    connect(r.get(), &RegulationRow::valueChanged, this,
+            [this, name](double mm) { emit adjusterChanged(name, mm); });
+    rows_.push_back(std::move(r));
+  }
+}
+
+void RegulationPanel::show_adjusters(const ActionModel& model) {
+  for (const auto& r : rows_) {
+    const int a = model.adjuster_index(r->name());
+    if (a >= 0) r->set_value_mm(model.adjusters[a].value * 1e3);
+  }
+}
+
+RegulationRow* RegulationPanel::row(const std::string& name) const {
+  for (const auto& r : rows_)
+    if (r->name() == name) return r.get();
+  return nullptr;
+}
+
+void RegulationPanel::log(const QString& line) {
+  log_->appendPlainText(line);
+}
+
+void RegulationPanel::clear_log() {
+  log_->clear();
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,51 @@
+// The regulation panel: one row per setting of the current action (its adjusters, in the
+// technician's order), "Reset to regulated", and a log of what the regulation did.
+#pragma once
+
+#include <QWidget>
+#include <memory>
+#include <vector>
+
+#include "model/action_model.h"
+#include "regulation_row.h"
+
+class QGridLayout;
+class QLabel;
+class QPlainTextEdit;
+class QPushButton;
+class QVBoxLayout;
+
+namespace pat::ui {
+
+class RegulationPanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit RegulationPanel(QWidget* parent = nullptr);
+
+  /// Rebuilds the rows for a model (a new action or preset).
+  void set_model(const ActionModel& model);
+  /// Moves the rows to a model's adjuster positions (no signals).
+  void show_adjusters(const ActionModel& model);
+  const std::vector<std::unique_ptr<RegulationRow>>& rows() const { return rows_; }
+  RegulationRow* row(const std::string& name) const;
+  /// Adds a line to the log under the rows (regulation steps, messages).
+  void log(const QString& line);
+  void clear_log();
+  /// A button under the rows (the window adds the regulation actions).
+  QPushButton* add_button(const QString& text, const QString& tip);
+
+ signals:
+  /// The user moved adjuster `name` to `mm`.
+  void adjusterChanged(const std::string& name, double mm);
+  void resetRequested();
+
+ private:
+  QGridLayout* grid_;
+  QWidget* grid_host_;
+  QVBoxLayout* buttons_;
+  QLabel* title_;
+  QPlainTextEdit* log_;
+  std::vector<std::unique_ptr<RegulationRow>> rows_;
+};
+
+}  // namespace pat::ui

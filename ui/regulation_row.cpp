@@ -1,0 +1,117 @@
+#include "regulation_row.h"
+
+#include <QDoubleSpinBox>
+#include <QGridLayout>
+#include <QLabel>
+#include <QSlider>
+#include <cmath>
+
+namespace pat::ui {
+namespace {
+
+constexpr double kSliderStepsPerMm = 100.0;  // 0.01 mm per slider step
+
+QString format_value(double value, const std::string& unit) {
+  if (unit == "fraction") return QString::number(value, 'f', 3);
+  return QString::number(value, 'f', 2) + " " + QString::fromStdString(unit);
+}
+
+}  // namespace
+
+RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* setting,
+                             QGridLayout* grid, int row, QWidget* parent)
+    : name_(adjuster.name) {
+  if (setting) setting_ = *setting;
+  const QString tip = QString::fromStdString(
+      adjuster.description + (setting ? "\nmeasured: " + setting->measurement : std::string()));
+  name_label_ = new QLabel(QString::fromStdString(adjuster.name), parent);
+  QFont bold = name_label_->font();
+  bold.setBold(true);
+  name_label_->setFont(bold);
+  name_label_->setToolTip(tip);
+
+  slider_ = new QSlider(Qt::Horizontal, parent);
+  slider_->setRange(static_cast<int>(std::round(adjuster.min * 1e3 * kSliderStepsPerMm)),
+                    static_cast<int>(std::round(adjuster.max * 1e3 * kSliderStepsPerMm)));
+  slider_->setToolTip(tip);
+  slider_->setMinimumWidth(70);
+  spin_ = new QDoubleSpinBox(parent);
+  spin_->setRange(adjuster.min * 1e3, adjuster.max * 1e3);
+  spin_->setDecimals(2);
+  spin_->setSingleStep(0.05);
+  spin_->setSuffix(" mm");
+  spin_->setToolTip(tip);
+  spin_->setKeyboardTracking(false);
+
+  measured_label_ = new QLabel(tr("—"), parent);
+  measured_label_->setMinimumWidth(72);
+  measured_label_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  measured_label_->setToolTip(tr("Measured the way a technician measures it"));
+  target_label_ = new QLabel(parent);
+  if (setting_)
+    target_label_->setText(tr("%1 ± %2")
+                               .arg(format_value(setting_->target, setting_->unit))
+                               .arg(setting_->tolerance, 0, 'g', 3));
+  else
+    target_label_->setText(tr("no target"));
+  target_label_->setToolTip(setting_ ? QString::fromStdString(setting_->source) : QString());
+
+  grid->addWidget(name_label_, row, 0);
+  grid->addWidget(slider_, row, 1);
+  grid->addWidget(spin_, row, 2);
+  grid->addWidget(measured_label_, row, 3);
+  grid->addWidget(target_label_, row, 4);
+  set_value_mm(adjuster.value * 1e3);
+
+  connect(slider_, &QSlider::valueChanged, this, [this](int steps) {
+    const double mm = steps / kSliderStepsPerMm;
+    const QSignalBlocker block(spin_);
+    spin_->setValue(mm);
+    emit valueChanged(mm);
+  });
+  connect(spin_, &QDoubleSpinBox::valueChanged, this, [this](double mm) {
+    const QSignalBlocker block(slider_);
+    slider_->setValue(static_cast<int>(std::round(mm * kSliderStepsPerMm)));
+    emit valueChanged(mm);
+  });
+}
+
+RegulationRow::~RegulationRow() = default;
+
+double RegulationRow::value_mm() const {
+  return spin_->value();
+}
+
+void RegulationRow::set_value_mm(double mm) {
+  const QSignalBlocker block_slider(slider_), block_spin(spin_);
+  spin_->setValue(mm);
+  slider_->setValue(static_cast<int>(std::round(mm * kSliderStepsPerMm)));
+}
+
+void RegulationRow::set_measured(double value) {
+  measured_ = value;
+  const std::string unit = setting_ ? setting_->unit : std::string("mm");
+  measured_label_->setText(format_value(value, unit));
+  const bool bad = out_of_tolerance();
+  measured_label_->setStyleSheet(
+      setting_ ? (bad ? "color: white; background: #c0392b; font-weight: bold; padding: 1px 3px;"
+                      : "color: white; background: #1e8449; font-weight: bold; padding: 1px 3px;")
+               : "");
+}
+
+void RegulationRow::set_measurement_failed(const QString& reason) {
+  measured_.reset();
+  measured_label_->setText(tr("cannot measure"));
+  measured_label_->setToolTip(reason);
+  measured_label_->setStyleSheet("color: #c0392b;");
+}
+
+void RegulationRow::set_measuring() {
+  measured_label_->setStyleSheet("color: #888888;");
+}
+
+bool RegulationRow::out_of_tolerance() const {
+  return setting_ && measured_ && std::abs(*measured_ - setting_->target) > setting_->tolerance;
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,59 @@
+// One regulation setting in the panel: the adjuster's slider and spin box (mm from its
+// regulated position, within its physical range; the sign convention in the tooltip), the
+// live measured value, and the target with its tolerance band (red when out of tolerance).
+#pragma once
+
+#include <QWidget>
+#include <optional>
+
+#include "model/action_model.h"
+
+class QDoubleSpinBox;
+class QGridLayout;
+class QLabel;
+class QSlider;
+
+namespace pat::ui {
+
+class RegulationRow : public QObject {
+  Q_OBJECT
+ public:
+  /// Adds the row's widgets (children of `parent`) to `grid` at `row`; `setting` may be null
+  /// (no target known).
+  RegulationRow(const Adjuster& adjuster, const RegulationSetting* setting, QGridLayout* grid,
+                int row, QWidget* parent);
+  ~RegulationRow() override;
+
+  const std::string& name() const { return name_; }
+  /// Adjuster position, mm.
+  double value_mm() const;
+  /// Moves slider and spin box without emitting valueChanged.
+  void set_value_mm(double mm);
+  /// The measured value (setting's unit); colours it against the tolerance band.
+  void set_measured(double value);
+  /// The measurement could not be taken: shows why.
+  void set_measurement_failed(const QString& reason);
+  /// A new measurement is being taken.
+  void set_measuring();
+  std::optional<double> measured() const { return measured_; }
+  bool out_of_tolerance() const;
+  QSlider* slider() const { return slider_; }
+  QDoubleSpinBox* spin_box() const { return spin_; }
+  QLabel* measured_label() const { return measured_label_; }
+
+ signals:
+  /// The user moved the adjuster (mm).
+  void valueChanged(double mm);
+
+ private:
+  std::string name_;
+  std::optional<RegulationSetting> setting_;
+  QLabel* name_label_;
+  QSlider* slider_;
+  QDoubleSpinBox* spin_;
+  QLabel* measured_label_;
+  QLabel* target_label_;
+  std::optional<double> measured_;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,58 @@
+#include "regulation_runner.h"
+
+#include <QMetaObject>
+#include <QtConcurrent/QtConcurrentRun>
+#include <exception>
+
+namespace pat::ui {
+
+RegulationRunner::RegulationRunner(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<std::shared_ptr<const pat::ActionModel>>();
+}
+
+RegulationRunner::~RegulationRunner() {
+  cancelled_.store(true);
+  future_.waitForFinished();
+}
+
+void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
+  if (running_) return;
+  running_ = true;
+  cancelled_.store(false);
+  future_ = QtConcurrent::run([this, model] {
+    RegulationOptions options;
+    options.on_step = [this](const RegulationStep& s) {
+      const QString line =
+          tr("pass %1  %2: adjuster %3 mm → measured %4 (target %5)%6")
+              .arg(s.pass)
+              .arg(QString::fromStdString(s.setting))
+              .arg(s.adjuster_mm, 0, 'f', 3)
+              .arg(s.measured, 0, 'f', 3)
+              .arg(s.target, 0, 'f', 3)
+              .arg(s.note.empty() ? QString() : " — " + QString::fromStdString(s.note));
+      QMetaObject::invokeMethod(this, [this, line] { emit stepDone(line); });
+      return !cancelled_.load();
+    };
+    std::shared_ptr<const ActionModel> result_model = model;
+    bool converged = false;
+    QString message;
+    try {
+      RegulationResult result = regulate(*model, options);
+      result_model = std::make_shared<const ActionModel>(std::move(result.model));
+      converged = result.converged;
+      message = cancelled_.load() ? tr("cancelled") : QString::fromStdString(result.message);
+      if (converged)
+        message = tr("converged in %1 passes (%2 s)")
+                      .arg(result.passes)
+                      .arg(result.wall_time_s, 0, 'f', 1);
+    } catch (const std::exception& e) {
+      message = QString::fromStdString(e.what());
+    }
+    QMetaObject::invokeMethod(this, [this, result_model, converged, message] {
+      running_ = false;
+      emit finished(result_model, converged, message);
+    });
+  });
+}
+
+}  // namespace pat::ui

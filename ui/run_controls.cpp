@@ -1,0 +1,139 @@
+#include "run_controls.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QStyle>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include "input_spec_form.h"
+#include "playback_controller.h"
+
+namespace pat::ui {
+namespace {
+
+struct BlowLevel {
+  const char* name;
+  double force_n;
+};
+// key-front forces from soft to very loud (DESIGN.md section 2, F2: ~2 N to ~50 N)
+const BlowLevel kBlows[] = {{"pp", 2}, {"p", 5}, {"mf", 12}, {"f", 25}, {"ff", 50}};
+constexpr int kBlowMs = 40;
+
+QToolButton* tool_button(QWidget* parent, QStyle::StandardPixmap icon, const QString& text,
+                         const QString& tip) {
+  auto* button = new QToolButton(parent);
+  button->setIcon(parent->style()->standardIcon(icon));
+  button->setText(text);
+  button->setToolTip(tip);
+  button->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+  return button;
+}
+
+}  // namespace
+
+const std::vector<double>& RunControls::speeds() {
+  static const std::vector<double> s{1.0, 0.5, 0.2, 0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001};
+  return s;
+}
+
+RunControls::RunControls(PlaybackController* controller, QWidget* parent)
+    : QWidget(parent), controller_(controller) {
+  auto* rows = new QVBoxLayout(this);
+  rows->setContentsMargins(4, 2, 4, 2);
+  rows->setSpacing(2);
+  auto* top = new QHBoxLayout;
+  auto* bottom = new QHBoxLayout;
+  rows->addLayout(top);
+  rows->addLayout(bottom);
+
+  input_ = new InputSpecForm(this);
+  top->addWidget(input_, 1);
+  auto* start = new QPushButton(tr("Start from rest"), this);
+  start->setToolTip(tr("A new run from the action at rest, driven by the chosen input"));
+  top->addWidget(start);
+  connect(start, &QPushButton::clicked, this, [this] { emit startRequested(input_->spec()); });
+
+  auto* rewind = tool_button(this, QStyle::SP_MediaSkipBackward, tr("Rewind"),
+                             tr("Back to the oldest frame kept (Home)"));
+  auto* back =
+      tool_button(this, QStyle::SP_MediaSeekBackward, tr("Step back"), tr("One frame back (Left)"));
+  play_ = tool_button(this, QStyle::SP_MediaPlay, tr("Play"), tr("Play or pause (P)"));
+  auto* step =
+      tool_button(this, QStyle::SP_MediaSeekForward, tr("Step"), tr("One frame forward (Right)"));
+  for (QToolButton* b : {rewind, back, play_, step}) bottom->addWidget(b);
+  connect(rewind, &QToolButton::clicked, controller_, &PlaybackController::rewind);
+  connect(back, &QToolButton::clicked, controller_, &PlaybackController::step_back);
+  connect(step, &QToolButton::clicked, controller_, &PlaybackController::step_forward);
+  connect(play_, &QToolButton::clicked, this, [this] {
+    if (controller_->playing())
+      controller_->pause();
+    else
+      controller_->play();
+  });
+  connect(controller_, &PlaybackController::playingChanged, this, &RunControls::update_play_button);
+
+  bottom->addSpacing(12);
+  bottom->addWidget(new QLabel(tr("Speed:"), this));
+  speed_ = new QComboBox(this);
+  for (double s : speeds())
+    speed_->addItem(s == 1.0 ? tr("real time") : tr("1/%1").arg(qRound(1.0 / s)), s);
+  speed_->setToolTip(tr("Playback speed: simulated time per wall-clock time"));
+  bottom->addWidget(speed_);
+  connect(speed_, &QComboBox::currentIndexChanged, this,
+          [this](int i) { controller_->set_speed(speeds()[i]); });
+  factor_ = new QLabel(this);
+  factor_->setMinimumWidth(110);
+  factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
+  bottom->addWidget(factor_);
+  connect(controller_, &PlaybackController::realtimeFactorChanged, this, [this](double f) {
+    factor_->setText(f >= 0.1 ? tr("achieved ×%1").arg(f, 0, 'f', 2)
+                              : tr("achieved 1/%1").arg(f > 0 ? qRound(1.0 / f) : 0));
+  });
+
+  bottom->addSpacing(12);
+  bottom->addWidget(new QLabel(tr("Blow (space, 1–5):"), this));
+  blow_ = new QComboBox(this);
+  for (const BlowLevel& b : kBlows) blow_->addItem(tr("%1  %2 N").arg(b.name).arg(b.force_n));
+  blow_->setToolTip(tr("Strength of the blow struck with the space bar: a %1 ms force pulse "
+                       "at the key front. Keys 1–5 strike pp to ff directly.")
+                        .arg(kBlowMs));
+  bottom->addWidget(blow_);
+  auto* strike = new QPushButton(tr("Strike"), this);
+  strike->setToolTip(tr("Strike the key now with the chosen blow (space)"));
+  connect(strike, &QPushButton::clicked, this, [this] { controller_->strike(blow_spec()); });
+  bottom->addWidget(strike);
+  bottom->addStretch(1);
+
+  set_blow_level(3);
+  set_speed_index(3);
+  update_play_button(false);
+}
+
+std::string RunControls::blow_spec(int level) const {
+  const int i = level >= 1 && level <= 5 ? level - 1 : blow_->currentIndex();
+  return "force:pulse:" + QString::number(kBlows[i].force_n).toStdString() + ":" +
+         std::to_string(kBlowMs);
+}
+
+void RunControls::set_blow_level(int level) {
+  blow_->setCurrentIndex(std::clamp(level, 1, 5) - 1);
+}
+
+void RunControls::set_speed_index(int index) {
+  speed_->setCurrentIndex(std::clamp(index, 0, speed_->count() - 1));
+  controller_->set_speed(speeds()[speed_->currentIndex()]);
+}
+
+int RunControls::speed_index() const {
+  return speed_->currentIndex();
+}
+
+void RunControls::update_play_button(bool playing) {
+  play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+  play_->setText(playing ? tr("Pause") : tr("Play"));
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,195 @@
+#include "simulation_worker.h"
+
+#include <QElapsedTimer>
+#include <QMetaObject>
+#include <exception>
+
+#include "live_key_input.h"
+#include "shifted_key_input.h"
+#include "sim/key_travel.h"
+
+namespace pat::ui {
+namespace {
+
+// wall time spent stepping before the worker yields to its event loop
+constexpr qint64 kChunkNs = 4'000'000;
+
+}  // namespace
+
+SimulationWorker::SimulationWorker() {
+  qRegisterMetaType<pat::ui::RunSetup>();
+}
+
+SimulationWorker::~SimulationWorker() = default;
+
+void SimulationWorker::set_target_time(double t) {
+  target_time_.store(t);
+  schedule_compute();
+}
+
+void SimulationWorker::set_sample_interval(double seconds) {
+  sample_interval_.store(seconds);
+}
+
+void SimulationWorker::request_model(std::shared_ptr<const ActionModel> model) {
+  std::lock_guard lock(pending_mutex_);
+  pending_model_ = std::move(model);
+  has_pending_.store(true);
+}
+
+void SimulationWorker::request_blow(const std::string& spec) {
+  {
+    std::lock_guard lock(pending_mutex_);
+    pending_blow_ = spec;
+    has_pending_.store(true);
+  }
+  schedule_compute();
+}
+
+void SimulationWorker::request_key_angle(double angle_rad, double transition_s) {
+  {
+    std::lock_guard lock(pending_mutex_);
+    pending_key_ = true;
+    pending_key_angle_ = angle_rad;
+    pending_key_transition_ = transition_s;
+    has_pending_.store(true);
+  }
+  schedule_compute();
+}
+
+std::vector<Frame> SimulationWorker::take_frames() {
+  std::lock_guard lock(frames_mutex_);
+  std::vector<Frame> out;
+  out.swap(frames_);
+  return out;
+}
+
+void SimulationWorker::schedule_compute() {
+  if (compute_scheduled_.exchange(true)) return;
+  QMetaObject::invokeMethod(this, &SimulationWorker::compute, Qt::QueuedConnection);
+}
+
+void SimulationWorker::start_run(const RunSetup& setup) {
+  run_id_ = setup.run_id;
+  sim_.reset();
+  live_key_.reset();
+  unreported_events_.clear();
+  {
+    std::lock_guard lock(pending_mutex_);
+    pending_model_.reset();
+    pending_blow_.clear();
+    pending_key_ = false;
+    has_pending_.store(false);
+  }
+  try {
+    SimulationOptions options;
+    options.integrator = "w2";
+    options.integrator_options.fixed_step_s = 1e-5;
+    const RestState rest = find_rest_state(*setup.model);
+    const InputContext context = input_context(*setup.model, rest);
+    full_dip_rad_ = context.full_dip_angle_rad;
+    std::shared_ptr<const KeyInput> input;
+    if (!setup.input_spec.empty()) input = parse_input_spec(setup.input_spec, context);
+    sim_ = std::make_unique<Simulator>(setup.model, input, options, &rest);
+  } catch (const std::exception& e) {
+    emit runFailed(run_id_, QString::fromStdString(e.what()));
+    return;
+  }
+  target_time_.store(0.0);
+  next_sample_t_ = 0.0;
+  record_frame();
+  emit runStarted(run_id_, full_dip_rad_);
+}
+
+void SimulationWorker::compute() {
+  compute_scheduled_.store(false);
+  if (!sim_ || sim_->stopped()) return;
+  QElapsedTimer wall;
+  wall.start();
+  while (sim_->time() < target_time_.load() - 1e-12 && wall.nsecsElapsed() < kChunkNs) {
+    if (has_pending_.load()) apply_pending();
+    if (!sim_->step(target_time_.load())) break;
+    for (int k = sim_->new_event_count(); k > 0; --k)
+      unreported_events_.push_back(sim_->events()[sim_->events().size() - k].type);
+    if (sim_->time() >= next_sample_t_ - 1e-12) record_frame();
+  }
+  if (sim_->stopped()) {
+    record_frame();
+    emit runStopped(run_id_, QString::fromStdString(sim_->stop_cause()));
+    return;
+  }
+  if (sim_->time() < target_time_.load() - 1e-12) schedule_compute();
+}
+
+void SimulationWorker::apply_pending() {
+  std::shared_ptr<const ActionModel> model;
+  std::string blow;
+  bool key = false;
+  double key_angle = 0.0, key_transition = 0.0;
+  {
+    std::lock_guard lock(pending_mutex_);
+    model.swap(pending_model_);
+    blow.swap(pending_blow_);
+    key = pending_key_;
+    key_angle = pending_key_angle_;
+    key_transition = pending_key_transition_;
+    pending_key_ = false;
+    has_pending_.store(false);
+  }
+  try {
+    if (model) sim_->set_model(model);
+    const double t = sim_->time();
+    if (!blow.empty()) {
+      live_key_.reset();
+      const InputContext context{full_dip_rad_};
+      sim_->set_input(std::make_shared<ShiftedKeyInput>(parse_input_spec(blow, context), t));
+    }
+    if (key) {
+      const int key_body = sim_->model().landmarks.key;
+      if (!live_key_) {
+        const double angle = sim_->q()[key_body] - sim_->rest().q[key_body];
+        const double rate = sim_->v()[key_body];
+        live_key_ = std::make_shared<LiveKeyInput>(t, angle, rate, full_dip_rad_);
+        live_key_->set_target(key_angle);
+        live_key_->update(t, key_transition);
+        sim_->set_input(live_key_);
+      } else {
+        live_key_->set_target(key_angle);
+        if (live_key_->update(t, key_transition)) sim_->set_input(live_key_);
+      }
+    }
+  } catch (const std::exception& e) {
+    sim_->stop(e.what());
+  }
+}
+
+void SimulationWorker::record_frame() {
+  Frame frame;
+  frame.t = sim_->time();
+  frame.q = sim_->q();
+  frame.v = sim_->v();
+  frame.model = sim_->model_ptr();
+  const ActionModel& model = *frame.model;
+  const DofVector& rest = sim_->rest().q;
+  frame.angle_deg.resize(model.bodies.size());
+  for (std::size_t k = 0; k < model.bodies.size(); ++k)
+    frame.angle_deg[k] = model.bodies[k].trace_sign * (frame.q[k] - rest[k]) * 180.0 / M_PI;
+  frame.hammer_string_gap_mm = sim_->hammer_string_gap(frame.q) * 1e3;
+  sim_->evaluate(frame.t, frame.q, frame.v, reading_);
+  frame.finger_force_n = reading_.finger_force;
+  frame.contact_force_n.reserve(reading_.contacts.size());
+  for (const ContactReading& c : reading_.contacts) frame.contact_force_n.push_back(c.normal_force);
+  frame.events.swap(unreported_events_);
+  frame.run = run_id_;
+  next_sample_t_ = frame.t + sample_interval_.load();
+
+  bool was_empty = false;
+  {
+    std::lock_guard lock(frames_mutex_);
+    was_empty = frames_.empty();
+    frames_.push_back(std::move(frame));
+  }
+  if (was_empty) emit framesAvailable();
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,94 @@
+// The engine's side of the window: a Simulator run in its own thread, stepped in short chunks up
+// to a target time the window sets. Changes from the window (model, input, the mouse-played
+// key) are queued and applied at the next step boundary; frames are recorded at a sample
+// interval into a mutex-guarded buffer, and framesAvailable() is emitted only when that buffer
+// goes from empty to non-empty (the window drains it from its redraw timer).
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "frame.h"
+#include "inputs/key_input.h"
+#include "sim/simulator.h"
+
+namespace pat::ui {
+
+class LiveKeyInput;
+
+/// What a run starts from: the model and the input SPEC ("" = no finger on the key).
+struct RunSetup {
+  std::shared_ptr<const ActionModel> model;
+  std::string input_spec;
+  int run_id = 0;  ///< tags the run's frames, so that frames of a replaced run are dropped
+};
+
+class SimulationWorker : public QObject {
+  Q_OBJECT
+ public:
+  SimulationWorker();
+  ~SimulationWorker() override;
+
+  // thread-safe requests (any thread); applied by the worker at its next step boundary
+  void set_target_time(double t);
+  void set_sample_interval(double seconds);
+  void request_model(std::shared_ptr<const ActionModel> model);
+  /// A blow struck now: `spec` (a force SPEC) starting at the current simulated time.
+  void request_blow(const std::string& spec);
+  /// The key follows `angle_rad` (from rest, positive down) from now on (mouse play); the
+  /// transition to each new target lasts `transition_s` of simulated time.
+  void request_key_angle(double angle_rad, double transition_s);
+
+  /// Takes the recorded frames (oldest first).
+  std::vector<Frame> take_frames();
+
+ public slots:
+  /// Builds a new run (rest state, input) and records its first frame.
+  void start_run(const pat::ui::RunSetup& setup);
+  /// Steps toward the target time for a few milliseconds, then yields to the event loop.
+  void compute();
+
+ signals:
+  void framesAvailable();
+  /// The run started; full_dip_rad is the key angle at full dip (for the mouse-played key).
+  void runStarted(int run_id, double full_dip_rad);
+  /// The run could not start (bad SPEC, a model that does not settle): the message says why.
+  void runFailed(int run_id, const QString& message);
+  /// The run stopped by itself (unphysical contact, divergence): the simulator's cause.
+  void runStopped(int run_id, const QString& cause);
+
+ private:
+  void schedule_compute();
+  void apply_pending();
+  void record_frame();
+
+  std::unique_ptr<Simulator> sim_;
+  int run_id_ = 0;
+  double full_dip_rad_ = 0.0;
+  double next_sample_t_ = 0.0;
+  std::vector<std::string> unreported_events_;
+  std::shared_ptr<LiveKeyInput> live_key_;
+  DynamicsReading reading_;
+
+  std::atomic<double> target_time_{0.0};
+  std::atomic<double> sample_interval_{2e-4};
+  std::atomic<bool> compute_scheduled_{false};
+  std::atomic<bool> has_pending_{false};
+
+  std::mutex pending_mutex_;
+  std::shared_ptr<const ActionModel> pending_model_;
+  std::string pending_blow_;
+  bool pending_key_ = false;
+  double pending_key_angle_ = 0.0, pending_key_transition_ = 0.0;
+
+  std::mutex frames_mutex_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace pat::ui
+
+Q_DECLARE_METATYPE(pat::ui::RunSetup)

@@ -1,0 +1,46 @@
+#include "trainer_app.h"
+
+#include <QApplication>
+#include <QSettings>
+#include <QTimer>
+#include <iostream>
+
+#include "main_window.h"
+#include "screenshot_demo.h"
+
+namespace pat::ui {
+
+int run_trainer(int argc, char** argv, const TrainerOptions& options) {
+  QApplication app(argc, argv);
+  QApplication::setOrganizationName("PianoActionTrainer");
+  QApplication::setApplicationName("pianoaction");
+  MainWindow window;
+  std::string action = options.action;
+  if (!options.action_given)
+    action = QSettings().value("last_preset", "grand").toString().toStdString();
+  try {
+    window.open_action(action);
+  } catch (const std::exception&) {
+    if (options.action_given) throw;
+    window.open_action("grand");  // the remembered preset is gone or broken
+  }
+  if (!options.screenshot.empty()) window.resize(1280, 800);
+  window.show();
+  if (options.screenshot.empty()) return app.exec();
+
+  int code = 0;
+  auto* demo = new ScreenshotDemo(&window, QString::fromStdString(options.screenshot));
+  QObject::connect(demo, &ScreenshotDemo::finished, &app, [&code](bool ok, const QString& msg) {
+    if (ok)
+      std::cout << "screenshot written to " << msg.toStdString() << "\n";
+    else
+      std::cerr << "pianoaction: " << msg.toStdString() << "\n";
+    code = ok ? 0 : 1;
+    QApplication::quit();
+  });
+  QTimer::singleShot(0, demo, &ScreenshotDemo::start);
+  app.exec();
+  return code;
+}
+
+}  // namespace pat::ui

@@ -1,0 +1,19 @@
+// Starts the trainer window: `pianoaction [--action grand|upright|FILE] [--screenshot PNG]`.
+#pragma once
+
+#include <string>
+
+namespace pat::ui {
+
+struct TrainerOptions {
+  std::string action = "grand";  ///< grand, upright or a preset file
+  bool action_given = false;     ///< false: the last preset used (QSettings), else grand
+  /// Non-empty: run a short demo until the action is mid-stroke (the hammer near the string), save
+  /// a screenshot of the whole window there and exit.
+  std::string screenshot;
+};
+
+/// Runs the window; returns the process exit code. Throws InputError for a bad preset.
+int run_trainer(int argc, char** argv, const TrainerOptions& options);
+
+}  // namespace pat::ui
