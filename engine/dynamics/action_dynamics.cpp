@@ -7,15 +7,6 @@
 #include "dynamics/small_cholesky.h"
 
 namespace pat {
-namespace {
-
-/// Accelerations from M a = f; a non-positive-definite M (never for a valid model) gives NaN,
-/// which the integrators report as a failure.
-void solve_or_nan(DofMatrix& mass, DofVector& forces) {
-  if (!cholesky_solve_in_place(mass, forces)) forces.setConstant(std::nan(""));
-}
-
-}  // namespace
 
 ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
     : model_(model), input_(input) {
@@ -26,176 +17,203 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
     if (!(key_prescribed_ && j == key_)) free_index_.push_back(j);
   free_count_ = static_cast<int>(free_index_.size());
 
-  chain_.resize(n_);
+  bodies_.resize(n_);
   for (int k = 0; k < n_; ++k) {
-    for (int j = k; j >= 0; j = model.bodies[j].parent) chain_[k].push_back(j);
-  }
-  mass_.resize(n_);
-  com_.resize(n_);
-  inertia_.resize(n_);
-  for (int k = 0; k < n_; ++k) {
-    mass_[k] = model.bodies[k].mass;
-    com_[k] = model.bodies[k].com;
-    inertia_[k] = model.bodies[k].inertia_com;
+    const Body& body = model.bodies[k];
+    BodyConstants& b = bodies_[k];
+    b.parent = body.parent;
+    b.pivot = body.pivot;
+    b.arm_from_parent =
+        body.parent < 0 ? Vec2(Vec2::Zero()) : Vec2(body.pivot - model.bodies[body.parent].pivot);
+    b.mass = body.mass;
+    b.inertia = body.inertia_com;
+    b.com_offset = body.com - body.pivot;
+    b.friction = body.friction;
+    for (int j = k; j >= 0; j = model.bodies[j].parent) b.chain[b.chain_length++] = j;
   }
   // a mass placed on the key tip becomes part of the key (parallel-axis theorem)
   const double added = input ? input->added_mass_kg() : 0.0;
   if (added > 0.0) {
+    BodyConstants& b = bodies_[key_];
     const Vec2 tip = model.landmarks.key_front;
-    const double m = mass_[key_];
-    const Vec2 c = (m * com_[key_] + added * tip) / (m + added);
-    inertia_[key_] += m * (com_[key_] - c).squaredNorm() + added * (tip - c).squaredNorm();
-    com_[key_] = c;
-    mass_[key_] = m + added;
+    const Vec2 com = b.pivot + b.com_offset;
+    const double m = b.mass;
+    const Vec2 c = (m * com + added * tip) / (m + added);
+    b.inertia += m * (com - c).squaredNorm() + added * (tip - c).squaredNorm();
+    b.com_offset = c - b.pivot;
+    b.mass = m + added;
+  }
+  key_front_offset_ = key_ >= 0 ? Vec2(model.landmarks.key_front - model.bodies[key_].pivot)
+                                : model.landmarks.key_front;
+
+  auto offset = [&](int body, const Vec2& point) -> Vec2 {
+    return body < 0 ? point : Vec2(point - model.bodies[body].pivot);
+  };
+  for (const Contact& contact : model.contacts) {
+    ContactConstants c;
+    c.body_a = contact.body_a;
+    c.body_b = contact.body_b;
+    c.segment = contact.shape == ContactShape::CircleSegment;
+    c.center_a = offset(contact.body_a, contact.center_a);
+    c.radius_a = contact.radius_a;
+    c.radius_b = contact.radius_b;
+    if (c.segment) {
+      c.start = offset(contact.body_b, contact.segment_start);
+      c.direction = contact.segment_end - contact.segment_start;
+      c.inverse_length2 = 1.0 / c.direction.squaredNorm();
+      c.normal = contact.segment_normal;
+    } else {
+      c.center_b = offset(contact.body_b, contact.center_b);
+    }
+    contacts_.push_back(c);
   }
   for (const Strap& strap : model.straps)
     strap_rest_length_.push_back(
         (transform(strap.body_a, strap.point_a) - transform(strap.body_b, strap.point_b)).norm() +
         strap.slack);
   kin_.resize(n_);
-  scratch_mass_.resize(n_, n_);
-  scratch_forces_.resize(n_);
+  distances_.resize(contacts_.size());
+  patches_.resize(contacts_.size());
+  touching_.resize(contacts_.size());
+  update_kinematics(DofVector::Zero(n_), DofVector::Zero(n_));  // the drawing configuration
   scratch_q_.resize(n_);
   scratch_v_.resize(n_);
+  scratch_acceleration_.resize(n_);
 }
 
-void ActionDynamics::update_kinematics(const DofVector& q, const DofVector& v) {
+void ActionDynamics::update_positions(const DofVector& q) {
+  if (positions_valid_ && positions_q_.size() == q.size() &&
+      (positions_q_.array() == q.array()).all())
+    return;
   for (int k = 0; k < n_; ++k) {
-    const Body& body = model_.bodies[k];
+    const BodyConstants& body = bodies_[k];
     BodyKinematics& kk = kin_[k];
     if (body.parent < 0) {
       kk.angle = q[k];
-      kk.omega = v[k];
       kk.origin = body.pivot;
+    } else {
+      const BodyKinematics& pk = kin_[body.parent];
+      kk.arm_from_parent = rotate(body.arm_from_parent, pk.cos, pk.sin);
+      kk.angle = pk.angle + q[k];
+      kk.origin = pk.origin + kk.arm_from_parent;
+    }
+    kk.cos = std::cos(kk.angle);
+    kk.sin = std::sin(kk.angle);
+  }
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    distances_[c] = contact_distance(contacts_[c]);
+    touching_[c] = patch_at(distances_[c], place(contacts_[c].body_a, contacts_[c].center_a),
+                            contacts_[c].radius_a, patches_[c]);
+  }
+  positions_q_ = q;
+  positions_valid_ = true;
+}
+
+void ActionDynamics::update_rates(const DofVector& v) {
+  for (int k = 0; k < n_; ++k) {
+    const int parent = bodies_[k].parent;
+    BodyKinematics& kk = kin_[k];
+    if (parent < 0) {
+      kk.omega = v[k];
       kk.origin_velocity.setZero();
       kk.origin_bias_acceleration.setZero();
     } else {
-      const BodyKinematics& pk = kin_[body.parent];
-      const Vec2 arm = rotate(body.pivot - model_.bodies[body.parent].pivot, pk.cos, pk.sin);
-      kk.angle = pk.angle + q[k];
+      const BodyKinematics& pk = kin_[parent];
+      const Vec2& arm = kk.arm_from_parent;
       kk.omega = pk.omega + v[k];
-      kk.origin = pk.origin + arm;
       kk.origin_velocity = pk.origin_velocity + pk.omega * perp(arm);
       // acceleration of a parent point with q̈ = 0: a_o − ω² r
       kk.origin_bias_acceleration = pk.origin_bias_acceleration - pk.omega * pk.omega * arm;
     }
-    kk.cos = std::cos(kk.angle);
-    kk.sin = std::sin(kk.angle);
   }
 }
 
 Vec2 ActionDynamics::transform(int body, const Vec2& rest_point) const {
   // the frame, or before the first kinematics update (the drawing configuration)
   if (body < 0 || kin_.empty()) return rest_point;
-  const BodyKinematics& k = kin_[body];
-  return k.origin + rotate(rest_point - model_.bodies[body].pivot, k.cos, k.sin);
+  return place(body, rest_point - bodies_[body].pivot);
 }
 
-Vec2 ActionDynamics::velocity_at(int body, const Vec2& world_point) const {
-  if (body < 0) return Vec2::Zero();
-  const BodyKinematics& k = kin_[body];
-  return k.origin_velocity + k.omega * perp(world_point - k.origin);
-}
-
-void ActionDynamics::add_point_force(int body, const Vec2& point, const Vec2& force,
-                                     DofVector& generalized) const {
-  if (body < 0) return;
-  for (int j : chain_[body]) generalized[j] += cross2(point - kin_[j].origin, force);
-}
-
-void ActionDynamics::applied_key_force(double t, const DofVector& q, DofVector& forces) const {
-  (void)q;
-  if (!input_ || input_->is_motion()) return;
-  const double f = input_->force_n(t);
-  if (f != 0.0)
-    add_point_force(key_, transform(key_, model_.landmarks.key_front), Vec2(0.0, -f), forces);
-}
-
-Vec2 ActionDynamics::segment_normal(const Contact& contact) const {
-  return contact.body_b < 0
-             ? contact.segment_normal
-             : rotate(contact.segment_normal, kin_[contact.body_b].cos, kin_[contact.body_b].sin);
-}
-
-bool ActionDynamics::contact_patch(const Contact& contact, ContactPatch& patch) const {
-  const Vec2 center_a = transform(contact.body_a, contact.center_a);
-  if (contact.shape == ContactShape::CircleCircle)
-    return circle_circle_patch(center_a, contact.radius_a,
-                               transform(contact.body_b, contact.center_b), contact.radius_b,
-                               patch);
-  return circle_segment_patch(center_a, contact.radius_a,
-                              transform(contact.body_b, contact.segment_start),
-                              transform(contact.body_b, contact.segment_end),
-                              segment_normal(contact), contact.radius_b, patch);
+ContactDistance ActionDynamics::contact_distance(const ContactConstants& c) const {
+  const Vec2 center_a = place(c.body_a, c.center_a);
+  if (!c.segment)
+    return circle_circle_distance(center_a, c.radius_a, place(c.body_b, c.center_b), c.radius_b);
+  if (c.body_b < 0)
+    return circle_segment_distance(center_a, c.radius_a, c.start, c.direction, c.inverse_length2,
+                                   c.normal, c.radius_b);
+  // the segment is tested in B's own frame (its constants need no rotation), the normal rotated
+  // back to the world
+  const BodyKinematics& kb = kin_[c.body_b];
+  const Vec2 local = rotate(center_a - kb.origin, kb.cos, -kb.sin);
+  ContactDistance d = circle_segment_distance(local, c.radius_a, c.start, c.direction,
+                                              c.inverse_length2, c.normal, c.radius_b);
+  d.normal = rotate(d.normal, kb.cos, kb.sin);
+  return d;
 }
 
 void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
-  update_kinematics(q, DofVector::Zero(n_));
-  penetration.resize(model_.contacts.size());
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const Contact& contact = model_.contacts[c];
-    const Vec2 center_a = transform(contact.body_a, contact.center_a);
-    penetration[c] =
-        contact.shape == ContactShape::CircleCircle
-            ? circle_circle_penetration(center_a, contact.radius_a,
-                                        transform(contact.body_b, contact.center_b),
-                                        contact.radius_b)
-            : circle_segment_penetration(center_a, contact.radius_a,
-                                         transform(contact.body_b, contact.segment_start),
-                                         transform(contact.body_b, contact.segment_end),
-                                         segment_normal(contact), contact.radius_b);
-  }
+  update_positions(q);
+  penetration.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;
 }
 
-void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v, DofMatrix& mass,
-                              DofVector& forces, std::vector<ContactReading>* readings,
+void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
+                              std::vector<ContactReading>* readings,
                               std::vector<double>* tensions) {
   update_kinematics(q, v);
-  mass.setZero(n_, n_);
-  forces.setZero(n_);
+  mass_.setZero();
+  forces_.setZero();
 
-  // inertia, bias and gravity of each body
+  // inertia, bias and gravity of each body (M: lower triangle; chains list descendants first)
   for (int k = 0; k < n_; ++k) {
+    const BodyConstants& b = bodies_[k];
     const BodyKinematics& kk = kin_[k];
-    const Vec2 r = rotate(com_[k] - model_.bodies[k].pivot, kk.cos, kk.sin);
+    const Vec2 r = rotate(b.com_offset, kk.cos, kk.sin);
     const Vec2 c = kk.origin + r;
     const Vec2 bias = kk.origin_bias_acceleration - kk.omega * kk.omega * r;
-    const Vec2 load = mass_[k] * (model_.gravity - bias);
-    for (int i : chain_[k]) {
-      const Vec2 ri = c - kin_[i].origin;
-      forces[i] += cross2(ri, load);
-      for (int j : chain_[k]) mass(i, j) += inertia_[k] + mass_[k] * ri.dot(c - kin_[j].origin);
+    const Vec2 load = b.mass * (model_.gravity - bias);
+    Vec2 arm[kMaxDof];  // c − o_i along the chain
+    for (int a = 0; a < b.chain_length; ++a) {
+      const int i = b.chain[a];
+      arm[a] = c - kin_[i].origin;
+      forces_[i] += cross2(arm[a], load);
+    }
+    for (int a = 0; a < b.chain_length; ++a) {
+      for (int e = a; e < b.chain_length; ++e) {
+        // chain[a] ≥ chain[e]: parents come before children
+        mass_(b.chain[a], b.chain[e]) += b.inertia + b.mass * arm[a].dot(arm[e]);
+      }
     }
   }
 
   // joint springs, joint friction, settling damping
   for (const JointSpring& spring : model_.springs)
-    forces[spring.body] += spring.preload - spring.stiffness * q[spring.body];
+    forces_[spring.body] += spring.preload - spring.stiffness * q[spring.body];
   for (int k = 0; k < n_; ++k) {
-    forces[k] += joint_friction_torque(model_.bodies[k].friction, v[k]);
-    forces[k] -= settling_damping_ * v[k];
+    forces_[k] += joint_friction_torque(bodies_[k].friction, v[k]);
+    forces_[k] -= settling_damping_ * v[k];
   }
 
   // intermittent felt contacts
   regime_ = 0;
-  for (std::size_t c = 0; c < model_.contacts.size(); ++c) {
-    const Contact& contact = model_.contacts[c];
-    ContactPatch patch;
-    const bool touching = contact_patch(contact, patch);
-    if (!touching) {
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const ContactConstants& contact = contacts_[c];
+    const ContactPatch& patch = patches_[c];
+    if (!touching_[c]) {
       if (readings) (*readings)[c] = ContactReading{};
       continue;
     }
     regime_ |= std::uint64_t{1} << (c & 63);
+    const Contact& law = model_.contacts[c];
     const Vec2 relative =
         velocity_at(contact.body_a, patch.point) - velocity_at(contact.body_b, patch.point);
     const double rate = -patch.normal.dot(relative);
-    const double fn = felt_normal_force(contact.law, patch.penetration, rate);
+    const double fn = felt_normal_force(law.law, patch.penetration, rate);
     const Vec2 tangent = perp(patch.normal);
-    const double ft = friction_force(contact.friction, fn, tangent.dot(relative));
+    const double ft = friction_force(law.friction, fn, tangent.dot(relative));
     const Vec2 force = fn * patch.normal + ft * tangent;  // on A; B gets the opposite
-    add_point_force(contact.body_a, patch.point, force, forces);
-    add_point_force(contact.body_b, patch.point, -force, forces);
+    add_point_force(contact.body_a, patch.point, force, forces_);
+    add_point_force(contact.body_b, patch.point, -force, forces_);
     if (readings) {
       ContactReading& reading = (*readings)[c];
       reading.active = true;
@@ -221,13 +239,28 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v, 
       const double rate = dir.dot(velocity_at(strap.body_b, pb) - velocity_at(strap.body_a, pa));
       tension =
           std::max(strap.stiffness * (length - strap_rest_length_[s]) + strap.damping * rate, 0.0);
-      add_point_force(strap.body_a, pa, tension * dir, forces);
-      add_point_force(strap.body_b, pb, -tension * dir, forces);
+      add_point_force(strap.body_a, pa, tension * dir, forces_);
+      add_point_force(strap.body_b, pb, -tension * dir, forces_);
     }
     if (tensions) (*tensions)[s] = tension;
   }
 
-  applied_key_force(t, q, forces);
+  // the finger force at the key front
+  if (input_ && !input_->is_motion()) {
+    const double f = input_->force_n(t);
+    if (f != 0.0) add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -f), forces_);
+  }
+
+  // the upper triangle of M, for readers of the full matrix
+  for (int i = 0; i < n_; ++i)
+    for (int j = i + 1; j < n_; ++j) mass_(i, j) = mass_(j, i);
+}
+
+DofMatrix ActionDynamics::assembled_mass() const {
+  DofMatrix mass(n_, n_);
+  for (int i = 0; i < n_; ++i)
+    for (int j = 0; j < n_; ++j) mass(i, j) = mass_(i, j);
+  return mass;
 }
 
 void ActionDynamics::expand(double t, const StateVector& y, DofVector& q, DofVector& v) const {
@@ -255,48 +288,48 @@ StateVector ActionDynamics::compress(const DofVector& q, const DofVector& v) con
 
 void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
   expand(t, y, scratch_q_, scratch_v_);
-  assemble(t, scratch_q_, scratch_v_, scratch_mass_, scratch_forces_, nullptr, nullptr);
-  solve_accelerations(t, scratch_mass_, scratch_forces_, scratch_acceleration_);
+  assemble(t, scratch_q_, scratch_v_, nullptr, nullptr);
+  solve_accelerations(t, scratch_acceleration_);
   dydt.resize(2 * free_count_);
   dydt.head(free_count_) = y.tail(free_count_);
   for (int i = 0; i < free_count_; ++i)
     dydt[free_count_ + i] = scratch_acceleration_[free_index_[i]];
 }
 
-void ActionDynamics::solve_accelerations(double t, const DofMatrix& mass, const DofVector& forces,
-                                         DofVector& acceleration) const {
+void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
   acceleration.resize(n_);
+  // factor a copy: mass_ stays whole for evaluate()'s key residual
+  SmallMatrix factor;
+  SmallVector rhs;
+  double key_acc = 0.0;
   if (!key_prescribed_) {
-    DofMatrix factor = mass;
-    acceleration = forces;
-    solve_or_nan(factor, acceleration);
-    return;
+    factor = mass_;
+    rhs = forces_;
+  } else {
+    // prescribed key: M_ff q̈_f = f_f − M_fk q̈_k
+    key_acc = input_->motion(t).acceleration;
+    for (int i = 0; i < free_count_; ++i) {
+      const int ji = free_index_[i];
+      rhs[i] = forces_[ji] - mass_(ji, key_) * key_acc;
+      for (int j = 0; j <= i; ++j) factor(i, j) = mass_(ji, free_index_[j]);
+    }
   }
-  // prescribed key: M_ff q̈_f = f_f − M_fk q̈_k
-  const double key_acc = input_->motion(t).acceleration;
-  DofMatrix mff(free_count_, free_count_);
-  DofVector acc_f(free_count_);
-  for (int i = 0; i < free_count_; ++i) {
-    const int ji = free_index_[i];
-    acc_f[i] = forces[ji] - mass(ji, key_) * key_acc;
-    for (int j = 0; j < free_count_; ++j) mff(i, j) = mass(ji, free_index_[j]);
-  }
-  solve_or_nan(mff, acc_f);
-  for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = acc_f[i];
-  acceleration[key_] = key_acc;
+  // a non-positive-definite M (never for a valid model) gives NaN, which the integrators report
+  // as a failure
+  if (!cholesky_solve_in_place(factor, rhs, free_count_)) rhs.setConstant(std::nan(""));
+  for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = rhs[i];
+  if (key_prescribed_) acceleration[key_] = key_acc;
 }
 
 void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
                               DynamicsReading& out) {
   out.contacts.resize(model_.contacts.size());
   out.strap_tension.resize(model_.straps.size());
-  DofMatrix mass;
-  DofVector forces;
-  assemble(t, q, v, mass, forces, &out.contacts, &out.strap_tension);
+  assemble(t, q, v, &out.contacts, &out.strap_tension);
   // lever arm of a downward finger force at the key front
-  const Vec2 front = transform(key_, model_.landmarks.key_front);
+  const Vec2 front = place(key_, key_front_offset_);
   const double arm = cross2(front - kin_[key_].origin, Vec2(0.0, -1.0));
-  solve_accelerations(t, mass, forces, out.acceleration);
+  solve_accelerations(t, out.acceleration);
   if (!key_prescribed_) {
     if (!input_) {
       out.finger_force = 0.0;
@@ -309,20 +342,19 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
     return;
   }
   // the finger supplies what the key's own equation lacks
-  const double residual = mass.row(key_).dot(out.acceleration) - forces[key_];
+  double residual = -forces_[key_];
+  for (int j = 0; j < n_; ++j) residual += mass_(key_, j) * out.acceleration[j];
   out.finger_force = residual / arm;
 }
 
 DofMatrix ActionDynamics::mass_matrix(const DofVector& q) {
-  DofVector v = DofVector::Zero(n_);
-  DofMatrix mass;
-  DofVector forces;
-  assemble(0.0, q, v, mass, forces, nullptr, nullptr);
-  return mass;
+  const DofVector v = DofVector::Zero(n_);
+  assemble(0.0, q, v, nullptr, nullptr);
+  return assembled_mass();
 }
 
 Vec2 ActionDynamics::point_position(int body, const Vec2& rest_point, const DofVector& q) {
-  update_kinematics(q, DofVector::Zero(n_));
+  update_positions(q);
   return transform(body, rest_point);
 }
 
@@ -342,8 +374,8 @@ double ActionDynamics::mechanical_energy(const DofVector& q, const DofVector& v)
   const DofMatrix mass = mass_matrix(q);  // also updates the kinematics at q
   double energy = 0.5 * v.dot(mass * v);
   for (int k = 0; k < n_; ++k) {
-    const Vec2 c = transform(k, com_[k]);
-    energy -= mass_[k] * model_.gravity.dot(c);
+    const Vec2 c = place(k, bodies_[k].com_offset);
+    energy -= bodies_[k].mass * model_.gravity.dot(c);
   }
   for (const JointSpring& spring : model_.springs)
     energy +=

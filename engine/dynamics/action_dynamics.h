@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "dynamics/contact_geometry.h"
+#include "dynamics/small_cholesky.h"
 #include "inputs/key_input.h"
 #include "integrators/ode_system.h"
 #include "model/action_model.h"
@@ -46,7 +47,8 @@ struct DynamicsReading {
 
 class ActionDynamics : public OdeSystem {
  public:
-  /// `input` may be null (the action at rest, no finger). Both must outlive this object.
+  /// `input` may be null (the action at rest, no finger). Both must outlive this object, and the
+  /// model must not change while it lives (its geometry is precomputed here).
   ActionDynamics(const ActionModel& model, const KeyInput* input);
 
   int dimension() const override { return 2 * free_count_; }
@@ -71,8 +73,8 @@ class ActionDynamics : public OdeSystem {
   void evaluate(double t, const DofVector& q, const DofVector& v, DynamicsReading& out);
 
   /// Signed contact penetrations at q (m): > 0 overlap, < 0 minus the gap still open. Geometry
-  /// only: cheap enough to call after every step for events, the unphysical-penetration check
-  /// and the technician's gap measurements.
+  /// only (memoized with the positions): cheap enough to call after every step for events, the
+  /// unphysical-penetration check and the technician's gap measurements.
   void contact_penetrations(const DofVector& q, std::vector<double>& penetration);
 
   /// Mass matrix at q (the point mass of a mass input included).
@@ -90,27 +92,78 @@ class ActionDynamics : public OdeSystem {
   double mechanical_energy(const DofVector& q, const DofVector& v);
 
  private:
+  /// Constants of one body, precomputed at construction. Offsets are from the body's pivot at
+  /// the drawing configuration q = 0 (a point's world position is origin + R(θ) offset).
+  struct BodyConstants {
+    int parent = -1;
+    Vec2 pivot;            ///< m, at q = 0
+    Vec2 arm_from_parent;  ///< pivot − parent pivot, m (zero for a body on the frame)
+    Vec2 com_offset;       ///< centre of mass − pivot, m
+    double mass = 0.0, inertia = 0.0;
+    JointFriction friction;
+    int chain_length = 0;
+    int chain[kMaxDof] = {};  ///< the body itself, then its ancestors
+  };
+  /// Constants of one contact, with its features as offsets on their bodies (world points for
+  /// the frame). A segment on B is tested in B's own frame:  p = Rᵦᵀ (c_A − o_B),
+  /// t* = (p − s0)·u / |u|², x = r_A − m·(p − s0) inside [0, 1], else the rounded corner
+  /// (contact_geometry.h).
+  struct ContactConstants {
+    int body_a = -1, body_b = -1;
+    bool segment = true;
+    Vec2 center_a;  ///< circle of A
+    double radius_a = 0.0;
+    Vec2 center_b;                  ///< circle of B (circle–circle)
+    double radius_b = 0.0;          ///< circle of B, or the corner radius ρ of a segment
+    Vec2 start, direction, normal;  ///< segment s0, u = s1 − s0, unit normal m (B's frame)
+    double inverse_length2 = 0.0;   ///< 1 / |u|², 1/m²
+  };
   struct BodyKinematics {
     double angle = 0.0, cos = 1.0, sin = 0.0, omega = 0.0;
-    Vec2 origin, origin_velocity, origin_bias_acceleration;
+    Vec2 origin = Vec2::Zero(), arm_from_parent = Vec2::Zero();  ///< world, m
+    Vec2 origin_velocity = Vec2::Zero(), origin_bias_acceleration = Vec2::Zero();
   };
-  void update_kinematics(const DofVector& q, const DofVector& v);
+  /// Body positions and contact geometry at q. Memoized: a call with the same q as the previous
+  /// one (bit for bit) does nothing. That is exact, and it saves the sines, cosines and contact
+  /// geometry of the Jacobian's velocity columns and of a step-end penetration pass followed by
+  /// the next step's first evaluation.
+  void update_positions(const DofVector& q);
+  /// Body rates at q̇ (after update_positions).
+  void update_rates(const DofVector& v);
+  void update_kinematics(const DofVector& q, const DofVector& v) {
+    update_positions(q);
+    update_rates(v);
+  }
   Vec2 transform(int body, const Vec2& rest_point) const;
-  Vec2 velocity_at(int body, const Vec2& world_point) const;
+  /// World position of a point given as an offset from the body's pivot (frame: world point).
+  Vec2 place(int body, const Vec2& offset) const {
+    if (body < 0) return offset;
+    const BodyKinematics& k = kin_[body];
+    return k.origin + rotate(offset, k.cos, k.sin);
+  }
+  Vec2 velocity_at(int body, const Vec2& world_point) const {
+    if (body < 0) return Vec2::Zero();
+    const BodyKinematics& k = kin_[body];
+    return k.origin_velocity + k.omega * perp(world_point - k.origin);
+  }
   /// Adds the generalized force of a force F applied at world point P of `body`.
   void add_point_force(int body, const Vec2& point, const Vec2& force,
-                       DofVector& generalized) const;
-  void assemble(double t, const DofVector& q, const DofVector& v, DofMatrix& mass,
-                DofVector& forces, std::vector<ContactReading>* readings,
-                std::vector<double>* tensions);
-  void applied_key_force(double t, const DofVector& q, DofVector& forces) const;
-  /// q̈ of every joint from the assembled M and forces (prescribed key included).
-  void solve_accelerations(double t, const DofMatrix& mass, const DofVector& forces,
-                           DofVector& acceleration) const;
-  /// Unit normal of a segment contact's face in the world, at the current kinematics.
-  Vec2 segment_normal(const Contact& contact) const;
-  /// Geometry of contact c at the current kinematics; false when apart.
-  bool contact_patch(const Contact& contact, ContactPatch& patch) const;
+                       SmallVector& generalized) const {
+    if (body < 0) return;
+    const BodyConstants& b = bodies_[body];
+    for (int c = 0; c < b.chain_length; ++c) {
+      const int j = b.chain[c];
+      generalized[j] += cross2(point - kin_[j].origin, force);
+    }
+  }
+  /// Fills mass_ and forces_ at (t, q, q̇); readings and tensions may be null.
+  void assemble(double t, const DofVector& q, const DofVector& v,
+                std::vector<ContactReading>* readings, std::vector<double>* tensions);
+  /// q̈ of every joint from mass_ and forces_ (prescribed key included).
+  void solve_accelerations(double t, DofVector& acceleration);
+  /// Signed distance and normal of a contact at the current positions.
+  ContactDistance contact_distance(const ContactConstants& contact) const;
+  DofMatrix assembled_mass() const;
 
   const ActionModel& model_;
   const KeyInput* input_;
@@ -118,20 +171,27 @@ class ActionDynamics : public OdeSystem {
   int key_ = 0;
   bool key_prescribed_ = false;
   int free_count_ = 0;
-  std::vector<int> free_index_;          // integrated coordinate → joint
-  std::vector<std::vector<int>> chain_;  // ancestors of each body, itself included
-  // mass properties with a mass input folded into the key
-  std::vector<double> mass_;
-  std::vector<Vec2> com_;
-  std::vector<double> inertia_;
+  std::vector<int> free_index_;  // integrated coordinate → joint
+  // bodies with a mass input folded into the key, contacts and straps in body frames
+  std::vector<BodyConstants> bodies_;
+  std::vector<ContactConstants> contacts_;
   std::vector<double> strap_rest_length_;
+  Vec2 key_front_offset_;
   std::vector<BodyKinematics> kin_;
+  // memo of update_positions(): its q, and the contact patches there
+  DofVector positions_q_;
+  bool positions_valid_ = false;
+  std::vector<ContactDistance> distances_;  // signed, every contact
+  std::vector<ContactPatch> patches_;
+  std::vector<char> touching_;
   double settling_damping_ = 0.0;
   double key_rest_angle_ = 0.0;
   std::uint64_t regime_ = 0;
+  // assembled M (lower triangle used by the solve, full for readers) and forces Q − c
+  SmallMatrix mass_ = SmallMatrix::Zero();
+  SmallVector forces_ = SmallVector::Zero();
   // scratch, so that rhs() does not allocate
-  DofMatrix scratch_mass_;
-  DofVector scratch_forces_, scratch_q_, scratch_v_, scratch_acceleration_;
+  DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };
 
 }  // namespace pat

@@ -21,6 +21,24 @@ struct ContactPatch {
   Vec2 point;                ///< patch centre, m
 };
 
+/// Signed penetration x (m; > 0 overlap, < 0 minus the gap still open) and the unit normal from
+/// B toward A. Any frame: the normal comes out in the frame the arguments are given in.
+struct ContactDistance {
+  double penetration = 0.0;
+  Vec2 normal = Vec2(0.0, 1.0);
+};
+
+ContactDistance circle_circle_distance(const Vec2& center_a, double radius_a, const Vec2& center_b,
+                                       double radius_b);
+/// Circle A against segment B from s0 along u = s1 − s0 (inverse_length2 = 1/|u|², given so
+/// that a caller can precompute it), unit normal toward A, corner radius ρ.
+ContactDistance circle_segment_distance(const Vec2& center_a, double radius_a, const Vec2& s0,
+                                        const Vec2& u, double inverse_length2, const Vec2& normal,
+                                        double corner_radius);
+/// The patch of a contact at this distance (world frame); false when apart (x ≤ 0).
+bool patch_at(const ContactDistance& distance, const Vec2& center_a, double radius_a,
+              ContactPatch& patch);
+
 /// Circle A (centre, radius) against circle B. Returns false when the circles are apart.
 bool circle_circle_patch(const Vec2& center_a, double radius_a, const Vec2& center_b,
                          double radius_b, ContactPatch& patch);

@@ -91,8 +91,8 @@ void WMethod2::initialize(OdeSystem& system, double t0, const StateVector& y0) {
   for (StateVector* v : {&f0_, &f1_, &f_t_, &k1_, &k2_, &y_stage_, &r_, &y_work_, &f_work_}) {
     v->setZero(dim);
   }
-  schur_rhs_.setZero(dofs);
-  x_v_.setZero(dofs);
+  schur_rhs_.setZero();
+  hg_a_q_.setZero();
 }
 
 void WMethod2::evaluate_jacobian(std::uint64_t regime) {
@@ -114,8 +114,14 @@ void WMethod2::factor(double h) {
   const double hg = kGamma * h;
   if (use_schur_) {
     const int n = dofs_;
-    lu_schur_.compute(DofMatrix::Identity(n, n) - hg * jacobian_.block(n, n, n, n) -
-                      (hg * hg) * jacobian_.block(n, 0, n, n));
+    SmallLu::Matrix s = SmallLu::Matrix::Zero();
+    for (int i = 0; i < n; ++i) {
+      for (int j = 0; j < n; ++j) {
+        hg_a_q_(i, j) = hg * jacobian_(n + i, j);
+        s(i, j) = (i == j ? 1.0 : 0.0) - hg * jacobian_(n + i, n + j) - hg * hg_a_q_(i, j);
+      }
+    }
+    lu_schur_.compute(s, n);  // a singular S gives non-finite K, reported by step()
   } else {
     lu_full_.compute(StateMatrix::Identity(dim_, dim_) - hg * jacobian_);
   }
@@ -128,11 +134,16 @@ void WMethod2::solve(const StateVector& r, StateVector& x) {
   if (use_schur_) {
     const int n = dofs_;
     const double hg = kGamma * factored_h_;
-    schur_rhs_ = r.tail(n);
-    schur_rhs_.noalias() += hg * jacobian_.block(n, 0, n, n) * r.head(n);
-    x_v_ = lu_schur_.solve(schur_rhs_);
-    x.head(n) = r.head(n) + hg * x_v_;
-    x.tail(n) = x_v_;
+    for (int i = 0; i < n; ++i) {
+      double s = r[n + i];
+      for (int j = 0; j < n; ++j) s += hg_a_q_(i, j) * r[j];
+      schur_rhs_[i] = s;
+    }
+    lu_schur_.solve_in_place(schur_rhs_);
+    for (int i = 0; i < n; ++i) {
+      x[i] = r[i] + hg * schur_rhs_[i];
+      x[n + i] = schur_rhs_[i];
+    }
   } else {
     x = lu_full_.solve(r);
   }

@@ -29,6 +29,7 @@
 #include "core/types.h"
 #include "integrators/integrator_factory.h"
 #include "integrators/ode_system.h"
+#include "integrators/small_lu.h"
 
 namespace pat {
 
@@ -102,11 +103,12 @@ class WMethod2 final : public Integrator {
   bool factored_ = false;
   double factored_h_ = 0.0;
   Eigen::PartialPivLU<StateMatrix> lu_full_;
-  Eigen::PartialPivLU<DofMatrix> lu_schur_;
+  SmallLu lu_schur_;
+  SmallLu::Matrix hg_a_q_;  ///< hγ A_q of the factored W, for the Schur right-hand side
 
   // Scratch (sized in initialize(), no heap: fixed maximum size).
   StateVector f0_, f1_, f_t_, k1_, k2_, y_stage_, r_, y_work_, f_work_;
-  DofVector schur_rhs_, x_v_;
+  SmallLu::Vector schur_rhs_;
 };
 
 }  // namespace pat

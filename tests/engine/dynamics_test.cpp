@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "dynamics/action_dynamics.h"
+#include "dynamics/contact_geometry.h"
 #include "integrators/integrator_factory.h"
 #include "test_support.h"
 
@@ -130,6 +131,79 @@ TEST(Dynamics, PointMassOnTheKeyAddsItsInertia) {
   const Vec2 arm = model.landmarks.key_front - model.bodies[key].pivot;
   const double expected = bare.mass_matrix(rest.q)(key, key) + arm.squaredNorm();
   EXPECT_NEAR(loaded.mass_matrix(rest.q)(key, key), expected, 1e-12);
+}
+
+/// Joint coordinates along a forte double blow, every `stride`-th trace row.
+std::vector<DofVector> forte_configurations(const ActionModel& model, const RestState& rest,
+                                            std::size_t stride) {
+  const SimulationResult r = test::run(model, "force:double:40:30:50", 0.25);
+  std::vector<DofVector> out;
+  for (std::size_t i = 0; i < r.trace.rows.size(); i += stride) {
+    DofVector q(model.dofs());
+    for (int k = 0; k < model.dofs(); ++k)
+      q[k] = rest.q[k] + rad(r.trace.rows[i][1 + k]) * model.bodies[k].trace_sign;
+    out.push_back(q);
+  }
+  return out;
+}
+
+TEST(Dynamics, ContactGeometryInBodyFramesMatchesWorldFrameGeometry) {
+  // The dynamics tests a segment in its own body's frame with precomputed constants; the plain
+  // world-frame functions of contact_geometry.h are the reference (signed: gaps too). Both are
+  // exact formulas, so
+  // they agree to rounding (1e-12 m, far below any penetration that matters, ~1e-5 m).
+  for (const std::string name : {"grand", "upright"}) {
+    const ActionModel model = test::shipped(name);
+    const RestState rest = find_rest_state(model);
+    ActionDynamics dynamics(model, nullptr);
+    int touching = 0;
+    for (const DofVector& q : forte_configurations(model, rest, 5)) {
+      std::vector<double> optimized;
+      dynamics.contact_penetrations(q, optimized);
+      for (std::size_t c = 0; c < model.contacts.size(); ++c) {
+        const Contact& contact = model.contacts[c];
+        auto world = [&](int body, const Vec2& p) { return dynamics.point_position(body, p, q); };
+        double angle_b = 0.0;  // absolute rotation of B: the sum of its chain's coordinates
+        for (int j = contact.body_b; j >= 0; j = model.bodies[j].parent) angle_b += q[j];
+        const Vec2 center_a = world(contact.body_a, contact.center_a);
+        const double reference =
+            contact.shape == ContactShape::CircleCircle
+                ? circle_circle_penetration(center_a, contact.radius_a,
+                                            world(contact.body_b, contact.center_b),
+                                            contact.radius_b)
+                : circle_segment_penetration(
+                      center_a, contact.radius_a, world(contact.body_b, contact.segment_start),
+                      world(contact.body_b, contact.segment_end),
+                      rotate(contact.segment_normal, std::cos(angle_b), std::sin(angle_b)),
+                      contact.radius_b);
+        EXPECT_NEAR(optimized[c], reference, 1e-12) << name << " " << contact.name;
+        touching += reference > 0.0;
+      }
+    }
+    EXPECT_GT(touching, 100) << name;  // the comparison saw contacts, not only gaps
+  }
+}
+
+TEST(Dynamics, MemoizedPositionsGiveTheSameEvaluationAsAFreshObject) {
+  // rhs() reuses the body positions and contact geometry when q repeats; that must be exact
+  const ActionModel model = test::shipped("grand");
+  const RestState rest = find_rest_state(model);
+  const auto input = parse_input_spec("force:const:30", input_context(model, rest));
+  ActionDynamics reused(model, input.get());
+  for (const DofVector& q : forte_configurations(model, rest, 40)) {
+    const DofVector v1 = DofVector::Constant(model.dofs(), 0.7);
+    DofVector v2 = v1;
+    v2[0] += 1e-3;
+    DynamicsReading first, second, fresh_reading;
+    reused.evaluate(0.01, q, v1, first);
+    reused.evaluate(0.01, q, v2, second);  // same q: positions memoized
+    ActionDynamics fresh(model, input.get());
+    fresh.evaluate(0.01, q, v2, fresh_reading);
+    for (int k = 0; k < model.dofs(); ++k)
+      EXPECT_EQ(second.acceleration[k], fresh_reading.acceleration[k]);
+    for (std::size_t c = 0; c < model.contacts.size(); ++c)
+      EXPECT_EQ(second.contacts[c].normal_force, fresh_reading.contacts[c].normal_force);
+  }
 }
 
 }  // namespace

@@ -107,5 +107,17 @@ TEST(ContactGeometry, CircleCircle) {
   EXPECT_FALSE(circle_circle_patch(Vec2(6e-3, 8e-3), 3e-3, Vec2(0, 0), 3e-3, p));
 }
 
+TEST(ForceLaws, SmoothTanhMatchesStdTanh) {
+  // the one-exp tanh of the friction laws, across both branches and the saturation
+  for (double x = -40.0; x <= 40.0; x += 0.00137) {
+    EXPECT_NEAR(smooth_tanh(x), std::tanh(x), 1e-15 * std::max(std::abs(std::tanh(x)), 1e-3)) << x;
+  }
+  for (double x : {1e-300, 1e-12, 0.0624, 0.0625, 0.0626})
+    EXPECT_NEAR(smooth_tanh(x), std::tanh(x), 1e-15 * std::tanh(x)) << x;
+  EXPECT_EQ(smooth_tanh(0.0), 0.0);
+  EXPECT_EQ(smooth_tanh(1e3), 1.0);
+  EXPECT_EQ(smooth_tanh(-1e3), -1.0);
+}
+
 }  // namespace
 }  // namespace pat

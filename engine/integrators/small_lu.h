@@ -1,0 +1,64 @@
+// LU factorization with partial (row) pivoting for the small dense systems of the W-method
+// (the n×n Schur complement, n ≤ kMaxDof): P A = L U, L unit lower triangular. Fixed capacity and
+// plain loops, because Eigen's dynamic-size routines cost more than the arithmetic at this size
+// (the solve runs twice per step). Same pivot choice as Eigen::PartialPivLU (largest |entry| in
+// the column).
+#pragma once
+
+#include <cmath>
+#include <utility>
+
+#include "core/types.h"
+
+namespace pat {
+
+class SmallLu {
+ public:
+  using Matrix = Eigen::Matrix<double, kMaxDof, kMaxDof>;
+  using Vector = Eigen::Matrix<double, kMaxDof, 1>;
+
+  /// Factors the leading n×n block of a. Returns false for an exactly singular matrix.
+  bool compute(const Matrix& a, int n) {
+    n_ = n;
+    lu_ = a;
+    for (int k = 0; k < n; ++k) {
+      int pivot = k;
+      for (int i = k + 1; i < n; ++i)
+        if (std::abs(lu_(i, k)) > std::abs(lu_(pivot, k))) pivot = i;
+      row_of_[k] = pivot;
+      if (pivot != k)
+        for (int j = 0; j < n; ++j) std::swap(lu_(k, j), lu_(pivot, j));
+      if (lu_(k, k) == 0.0) return false;
+      const double inverse = 1.0 / lu_(k, k);
+      for (int i = k + 1; i < n; ++i) {
+        const double l = lu_(i, k) * inverse;
+        lu_(i, k) = l;
+        for (int j = k + 1; j < n; ++j) lu_(i, j) -= l * lu_(k, j);
+      }
+    }
+    return true;
+  }
+
+  /// Solves A x = b in place on the first n entries of b.
+  void solve_in_place(Vector& b) const {
+    for (int k = 0; k < n_; ++k)
+      if (row_of_[k] != k) std::swap(b[k], b[row_of_[k]]);
+    for (int i = 1; i < n_; ++i) {
+      double s = b[i];
+      for (int k = 0; k < i; ++k) s -= lu_(i, k) * b[k];
+      b[i] = s;
+    }
+    for (int i = n_ - 1; i >= 0; --i) {
+      double s = b[i];
+      for (int k = i + 1; k < n_; ++k) s -= lu_(i, k) * b[k];
+      b[i] = s / lu_(i, i);
+    }
+  }
+
+ private:
+  Matrix lu_ = Matrix::Zero();
+  int row_of_[kMaxDof] = {};  ///< row swapped with row k at step k
+  int n_ = 0;
+};
+
+}  // namespace pat
