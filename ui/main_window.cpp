@@ -20,6 +20,7 @@
 #include <exception>
 
 #include "action_view.h"
+#include "analyses_panel.h"
 #include "deregulation_runner.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
@@ -78,6 +79,20 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->setWidget(scroll);
   dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::RightDockWidgetArea, dock);
+
+  // analyses of the current action (with whatever the sliders have done to it)
+  analyses_ = new AnalysesPanel([this] { return model_; });
+  auto* analyses_dock = new QDockWidget(tr("Analyses"), this);
+  analyses_dock->setObjectName("analyses_dock");
+  analyses_dock->setWidget(analyses_);
+  analyses_dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  addDockWidget(Qt::RightDockWidgetArea, analyses_dock);
+  tabifyDockWidget(dock, analyses_dock);
+  dock->raise();
+  connect(analyses_, &AnalysesPanel::exportRequested, this,
+          [this](const std::vector<PlotPanel*>& plots, const QString& what) {
+            export_from_menu(plots, what);
+          });
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
   connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
@@ -282,6 +297,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
   upright_action_->setChecked(model->kind == "upright");
   regulation_->set_model(*model);
   regulation_->clear_log();
+  analyses_->set_model(*model);
   // the whole panel visible without a horizontal scroll bar
   regulation_scroll_->setMinimumWidth(regulation_->sizeHint().width() + 24);
   plots_->set_model(*model);

@@ -20,6 +20,7 @@ class QScrollArea;
 namespace pat::ui {
 
 class ActionView;
+class AnalysesPanel;
 class MeasurementService;
 class PlaybackController;
 class DeregulationRunner;
@@ -51,6 +52,7 @@ class MainWindow : public QMainWindow {
   RegulationPanel* regulation() const { return regulation_; }
   RunControls* run_controls() const { return run_controls_; }
   MeasurementService* measurements() const { return measurements_; }
+  AnalysesPanel* analyses() const { return analyses_; }
   RegulationRunner* regulation_runner() const { return regulation_runner_; }
   /// Starts "Regulate automatically" (the button does the same).
   void regulate_automatically();
@@ -82,6 +84,7 @@ class MainWindow : public QMainWindow {
   ActionView* view_;
   PlotStack* plots_;
   RegulationPanel* regulation_;
+  AnalysesPanel* analyses_;
   RunControls* run_controls_;
   MeasurementService* measurements_;
   RegulationRunner* regulation_runner_;

@@ -201,10 +201,13 @@ QString PlotPanel::cursor_readout() const {
   if (!cursors_[0] || !cursors_[1]) return {};
   const double a = *cursors_[0], b = *cursors_[1];
   QStringList lines;
-  lines << tr("A %1 ms  B %2 ms  Δt = %3 ms")
-               .arg(a * 1e3, 0, 'f', 2)
-               .arg(b * 1e3, 0, 'f', 2)
-               .arg((b - a) * 1e3, 0, 'f', 2);
+  const double k = x_readout_scale_;
+  lines << tr("A %1 %4  B %2 %4  Δ%5 = %3 %4")
+               .arg(a * k, 0, 'f', 2)
+               .arg(b * k, 0, 'f', 2)
+               .arg((b - a) * k, 0, 'f', 2)
+               .arg(x_readout_unit_)
+               .arg(x_symbol_);
   for (int s = 0; s < series_count(); ++s) {
     const auto va = value_at(s, a), vb = value_at(s, b);
     if (!va || !vb) continue;
@@ -228,9 +231,10 @@ void PlotPanel::update_cursor_items() {
   QString text = cursors_enabled_ ? cursor_readout() : QString();
   if (text.isEmpty() && cursors_enabled_ && (cursors_[0] || cursors_[1])) {
     const int which = cursors_[0] ? 0 : 1;
-    text = tr("%1 at %2 ms (click: A, right click: B)")
+    text = tr("%1 at %2 %3 (click: A, right click: B)")
                .arg(kCursorNames[which])
-               .arg(*cursors_[which] * 1e3, 0, 'f', 2);
+               .arg(*cursors_[which] * x_readout_scale_, 0, 'f', 2)
+               .arg(x_readout_unit_);
   }
   readout_->setText(text);
   readout_->setVisible(!text.isEmpty());
@@ -250,9 +254,25 @@ void PlotPanel::render(QPaintDevice& device,
   }
 }
 
+void PlotPanel::set_x_axis(const QString& title, const QString& column, const QString& symbol,
+                           const QString& readout_unit, double readout_scale) {
+  plot_->xAxis->setLabel(title);
+  x_symbol_ = symbol;
+  x_column_ = column;
+  x_readout_unit_ = readout_unit;
+  x_readout_scale_ = readout_scale;
+  request_replot();
+}
+
+void PlotPanel::set_points_only(int series) {
+  QCPGraph* graph = series_.at(series).graph;
+  graph->setLineStyle(QCPGraph::lsNone);
+  graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 6));
+}
+
 CsvTable PlotPanel::visible_table() const {
   CsvTable table;
-  table.columns.push_back("time_s");
+  table.columns.push_back(x_column_.toStdString());
   for (const Series& s : series_) table.columns.push_back(s.column.toStdString());
   if (series_.empty()) return table;
   const QCPRange range = plot_->xAxis->range();

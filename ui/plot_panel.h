@@ -41,6 +41,13 @@ class PlotPanel : public QWidget {
   void remove_before(double t);
   std::size_t point_count(int series) const;
 
+  /// The x axis (default: time). `column` names it in CSV exports; the cursor readout shows
+  /// Δ`symbol` and x multiplied by readout_scale in readout_unit (time: t, ms, scale 1000).
+  void set_x_axis(const QString& title, const QString& column, const QString& symbol,
+                  const QString& readout_unit, double readout_scale);
+  /// Draws a series as markers without a line (one result per cycle or per case).
+  void set_points_only(int series);
+
   QString title() const { return title_; }
   void set_x_range(double lo, double hi);
   std::pair<double, double> x_range() const;
@@ -76,6 +83,10 @@ class PlotPanel : public QWidget {
 
   QString title_;
   QString y_title_;
+  QString x_column_ = "time_s";
+  QString x_symbol_ = "t";
+  QString x_readout_unit_ = "ms";
+  double x_readout_scale_ = 1e3;
   QCustomPlot* plot_;
   struct Series {
     QCPGraph* graph;

@@ -1,0 +1,48 @@
+// What an analysis run from the window hands back: a summary line, a table of named values and
+// plots of series over any x axis (frequency, time, setting). Plain data, built in the worker
+// thread and shown by the AnalysesPanel.
+#pragma once
+
+#include <QMetaType>
+#include <QString>
+#include <functional>
+#include <vector>
+
+#include "analysis/progress.h"
+
+namespace pat::ui {
+
+struct AnalysisTableRow {
+  QString quantity;
+  QString value;
+  QString unit;
+};
+
+struct AnalysisSeries {
+  QString label;
+  QString column;            ///< CSV column with its unit, e.g. strikes_per_cycle
+  std::vector<double> x, y;  ///< x ascending
+  bool points = false;       ///< markers only (per-cycle results), else a line
+};
+
+struct AnalysisPlot {
+  QString title;
+  QString x_title, x_column;  ///< e.g. "frequency (Hz)", frequency_hz
+  QString x_unit;             ///< for the cursor readout, e.g. Hz
+  QString y_title;            ///< with the unit, e.g. "impact velocity (m/s)"
+  std::vector<AnalysisSeries> series;
+};
+
+struct AnalysisResult {
+  QString summary;  ///< one sentence a teacher can read out
+  std::vector<AnalysisTableRow> table;
+  std::vector<AnalysisPlot> plots;
+};
+
+/// The work of one analysis, run in a worker thread. It calls the callback with its progress;
+/// when the callback returns false it stops by throwing pat::Cancelled.
+using AnalysisTask = std::function<AnalysisResult(const ProgressCallback& progress)>;
+
+}  // namespace pat::ui
+
+Q_DECLARE_METATYPE(pat::ui::AnalysisResult)

@@ -1,0 +1,61 @@
+#include "analysis_runner.h"
+
+#include <QMetaObject>
+#include <QtConcurrent/QtConcurrentRun>
+#include <exception>
+#include <memory>
+#include <mutex>
+
+namespace pat::ui {
+
+AnalysisRunner::AnalysisRunner(QObject* parent) : QObject(parent) {
+  qRegisterMetaType<pat::ui::AnalysisResult>();
+}
+
+AnalysisRunner::~AnalysisRunner() {
+  cancel_requested_.store(true);
+  future_.waitForFinished();
+}
+
+void AnalysisRunner::start(const QString& title, AnalysisTask task) {
+  if (running_) return;
+  running_ = true;
+  cancel_requested_.store(false);
+  future_ = QtConcurrent::run([this, title, task = std::move(task)] {
+    // the task may report from several threads (parallel runs): throttle under a lock
+    auto throttle = std::make_shared<std::pair<std::mutex, QElapsedTimer>>();
+    throttle->second.start();
+    const ProgressCallback report = [this, throttle](double fraction, const std::string& stage) {
+      {
+        std::lock_guard<std::mutex> lock(throttle->first);
+        if (throttle->second.elapsed() >= 30 || fraction >= 1.0) {
+          throttle->second.restart();
+          const QString text = QString::fromStdString(stage);
+          QMetaObject::invokeMethod(this,
+                                    [this, fraction, text] { emit progress(fraction, text); });
+        }
+      }
+      return !cancel_requested_.load();
+    };
+    try {
+      AnalysisResult result = task(report);
+      QMetaObject::invokeMethod(this, [this, title, result = std::move(result)] {
+        running_ = false;
+        emit finished(title, result);
+      });
+    } catch (const Cancelled&) {
+      QMetaObject::invokeMethod(this, [this, title] {
+        running_ = false;
+        emit cancelled(title);
+      });
+    } catch (const std::exception& e) {
+      const QString message = QString::fromStdString(e.what());
+      QMetaObject::invokeMethod(this, [this, title, message] {
+        running_ = false;
+        emit failed(title, message);
+      });
+    }
+  });
+}
+
+}  // namespace pat::ui
