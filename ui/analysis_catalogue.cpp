@@ -92,7 +92,8 @@ AnalysisEntry impact_velocity_range() {
   e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       std::vector<double> forces;
-      for (double f = 2.0; f <= 50.0 + 1e-9; f *= 1.25) forces.push_back(f);
+      // geometric steps from 2 to 50 N: equal steps in loudness (dynamics are logarithmic)
+      for (int i = 0; i <= 14; ++i) forces.push_back(2.0 * std::pow(25.0, i / 14.0));
       const std::size_t n = forces.size();
       std::vector<double> velocity(n, std::nan("")), time_ms(n, std::nan(""));
       const RestState rest = find_rest_state(*model);
@@ -151,11 +152,13 @@ AnalysisEntry impact_velocity_range() {
       vplot.series.push_back(v);
       tplot.series.push_back(t);
       result.plots = {vplot, tplot};
-      result.summary =
-          v.x.empty() ? QObject::tr("The hammer never reached the string.")
-                      : QObject::tr("Impact velocity from %1 to %2 m/s (fact F2: about 1 to 6).")
-                            .arg(number(lo))
-                            .arg(number(hi));
+      result.summary = v.x.empty()
+                           ? QObject::tr("The hammer never reached the string.")
+                           : QObject::tr(
+                                 "from %1 m/s (softest) to %2 m/s (loudest); fact F2: about "
+                                 "1 to 6 m/s.")
+                                 .arg(number(lo))
+                                 .arg(number(hi));
       return result;
     };
   };

@@ -82,7 +82,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   // analyses of the current action (with whatever the sliders have done to it)
   analyses_ = new AnalysesPanel([this] { return model_; });
-  auto* analyses_dock = new QDockWidget(tr("Analyses"), this);
+  auto* analyses_dock = analyses_dock_ = new QDockWidget(tr("Analyses"), this);
   analyses_dock->setObjectName("analyses_dock");
   analyses_dock->setWidget(analyses_);
   analyses_dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
@@ -201,6 +201,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::show_analyses() {
+  analyses_dock_->raise();
+}
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));

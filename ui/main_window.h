@@ -53,6 +53,8 @@ class MainWindow : public QMainWindow {
   RunControls* run_controls() const { return run_controls_; }
   MeasurementService* measurements() const { return measurements_; }
   AnalysesPanel* analyses() const { return analyses_; }
+  /// Brings the Analyses tab of the side dock to the front.
+  void show_analyses();
   RegulationRunner* regulation_runner() const { return regulation_runner_; }
   /// Starts "Regulate automatically" (the button does the same).
   void regulate_automatically();
@@ -85,6 +87,7 @@ class MainWindow : public QMainWindow {
   PlotStack* plots_;
   RegulationPanel* regulation_;
   AnalysesPanel* analyses_;
+  class QDockWidget* analyses_dock_;
   RunControls* run_controls_;
   MeasurementService* measurements_;
   RegulationRunner* regulation_runner_;

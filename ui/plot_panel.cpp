@@ -140,17 +140,24 @@ std::pair<double, double> PlotPanel::x_range() const {
   return {plot_->xAxis->range().lower, plot_->xAxis->range().upper};
 }
 
+std::pair<double, double> PlotPanel::value_range() const {
+  return {plot_->yAxis->range().lower, plot_->yAxis->range().upper};
+}
+
 void PlotPanel::fit_values() {
-  bool first = true;
+  // the data's own value range within the time range shown (not the axis range: a flat line
+  // must not inherit, and keep growing, the padded range of the previous fit)
+  bool any = false;
+  QCPRange range;
   for (Series& s : series_) {
     bool found = false;
-    s.graph->getValueRange(found, QCP::sdBoth, plot_->xAxis->range());
+    const QCPRange r = s.graph->getValueRange(found, QCP::sdBoth, plot_->xAxis->range());
     if (!found) continue;
-    s.graph->rescaleValueAxis(!first, true);
-    first = false;
+    range = any ? QCPRange(std::min(range.lower, r.lower), std::max(range.upper, r.upper)) : r;
+    any = true;
   }
+  if (!any) return;
   // a flat line gets a visible band around it
-  QCPRange range = plot_->yAxis->range();
   if (range.size() < 1e-9) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
   // headroom at the top for the legend
   const int legend_rows = (series_count() + 2) / 3;

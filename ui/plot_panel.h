@@ -51,6 +51,7 @@ class PlotPanel : public QWidget {
   QString title() const { return title_; }
   void set_x_range(double lo, double hi);
   std::pair<double, double> x_range() const;
+  std::pair<double, double> value_range() const;
   /// Fits the value axis to the data within the time range shown.
   void fit_values();
   /// Fits both axes to all data.

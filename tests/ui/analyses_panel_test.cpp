@@ -8,8 +8,8 @@
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
-#include <QTimer>
 #include <QTest>
+#include <QTimer>
 #include <thread>
 
 #include "analysis_runner.h"
@@ -89,6 +89,15 @@ void AnalysesPanelTest::every_analysis_runs_from_the_window_for_both_actions() {
       QVERIFY2(panel->table()->rowCount() > 0 || !panel->plots().empty(), qPrintable(name));
       for (pat::ui::PlotPanel* plot : panel->plots())
         QVERIFY2(plot->series_count() > 0 && plot->point_count(0) > 0, qPrintable(name));
+      // PAT_UI_SHOTS=DIR keeps a picture of each result for a person to look at
+      const QString shots = qEnvironmentVariable("PAT_UI_SHOTS");
+      if (!shots.isEmpty()) {
+        window.show_analyses();
+        window.resize(1500, 950);
+        QTest::qWait(100);
+        window.grab().save(
+            QString("%1/%2-%3.png").arg(shots, action).arg(panel->analysis_names().indexOf(name)));
+      }
     }
   }
 }

@@ -24,6 +24,7 @@ class PlotExportTest : public QObject {
   void cursors_give_delta_t_and_delta_value();
   void unknown_extension_and_bad_folder_are_refused();
   void trace_plots_of_a_simulation_trace();
+  void flat_series_keeps_a_bounded_value_axis();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -33,6 +34,18 @@ class PlotExportTest : public QObject {
   std::unique_ptr<PlotPanel> angles_, gap_;
   QTemporaryDir dir_;
 };
+
+void PlotExportTest::flat_series_keeps_a_bounded_value_axis() {
+  // a finger force of zero refitted at every replot (30 Hz for minutes) must keep its band of
+  // about ±1 N instead of growing with each refit's padding
+  pat::ui::PlotPanel flat("Finger force", "force (N)");
+  const int s = flat.add_series("finger force", "finger_force_n", Qt::red);
+  for (int i = 0; i < 100; ++i) flat.append(s, i * 1e-3, 0.0);
+  flat.set_x_range(0.0, 0.1);
+  for (int i = 0; i < 1000; ++i) flat.fit_values();
+  const auto [lo, hi] = flat.value_range();
+  QVERIFY2(lo <= 0.0 && hi >= 0.0 && hi - lo < 5.0, qPrintable(QString("%1 %2").arg(lo).arg(hi)));
+}
 
 void PlotExportTest::init() {
   angles_ = std::make_unique<PlotPanel>("Key and hammer", "angle (deg)");
