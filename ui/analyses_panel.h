@@ -40,6 +40,8 @@ class AnalysesPanel : public QWidget {
   QString summary() const;
   QTableWidget* table() const { return table_; }
   std::vector<PlotPanel*> plots() const { return plots_; }
+  /// Shows a result computed elsewhere (the deregulation demo) as if run here.
+  void show_result(const QString& title, const AnalysisResult& result);
   /// Writes the result table as CSV (quantity,value,unit). Throws InputError naming the file.
   void write_table_csv(const QString& path) const;
 
@@ -48,7 +50,6 @@ class AnalysesPanel : public QWidget {
   void exportRequested(const std::vector<pat::ui::PlotPanel*>& plots, const QString& what);
 
  private:
-  void show_result(const QString& title, const AnalysisResult& result);
   void set_busy(bool busy);
   void clear_result();
 

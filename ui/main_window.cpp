@@ -2,9 +2,12 @@
 
 #include <QActionGroup>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -21,6 +24,7 @@
 
 #include "action_view.h"
 #include "analyses_panel.h"
+#include "core/error.h"
 #include "deregulation_runner.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
@@ -156,8 +160,27 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   deregulation_runner_ = new DeregulationRunner(this);
   deregulate_button_ = regulation_->add_button(
       tr("Deregulation demo"),
-      tr("The capstan (hammer blow) screwed up 0.5 mm every 0.5 s while the key plays a 3 Hz "
-         "sine, until the action fails (paper section 7.2); then replayed"));
+      tr("An adjuster (the capstan for hammer_blow, as in the paper, section 7.2) moved in steps "
+         "every 0.5 s while the key plays a 3 Hz sine, until the action fails; then replayed, "
+         "with the measured value over time in the Analyses tab"));
+  auto* demo_options = new QWidget(regulation_);
+  auto* demo_row = new QHBoxLayout(demo_options);
+  demo_row->setContentsMargins(0, 0, 0, 0);
+  deregulation_setting_ = new QComboBox(demo_options);
+  deregulation_setting_->setToolTip(tr("The setting whose adjuster the demo moves"));
+  deregulation_rate_ = new QDoubleSpinBox(demo_options);
+  deregulation_rate_->setRange(-2.0, 2.0);
+  deregulation_rate_->setSingleStep(0.25);
+  deregulation_rate_->setValue(1.0);
+  deregulation_rate_->setSuffix(tr(" mm/s"));
+  deregulation_rate_->setToolTip(
+      tr("How fast the adjuster moves (in steps every 0.5 s); the sign is the adjuster's own "
+         "direction"));
+  demo_row->addWidget(new QLabel(tr("Demo moves"), demo_options));
+  demo_row->addWidget(deregulation_setting_, 1);
+  demo_row->addWidget(new QLabel(tr("at"), demo_options));
+  demo_row->addWidget(deregulation_rate_);
+  regulation_->add_widget(demo_options);
   progress_ = new QProgressBar(regulation_);
   progress_->setRange(0, 100);
   progress_->hide();
@@ -184,6 +207,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                  : tr("Deregulation stopped at t = %1 s: %2")
                                        .arg(result.stop_t, 0, 'f', 2)
                                        .arg(QString::fromStdString(result.stop_cause)));
+            show_deregulation_result(result);
             if (!frames.empty()) {
               controller_->replay(frames);
               statusBar()->showMessage(
@@ -302,6 +326,14 @@ void MainWindow::open_action(const std::string& name_or_path) {
   regulation_->set_model(*model);
   regulation_->clear_log();
   analyses_->set_model(*model);
+  {
+    const QString demo = deregulation_setting_->currentText();
+    deregulation_setting_->clear();
+    for (const RegulationSetting& r : model->regulation)
+      deregulation_setting_->addItem(QString::fromStdString(r.name));
+    const int keep = deregulation_setting_->findText(demo.isEmpty() ? "hammer_blow" : demo);
+    deregulation_setting_->setCurrentIndex(std::max(0, keep));
+  }
   // the whole panel visible without a horizontal scroll bar
   regulation_scroll_->setMinimumWidth(regulation_->sizeHint().width() + 24);
   plots_->set_model(*model);
@@ -353,18 +385,62 @@ void MainWindow::regulate_automatically() {
 void MainWindow::run_deregulation_demo() {
   if (!model_ || deregulation_runner_->running()) return;
   DeregulationOptions options;
-  options.setting = "hammer_blow";
-  options.rate_mm_per_s = 1.0;
+  options.setting = deregulation_setting_->currentText().toStdString();
+  options.rate_mm_per_s = deregulation_rate_->value();
   options.frequency_hz = 3.0;
   options.duration_s = 10.0;
   options.step_interval_s = 0.5;
-  regulation_->log(tr("Deregulation demo: hammer_blow +%1 mm/s, key at %2 Hz…")
-                       .arg(options.rate_mm_per_s)
+  regulation_->log(tr("Deregulation demo: %1 %2 mm/s, key at %3 Hz…")
+                       .arg(deregulation_setting_->currentText())
+                       .arg(options.rate_mm_per_s, 0, 'f', 2)
                        .arg(options.frequency_hz));
   progress_->setValue(0);
   progress_->show();
   deregulate_button_->setText(tr("Cancel the deregulation demo"));
   deregulation_runner_->start(model_, options);
+}
+
+void MainWindow::set_deregulation_demo(const std::string& setting, double rate_mm_per_s) {
+  const int index = deregulation_setting_->findText(QString::fromStdString(setting));
+  if (index < 0) throw InputError("deregulation demo: unknown setting '" + setting + "'");
+  deregulation_setting_->setCurrentIndex(index);
+  deregulation_rate_->setValue(rate_mm_per_s);
+}
+
+void MainWindow::show_deregulation_result(const DeregulationResult& result) {
+  const QString setting = deregulation_setting_->currentText();
+  AnalysisResult shown;
+  shown.summary = result.stop_cause.empty() ? tr("the action held to the end.")
+                                            : tr("stopped at t = %1 s: %2")
+                                                  .arg(result.stop_t, 0, 'f', 2)
+                                                  .arg(QString::fromStdString(result.stop_cause));
+  AnalysisSeries measured{tr("%1 measured").arg(setting), "measured", {}, {}, true};
+  AnalysisSeries adjuster{tr("adjuster"), "adjuster_mm", {}, {}, false};
+  AnalysisSeries gap{tr("gap at the top of the cycle"), "hammer_string_gap_mm", {}, {}, true};
+  for (const DeregulationSample& s : result.samples) {
+    measured.x.push_back(s.t);
+    measured.y.push_back(s.measured);
+    adjuster.x.push_back(s.t);
+    adjuster.y.push_back(s.adjuster_mm);
+    gap.x.push_back(s.t);
+    gap.y.push_back(s.hammer_string_gap_mm);
+    shown.table.push_back({tr("t = %1 s, adjuster %2 mm").arg(s.t, 0, 'f', 2).arg(s.adjuster_mm),
+                           QString::number(s.measured, 'f', 3), tr("setting's unit")});
+  }
+  shown.plots.push_back({tr("%1 over time").arg(setting),
+                         tr("time (s)"),
+                         "time_s",
+                         "s",
+                         tr("measured, adjuster (mm)"),
+                         {measured, adjuster}});
+  shown.plots.push_back({tr("Hammer–string gap at the top of each key cycle"),
+                         tr("time (s)"),
+                         "time_s",
+                         "s",
+                         tr("gap (mm)"),
+                         {gap}});
+  analyses_->show_result(tr("Deregulation of %1").arg(setting), shown);
+  show_analyses();
 }
 
 void MainWindow::save_preset(const std::string& path) {

@@ -12,10 +12,17 @@
 #include "model/action_model.h"
 
 class QAction;
+class QComboBox;
+class QDockWidget;
+class QDoubleSpinBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
 class QScrollArea;
+
+namespace pat {
+struct DeregulationResult;
+}
 
 namespace pat::ui {
 
@@ -58,9 +65,12 @@ class MainWindow : public QMainWindow {
   RegulationRunner* regulation_runner() const { return regulation_runner_; }
   /// Starts "Regulate automatically" (the button does the same).
   void regulate_automatically();
-  /// The deregulation demo (paper section 7.2): the hammer-blow adjuster moved while the key
-  /// plays a 3 Hz sine, then replayed with the measured value over time in the log.
+  /// The deregulation demo (paper section 7.2): the chosen setting's adjuster moved at the
+  /// chosen rate (default: hammer_blow, the capstan screwed up 1 mm/s) while the key plays a
+  /// 3 Hz sine, then replayed, with the measured value over time in the Analyses tab.
   void run_deregulation_demo();
+  /// Chooses the demo's setting and rate (mm/s), as the controls next to its button do.
+  void set_deregulation_demo(const std::string& setting, double rate_mm_per_s);
   DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
@@ -81,18 +91,21 @@ class MainWindow : public QMainWindow {
   void restore_settings();
   void measure_current_model();
   void save_preset_from_menu();
+  void show_deregulation_result(const DeregulationResult& result);
 
   PlaybackController* controller_;
   ActionView* view_;
   PlotStack* plots_;
   RegulationPanel* regulation_;
   AnalysesPanel* analyses_;
-  class QDockWidget* analyses_dock_;
+  QDockWidget* analyses_dock_;
   RunControls* run_controls_;
   MeasurementService* measurements_;
   RegulationRunner* regulation_runner_;
   DeregulationRunner* deregulation_runner_;
   QPushButton* deregulate_button_;
+  QComboBox* deregulation_setting_;
+  QDoubleSpinBox* deregulation_rate_;
   QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;

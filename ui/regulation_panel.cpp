@@ -37,6 +37,10 @@ RegulationPanel::RegulationPanel(QWidget* parent) : QWidget(parent) {
   column->addWidget(log_, 1);
 }
 
+void RegulationPanel::add_widget(QWidget* widget) {
+  buttons_->addWidget(widget);
+}
+
 QPushButton* RegulationPanel::add_button(const QString& text, const QString& tip) {
   auto* button = new QPushButton(text, this);
   button->setToolTip(tip);

@@ -32,6 +32,8 @@ class RegulationPanel : public QWidget {
   void log(const QString& line);
   void clear_log();
   /// A button under the rows (the window adds the regulation actions).
+  /// Adds a widget (a row of options) below the buttons added so far.
+  void add_widget(QWidget* widget);
   QPushButton* add_button(const QString& text, const QString& tip);
 
  signals:

@@ -14,6 +14,7 @@
 #include <QTest>
 #include <cmath>
 
+#include "analyses_panel.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
 #include "main_window.h"
@@ -135,6 +136,8 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
             frame_count = frames.size();
             QCOMPARE(result.stop_cause, std::string("cancelled"));
           });
+  window.set_deregulation_demo("let_off", -1.0);
+  QVERIFY_THROWS_EXCEPTION(pat::InputError, window.set_deregulation_demo("no_such_setting", 1.0));
   window.run_deregulation_demo();
   QVERIFY(runner->running());
   QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
@@ -145,6 +148,9 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
   QVERIFY(frame_count > 0);
   QVERIFY(window.controller()->replaying());
   QCOMPARE(window.controller()->history().size(), frame_count);
+  // the measured value over time is shown in the Analyses tab, titled with the chosen setting
+  QVERIFY2(window.analyses()->summary().contains("Deregulation of let_off"),
+           qPrintable(window.analyses()->summary()));
   window.start("");  // back to a live run
   QVERIFY(!window.controller()->replaying());
 }
