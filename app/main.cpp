@@ -25,6 +25,8 @@ usage:
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--json]
+  pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
+                        [--out CSV] [--json]
   pianoaction bench     [--json] [--duration S]
 
 input SPEC:
@@ -81,6 +83,8 @@ int main(int argc, char** argv) {
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
+    if (command == "study" && !args.empty() && args[0] == "sensitivity")
+      return pat::app::run_study_sensitivity({args.begin() + 1, args.end()});
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

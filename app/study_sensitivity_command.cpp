@@ -1,0 +1,102 @@
+// pianoaction study sensitivity: every regulation setting moved ±step, and what changes (the
+// table a teacher shows: which screw matters most). Issue 4; engine/analysis/sensitivity.h.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "action_setup.h"
+#include "analysis/sensitivity.h"
+#include "commands.h"
+#include "core/error.h"
+#include "io/csv.h"
+
+namespace pat::app {
+namespace {
+
+nlohmann::json number_or_null(double v) {
+  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
+
+}  // namespace
+
+int run_study_sensitivity(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {"--action", "--set", "--without", "--step", "--force", "--out"},
+                       {"--json"});
+  const ActionModel model = load_configured_action(cl);
+  SensitivityOptions options;
+  options.step_mm = cl.positive_number_or("--step", 0.5);
+  options.groups = sensitivity_metric_groups(cl.positive_number_or("--force", 20.0));
+  const SensitivityResult result = sensitivity(model, options);
+
+  const std::string out_path = cl.value_or("--out", "");
+  if (!out_path.empty()) {
+    // one row per setting and side: the setting's measured value and every metric
+    CsvTable table;
+    table.columns = {"setting_index", "offset_mm", "measured"};
+    for (const std::string& m : result.metrics) table.columns.push_back(m);
+    for (std::size_t s = 0; s < result.rows.size(); ++s) {
+      const SensitivityRow& row = result.rows[s];
+      for (int side : {0, 2}) {
+        std::vector<double> line{double(s), (side - 1) * options.step_mm, row.measured[side]};
+        const std::vector<double>& values = side == 0 ? row.minus : row.plus;
+        line.insert(line.end(), values.begin(), values.end());
+        table.rows.push_back(line);
+      }
+    }
+    std::string names;
+    for (std::size_t s = 0; s < result.rows.size(); ++s)
+      names += (s ? " " : "") + std::to_string(s) + "=" + result.rows[s].setting;
+    table.metadata["settings"] = names;
+    table.metadata["action"] = model.name;
+    write_csv(out_path, table);
+  }
+
+  if (cl.has("--json")) {
+    nlohmann::json settings = nlohmann::json::array();
+    for (const SensitivityRow& row : result.rows) {
+      nlohmann::json metrics = nlohmann::json::object();
+      for (std::size_t m = 0; m < result.metrics.size(); ++m)
+        metrics[result.metrics[m]] = {
+            {"minus", number_or_null(row.minus[m])},
+            {"plus", number_or_null(row.plus[m])},
+            {"per_unit_of_setting", number_or_null(row.per_unit_of_setting[m])}};
+      settings.push_back({{"name", row.setting},
+                          {"unit", row.unit},
+                          {"measured_minus", number_or_null(row.measured[0])},
+                          {"measured", number_or_null(row.measured[1])},
+                          {"measured_plus", number_or_null(row.measured[2])},
+                          {"metrics", metrics}});
+    }
+    nlohmann::json baseline = nlohmann::json::object();
+    for (std::size_t m = 0; m < result.metrics.size(); ++m)
+      baseline[result.metrics[m]] = number_or_null(result.baseline[m]);
+    std::cout << nlohmann::json{{"step_mm", options.step_mm},
+                                {"baseline", baseline},
+                                {"settings", settings}}
+                     .dump(1)
+              << "\n";
+    return 0;
+  }
+  std::cout << "adjusters moved by -" << options.step_mm << " / +" << options.step_mm
+            << " mm; each metric at - / +\n";
+  std::cout << std::left << std::setw(16) << "setting" << std::setw(26) << "measured - / 0 / +";
+  for (const std::string& m : result.metrics) std::cout << std::setw(26) << m;
+  std::cout << "\n" << std::setprecision(4);
+  for (const SensitivityRow& row : result.rows) {
+    std::ostringstream measured;
+    measured << std::setprecision(4) << row.measured[0] << " / " << row.measured[1] << " / "
+             << row.measured[2];
+    std::cout << std::setw(16) << row.setting << std::setw(26) << measured.str();
+    for (std::size_t m = 0; m < result.metrics.size(); ++m) {
+      std::ostringstream cell;
+      cell << std::setprecision(4) << row.minus[m] << " / " << row.plus[m];
+      std::cout << std::setw(26) << cell.str();
+    }
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,148 @@
+#include "analysis/sensitivity.h"
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "analysis/parallel_runs.h"
+#include "core/error.h"
+#include "core/format.h"
+#include "inputs/key_input.h"
+#include "model/model_edits.h"
+#include "regulation/measurements.h"
+#include "sim/key_travel.h"
+
+namespace pat {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// The adjuster that regulates `setting` (regulation settings and adjusters share names).
+const Adjuster& adjuster_of(const ActionModel& model, const std::string& setting) {
+  for (const Adjuster& a : model.adjusters)
+    if (a.name == setting) return a;
+  throw InputError("sensitivity: setting '" + setting + "' has no adjuster in " + model.name);
+}
+
+}  // namespace
+
+SensitivityMetricGroup blow_metrics(double key_force_n) {
+  SensitivityMetricGroup group;
+  group.names = {"impact_velocity_mps", "let_off_time_ms"};
+  group.evaluate = [key_force_n](const ActionModel& model, const RestState& rest) {
+    const auto input = parse_input_spec("force:const:" + format_number(key_force_n, 6),
+                                        input_context(model, rest));
+    SimulationOptions options;
+    options.duration_s = 0.4;  // a 20 N blow strikes in about 30 ms; softer ones well within
+    options.sample_interval_s = 0.0;
+    const SimulationResult r = simulate(model, input.get(), options, &rest);
+    double velocity = kNaN, let_off = kNaN;
+    for (const SimEvent& e : r.events) {
+      if (e.type == "escapement" && std::isnan(let_off)) let_off = e.t * 1e3;
+      if (e.type == "impact" && std::isnan(velocity)) velocity = e.hammer_velocity;
+    }
+    return std::vector<double>{velocity, let_off};
+  };
+  return group;
+}
+
+std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n) {
+  return {blow_metrics(key_force_n)};
+}
+
+SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,
+                              const ProgressCallback& progress) {
+  if (!(options.step_mm > 0.0)) throw InputError("sensitivity: step_mm must be positive");
+  SensitivityResult result;
+  std::vector<std::size_t> group_offset;
+  for (const SensitivityMetricGroup& g : options.groups) {
+    group_offset.push_back(result.metrics.size());
+    result.metrics.insert(result.metrics.end(), g.names.begin(), g.names.end());
+  }
+  const std::size_t n_settings = model.regulation.size();
+  const std::size_t n_metrics = result.metrics.size();
+
+  // the model variants: index 0 the model as given, then (−, +) per setting
+  std::vector<std::shared_ptr<const ActionModel>> variants{std::make_shared<ActionModel>(model)};
+  for (const RegulationSetting& s : model.regulation) {
+    const Adjuster& a = adjuster_of(model, s.name);
+    for (const double sign : {-1.0, 1.0})
+      variants.push_back(std::make_shared<ActionModel>(
+          with_adjuster(model, s.name, a.value + sign * options.step_mm * 1e-3)));
+  }
+  std::vector<RestState> rests(variants.size());
+  std::vector<char> failed(variants.size(), 0);  // a variant without a rest state
+  std::vector<std::vector<double>> metrics(variants.size(), std::vector<double>(n_metrics, kNaN));
+  // measured[s][p]: setting s measured on its own variant at −step, 0, +step
+  std::vector<std::array<double, 3>> measured(n_settings, {kNaN, kNaN, kNaN});
+  auto variant_of = [](std::size_t setting, int position) -> std::size_t {
+    return position == 1 ? 0 : 1 + 2 * setting + (position == 2 ? 1 : 0);
+  };
+
+  // first every variant's rest state, then the measurement and metric jobs, all in parallel
+  const std::size_t n_groups = options.groups.size();
+  const std::size_t metric_jobs = variants.size() * n_groups;
+  const std::size_t measure_jobs = 3 * n_settings;
+  ProgressReporter reporter(progress, variants.size() + metric_jobs + measure_jobs);
+  run_parallel(
+      variants.size(),
+      [&](std::size_t v) {
+        try {
+          rests[v] = find_rest_state(*variants[v]);
+        } catch (const std::exception&) {
+          if (v == 0) throw;  // the model as given must rest; a variant may not (NaN below)
+          failed[v] = 1;
+        }
+      },
+      &reporter);
+  run_parallel(
+      metric_jobs + measure_jobs,
+      [&](std::size_t job) {
+        if (job < metric_jobs) {
+          const std::size_t v = job / n_groups, g = job % n_groups;
+          if (failed[v]) return;
+          const SensitivityMetricGroup& group = options.groups[g];
+          std::vector<double> values;
+          try {
+            values = group.evaluate(*variants[v], rests[v]);
+          } catch (const Cancelled&) {
+            throw;
+          } catch (const std::exception&) {
+            return;  // the metric does not exist for this variant (e.g. the key cannot move)
+          }
+          for (std::size_t i = 0; i < group.names.size() && i < values.size(); ++i)
+            metrics[v][group_offset[g] + i] = values[i];
+          return;
+        }
+        const std::size_t k = job - metric_jobs, setting = k / 3;
+        const int position = static_cast<int>(k % 3);
+        const std::size_t v = variant_of(setting, position);
+        if (failed[v]) return;
+        try {
+          measured[setting][position] =
+              measure_setting(*variants[v], model.regulation[setting].name, &rests[v]);
+        } catch (const std::exception&) {
+          // not measurable there (e.g. the jack never escapes): stays NaN
+        }
+      },
+      &reporter);
+
+  result.baseline = metrics[0];
+  for (std::size_t s = 0; s < n_settings; ++s) {
+    SensitivityRow row;
+    row.setting = model.regulation[s].name;
+    row.unit = model.regulation[s].unit;
+    for (int p = 0; p < 3; ++p) row.measured[p] = measured[s][p];
+    row.minus = metrics[variant_of(s, 0)];
+    row.plus = metrics[variant_of(s, 2)];
+    const double d_setting = row.measured[2] - row.measured[0];
+    for (std::size_t m = 0; m < n_metrics; ++m)
+      row.per_unit_of_setting.push_back(
+          std::abs(d_setting) > 1e-9 ? (row.plus[m] - row.minus[m]) / d_setting : kNaN);
+    result.rows.push_back(std::move(row));
+  }
+  return result;
+}
+
+}  // namespace pat

@@ -1,0 +1,61 @@
+// Sensitivity of the action to its regulation (issue 4): each of the seven settings' adjusters
+// moved by −step and +step from the current model, and the change of what a player and a
+// technician notice — impact velocity for a fixed key force, the time of let-off (escapement)
+// under that force, and any further metric groups the caller adds (touchweight, repetition
+// limit). The table a teacher shows: which screw matters most, and in which direction.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "analysis/progress.h"
+#include "model/action_model.h"
+#include "sim/simulation.h"
+
+namespace pat {
+
+/// Metrics computed together from one model (e.g. one simulation gives several numbers).
+/// evaluate returns one value per name; NaN when the metric does not exist for that model
+/// (no strike, no escapement).
+struct SensitivityMetricGroup {
+  std::vector<std::string> names;  ///< e.g. impact_velocity_mps (unit in the name)
+  std::function<std::vector<double>(const ActionModel&, const RestState&)> evaluate;
+};
+
+/// impact_velocity_mps and let_off_time_ms under a constant key force (N), w2.
+SensitivityMetricGroup blow_metrics(double key_force_n = 20.0);
+
+/// The metric groups of the sensitivity table: the blow metrics at this key force, and the
+/// static touchweight and repetition limit where available.
+std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n = 20.0);
+
+struct SensitivityOptions {
+  double step_mm = 0.5;  ///< each adjuster at −step and +step
+  std::vector<SensitivityMetricGroup> groups = sensitivity_metric_groups();
+};
+
+struct SensitivityRow {
+  std::string setting;
+  std::string unit;  ///< of the setting's measurement
+  /// The setting measured at −step, 0, +step (NaN when it cannot be measured there).
+  double measured[3] = {0.0, 0.0, 0.0};
+  /// Metric values at −step and +step, in the order of SensitivityResult::metrics.
+  std::vector<double> minus, plus;
+  /// The change of metric m per mm of the setting's *measured* value (central difference:
+  /// (plus − minus) / (measured[2] − measured[0])); NaN when undefined.
+  std::vector<double> per_unit_of_setting;
+};
+
+struct SensitivityResult {
+  std::vector<std::string> metrics;
+  std::vector<double> baseline;  ///< metric values of the model as given
+  std::vector<SensitivityRow> rows;
+};
+
+/// Runs every (setting × {−, 0, +}) × group case in parallel on the available cores. Settings
+/// are those of the model's regulation list. Cancels through `progress` (throws Cancelled).
+SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,
+                              const ProgressCallback& progress = {});
+
+}  // namespace pat
