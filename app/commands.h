@@ -11,6 +11,12 @@ int run_simulate(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 int run_regulate(const std::vector<std::string>& args);
 int run_deregulate(const std::vector<std::string>& args);
+int run_swing(const std::vector<std::string>& args);
+int run_keyfall(const std::vector<std::string>& args);
+int run_touchweight(const std::vector<std::string>& args);
+/// study double-blow (the word after `study` removed)
+int run_study_double_blow(const std::vector<std::string>& args);
+/// study sensitivity (the word after `study` removed)
 int run_study_sensitivity(const std::vector<std::string>& args);
 
 }  // namespace pat::app

@@ -28,6 +28,12 @@ usage:
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--json]
   pianoaction bench     [--json] [--duration S]
+  pianoaction swing     --action A [--release-deg D] [--out CSV] [--json]
+  pianoaction keyfall   --action A [--duration S] [--out CSV] [--json]
+  pianoaction touchweight --action A [--spring-factor SPRING=F]... [--key-lead-g G]
+                        [--set ADJUSTER=MM]... [--without PART]... [--out CSV] [--json]
+  pianoaction study double-blow --action upright [--force N] [--pulse-ms MS] [--gap-ms MS]
+                        [--duration S] [--out CSV] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -83,8 +89,17 @@ int main(int argc, char** argv) {
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
+    if (command == "swing") return pat::app::run_swing(args);
+    if (command == "keyfall") return pat::app::run_keyfall(args);
+    if (command == "touchweight") return pat::app::run_touchweight(args);
+    if (command == "study" && !args.empty() && args[0] == "double-blow")
+      return pat::app::run_study_double_blow({args.begin() + 1, args.end()});
     if (command == "study" && !args.empty() && args[0] == "sensitivity")
       return pat::app::run_study_sensitivity({args.begin() + 1, args.end()});
+    if (command == "study") {
+      std::cerr << "pianoaction study: name a study (double-blow, sensitivity)\n\n" << kUsage;
+      return 2;
+    }
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

@@ -202,6 +202,7 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
       panel->set_data(id, series.x, series.y);
       if (series.points) panel->set_points_only(id);
     }
+    if (!p.x_categories.empty()) panel->set_x_categories(p.x_categories);
     panel->fit_all();
     plots_.push_back(panel);
     plot_tabs_->addTab(panel, p.title);

@@ -4,8 +4,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "analysis/double_blow_study.h"
+#include "analysis/key_fall.h"
 #include "analysis/parallel_runs.h"
 #include "analysis/sensitivity.h"
+#include "analysis/swing_test.h"
+#include "analysis/touchweight.h"
 #include "core/format.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
@@ -177,7 +181,9 @@ AnalysisEntry regulation_sensitivity() {
     return [model](const ProgressCallback& progress) {
       const SensitivityResult r = sensitivity(*model, SensitivityOptions{}, progress);
       AnalysisResult result;
-      std::vector<AnalysisPlot> plots;
+      std::vector<QString> settings;
+      for (const SensitivityRow& row : r.rows)
+        settings.push_back(QString::fromStdString(row.setting));
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
         const QString metric = QString::fromStdString(r.metrics[m]);
         AnalysisSeries minus{QObject::tr("adjuster −0.5 mm"), metric + "_minus", {}, {}, true};
@@ -188,27 +194,31 @@ AnalysisEntry regulation_sensitivity() {
           plus.x.push_back(double(s));
           plus.y.push_back(r.rows[s].plus[m] - r.baseline[m]);
         }
-        plots.push_back({QObject::tr("Change of %1").arg(metric),
-                         QObject::tr("setting (index)"),
-                         "setting_index",
-                         "",
-                         QObject::tr("change of %1").arg(metric),
-                         {minus, plus}});
+        AnalysisPlot plot{metric,
+                          QObject::tr("setting"),
+                          "setting_index",
+                          "",
+                          QObject::tr("change of %1").arg(metric),
+                          {minus, plus}};
+        plot.x_categories = settings;
+        result.plots.push_back(plot);
       }
-      for (std::size_t s = 0; s < r.rows.size(); ++s) {
-        const SensitivityRow& row = r.rows[s];
-        QString changes;
-        for (std::size_t m = 0; m < r.metrics.size(); ++m)
-          changes += QObject::tr("%1: %2 → %3; ")
-                         .arg(QString::fromStdString(r.metrics[m]))
-                         .arg(number(row.minus[m]))
-                         .arg(number(row.plus[m]));
-        result.table.push_back({QObject::tr("%1. %2 (%3 → %4)")
-                                    .arg(s)
-                                    .arg(QString::fromStdString(row.setting))
+      // one row per setting: how the setting itself moved, then one row per metric
+      for (const SensitivityRow& row : r.rows) {
+        const QString name = QString::fromStdString(row.setting);
+        result.table.push_back({name + QObject::tr(" measured (−0.5 / 0 / +0.5 mm)"),
+                                QObject::tr("%1 / %2 / %3")
                                     .arg(number(row.measured[0]))
+                                    .arg(number(row.measured[1]))
                                     .arg(number(row.measured[2])),
-                                changes, QString::fromStdString(row.unit)});
+                                QString::fromStdString(row.unit)});
+        for (std::size_t m = 0; m < r.metrics.size(); ++m)
+          result.table.push_back({QStringLiteral("   ") + QString::fromStdString(r.metrics[m]),
+                                  QObject::tr("%1 / %2 / %3")
+                                      .arg(number(row.minus[m]))
+                                      .arg(number(r.baseline[m]))
+                                      .arg(number(row.plus[m])),
+                                  ""});
       }
       // the setting that moves impact velocity most, per unit of the measured setting
       int largest = -1;
@@ -222,7 +232,181 @@ AnalysisEntry regulation_sensitivity() {
                       : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
                             .arg(QString::fromStdString(r.rows[largest].setting))
                             .arg(number(largest_change));
-      result.plots = plots;
+      return result;
+    };
+  };
+  return e;
+}
+
+/// A trace column as a plotted series (x: its time_s column).
+AnalysisSeries trace_series(const CsvTable& trace, const std::string& column, const QString& label,
+                            bool points = false) {
+  AnalysisSeries series{label, QString::fromStdString(column), {}, {}, points};
+  const int t = trace.column_index("time_s"), c = trace.column_index(column);
+  if (t < 0 || c < 0) return series;
+  for (const auto& row : trace.rows) {
+    series.x.push_back(row[t]);
+    series.y.push_back(row[c]);
+  }
+  return series;
+}
+
+// Fact F5: the hammer alone on its flange, released from horizontal.
+AnalysisEntry swing() {
+  AnalysisEntry e;
+  e.name = QObject::tr("Swing test");
+  e.description = QObject::tr(
+      "The hammer alone on its flange, released from horizontal: the technician counts the "
+      "swings until it stops (about two round trips for a good centre pin)");
+  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+    return [model](const ProgressCallback& progress) {
+      const SwingResult r = swing_test(*model, SwingOptions{}, progress);
+      AnalysisResult result;
+      result.summary = QObject::tr("%1 round trips before it stops (fact F5: 2–3.5).")
+                           .arg(number(r.round_trips));
+      result.table = {{QObject::tr("round trips"), number(r.round_trips), ""},
+                      {QObject::tr("half swings"), QString::number(r.half_swings), ""},
+                      {QObject::tr("stopped after"), number(r.stop_time_s), "s"},
+                      {QObject::tr("sticking angle"), number(r.stick_angle_deg), "deg"},
+                      {QObject::tr("first half period"), number(r.first_half_period_s * 1e3), "ms"},
+                      {QObject::tr("pin to centre of mass"), number(r.pin_to_com_m * 1e3), "mm"}};
+      result.plots.push_back({QObject::tr("Hammer swing"),
+                              QObject::tr("time (s)"),
+                              "time_s",
+                              "s",
+                              QObject::tr("angle from hanging (deg)"),
+                              {trace_series(r.trace, "swing_angle_deg", QObject::tr("angle"))}});
+      return result;
+    };
+  };
+  return e;
+}
+
+// The paper's key characterisation: the key alone falls onto its front-rail punching.
+AnalysisEntry key_fall_test() {
+  AnalysisEntry e;
+  e.name = QObject::tr("Key fall");
+  e.description = QObject::tr(
+      "The key alone released from its rest angle under gravity onto the front-rail punching: "
+      "fall time, impact speed and bounces (the paper's key characterisation)");
+  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+    return [model](const ProgressCallback& progress) {
+      const KeyFallResult r = key_fall(*model, KeyFallOptions{}, progress);
+      AnalysisResult result;
+      result.summary =
+          r.fall_time_s < 0
+              ? QObject::tr("the key never reached the punching.")
+              : QObject::tr("reaches the punching after %1 ms at %2 m/s, %3 bounce(s).")
+                    .arg(number(r.fall_time_s * 1e3))
+                    .arg(number(r.impact_velocity_mps))
+                    .arg(r.bounces);
+      result.table = {{QObject::tr("fall time"), number(r.fall_time_s * 1e3), "ms"},
+                      {QObject::tr("fall distance"), number(r.fall_distance_mm), "mm"},
+                      {QObject::tr("impact velocity"), number(r.impact_velocity_mps), "m/s"},
+                      {QObject::tr("bounces"), QString::number(r.bounces), ""},
+                      {QObject::tr("first rebound"), number(r.first_rebound_mm), "mm"},
+                      {QObject::tr("final dip"), number(r.final_dip_mm), "mm"}};
+      result.plots.push_back({QObject::tr("Key front"),
+                              QObject::tr("time (s)"),
+                              "time_s",
+                              "s",
+                              QObject::tr("key-front dip (mm)"),
+                              {trace_series(r.trace, "key_front_dip_mm", QObject::tr("dip"))}});
+      result.plots.push_back(
+          {QObject::tr("Punching force"),
+           QObject::tr("time (s)"),
+           "time_s",
+           "s",
+           QObject::tr("force (N)"),
+           {trace_series(r.trace, "punching_force_n", QObject::tr("front-rail punching"))}});
+      return result;
+    };
+  };
+  return e;
+}
+
+// Fact F9: static touchweight, Stanwood's definitions.
+AnalysisEntry touchweight() {
+  AnalysisEntry e;
+  e.name = QObject::tr("Touchweight");
+  e.description = QObject::tr(
+      "Downweight and upweight at the key front (gram weights, friction included), balance "
+      "and friction weight (Stanwood), key ratio and strike weight");
+  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+    return [model](const ProgressCallback& progress) {
+      const TouchweightResult r = measure_touchweight(*model, TouchweightOptions{}, progress);
+      AnalysisResult result;
+      result.summary = QObject::tr(
+                           "downweight %1 g, upweight %2 g (fact F9, grand: about "
+                           "45–55 g and 20–30 g).")
+                           .arg(number(r.downweight_g))
+                           .arg(number(r.upweight_g));
+      result.table = {{QObject::tr("downweight"), number(r.downweight_g), "g"},
+                      {QObject::tr("upweight"), number(r.upweight_g), "g"},
+                      {QObject::tr("balance weight"), number(r.balance_weight_g), "g"},
+                      {QObject::tr("friction weight"), number(r.friction_weight_g), "g"},
+                      {QObject::tr("front weight"), number(r.front_weight_g), "g"},
+                      {QObject::tr("strike weight"), number(r.strike_weight_g), "g"},
+                      {QObject::tr("key ratio"), number(r.key_ratio), ""}};
+      const CsvTable t = r.table();
+      AnalysisPlot plot{QObject::tr("Weights along the key dip"),
+                        QObject::tr("key dip (mm)"),
+                        "dip_mm",
+                        "mm",
+                        QObject::tr("weight (g)"),
+                        {}};
+      const int dip = t.column_index("dip_mm");
+      for (const auto& [column, label] : std::vector<std::pair<std::string, QString>>{
+               {"down_weight_g", QObject::tr("downweight")},
+               {"up_weight_g", QObject::tr("upweight")},
+               {"balance_weight_g", QObject::tr("balance weight")}}) {
+        AnalysisSeries series{label, QString::fromStdString(column), {}, {}, false};
+        const int c = t.column_index(column);
+        for (const auto& row : t.rows) {
+          series.x.push_back(row[dip]);
+          series.y.push_back(row[c]);
+        }
+        plot.series.push_back(series);
+      }
+      result.plots.push_back(plot);
+      return result;
+    };
+  };
+  return e;
+}
+
+// Fact F6: the upright's bridle strap and butt spring bring the hammer back.
+AnalysisEntry double_blow() {
+  AnalysisEntry e;
+  e.name = QObject::tr("Double blow: bridle strap and butt spring");
+  e.description = QObject::tr(
+      "Two blows on the upright with and without its bridle strap and butt spring: how fast "
+      "the hammer returns after the first blow, and how hard the second one strikes");
+  e.applies = [](const ActionModel& m) { return m.kind == "upright"; };
+  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+    return [model](const ProgressCallback& progress) {
+      const DoubleBlowStudy r = double_blow_study(*model, DoubleBlowOptions{}, progress);
+      AnalysisResult result;
+      AnalysisPlot plot{QObject::tr("Hammer angle, double blow"),
+                        QObject::tr("time (s)"),
+                        "time_s",
+                        "s",
+                        QObject::tr("hammer angle (deg)"),
+                        {}};
+      for (const DoubleBlowVariant& v : r.variants) {
+        const QString name = QString::fromStdString(v.name);
+        result.table.push_back({name + QObject::tr(": return to rest"),
+                                v.hammer_return_s < 0 ? QObject::tr("not within the run")
+                                                      : number(v.hammer_return_s * 1e3),
+                                "ms"});
+        result.table.push_back({name + QObject::tr(": second impact velocity"),
+                                v.second_impact_t_s < 0 ? QObject::tr("no second strike")
+                                                        : number(v.second_impact_velocity_mps),
+                                "m/s"});
+        plot.series.push_back(trace_series(r.trace, v.name + "_hammer_angle_deg", name));
+      }
+      result.plots.push_back(plot);
+      result.summary = QObject::tr("return times and second blows of the four variants.");
       return result;
     };
   };
@@ -232,7 +416,8 @@ AnalysisEntry regulation_sensitivity() {
 }  // namespace
 
 std::vector<AnalysisEntry> analysis_catalogue() {
-  return {technician_measurements(), impact_velocity_range(), regulation_sensitivity()};
+  return {technician_measurements(), impact_velocity_range(), touchweight(),           swing(),
+          key_fall_test(),           double_blow(),           regulation_sensitivity()};
 }
 
 }  // namespace pat::ui

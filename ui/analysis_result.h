@@ -31,6 +31,7 @@ struct AnalysisPlot {
   QString x_unit;             ///< for the cursor readout, e.g. Hz
   QString y_title;            ///< with the unit, e.g. "impact velocity (m/s)"
   std::vector<AnalysisSeries> series;
+  std::vector<QString> x_categories;  ///< names of x = 0, 1, … (empty: numeric x)
 };
 
 struct AnalysisResult {

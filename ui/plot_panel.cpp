@@ -168,6 +168,7 @@ void PlotPanel::fit_values() {
 void PlotPanel::fit_all() {
   setting_range_ = true;
   plot_->rescaleAxes();
+  if (categories_ > 0) plot_->xAxis->setRange(-0.5, double(categories_) - 0.5);
   setting_range_ = false;
   fit_values();
 }
@@ -269,6 +270,14 @@ void PlotPanel::set_x_axis(const QString& title, const QString& column, const QS
   x_readout_unit_ = readout_unit;
   x_readout_scale_ = readout_scale;
   request_replot();
+}
+
+void PlotPanel::set_x_categories(const std::vector<QString>& names) {
+  auto ticker = QSharedPointer<QCPAxisTickerText>::create();
+  for (std::size_t i = 0; i < names.size(); ++i) ticker->addTick(double(i), names[i]);
+  plot_->xAxis->setTicker(ticker);
+  plot_->xAxis->setTickLabelRotation(names.size() > 4 ? 30 : 0);
+  categories_ = names.size();
 }
 
 void PlotPanel::set_points_only(int series) {

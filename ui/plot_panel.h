@@ -45,6 +45,9 @@ class PlotPanel : public QWidget {
   /// Δ`symbol` and x multiplied by readout_scale in readout_unit (time: t, ms, scale 1000).
   void set_x_axis(const QString& title, const QString& column, const QString& symbol,
                   const QString& readout_unit, double readout_scale);
+  /// Names the integer positions 0, 1, … of the x axis (categories such as settings) and
+  /// leaves half a category of margin at each end.
+  void set_x_categories(const std::vector<QString>& names);
   /// Draws a series as markers without a line (one result per cycle or per case).
   void set_points_only(int series);
 
@@ -86,6 +89,7 @@ class PlotPanel : public QWidget {
   QString y_title_;
   QString x_column_ = "time_s";
   QString x_symbol_ = "t";
+  std::size_t categories_ = 0;  ///< named x positions (0: a numeric axis)
   QString x_readout_unit_ = "ms";
   double x_readout_scale_ = 1e3;
   QCustomPlot* plot_;

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "analysis/parallel_runs.h"
+#include "analysis/touchweight.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "inputs/key_input.h"
@@ -47,8 +48,18 @@ SensitivityMetricGroup blow_metrics(double key_force_n) {
   return group;
 }
 
+SensitivityMetricGroup touchweight_metrics() {
+  SensitivityMetricGroup group;
+  group.names = {"downweight_g", "upweight_g"};
+  group.evaluate = [](const ActionModel& model, const RestState&) {
+    const TouchweightResult t = measure_touchweight(model);
+    return std::vector<double>{t.downweight_g, t.upweight_g};
+  };
+  return group;
+}
+
 std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n) {
-  return {blow_metrics(key_force_n)};
+  return {blow_metrics(key_force_n), touchweight_metrics()};
 }
 
 SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,

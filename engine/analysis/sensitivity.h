@@ -30,6 +30,9 @@ SensitivityMetricGroup blow_metrics(double key_force_n = 20.0);
 /// static touchweight and repetition limit where available.
 std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n = 20.0);
 
+/// downweight_g and upweight_g (static touchweight, analysis/touchweight.h).
+SensitivityMetricGroup touchweight_metrics();
+
 struct SensitivityOptions {
   double step_mm = 0.5;  ///< each adjuster at −step and +step
   std::vector<SensitivityMetricGroup> groups = sensitivity_metric_groups();

@@ -8,6 +8,7 @@
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QPlainTextEdit>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QTemporaryDir>
@@ -179,7 +180,12 @@ void RegulationPanelTest::broken_preset_names_the_field() {
   QFile source(QString::fromStdString(pat::preset_directory()) + "/grand.json");
   QVERIFY(source.open(QIODevice::ReadOnly));
   QString text = QString::fromUtf8(source.readAll());
-  text.replace("\"mass_g\": 95", "\"mass_g\": -95");
+  // the first body's mass made negative (whatever its value)
+  const QRegularExpression mass("\"mass_g\":\\s*([0-9])");
+  const QRegularExpressionMatch found = mass.match(text);
+  QVERIFY(found.hasMatch());
+  text.replace(found.capturedStart(), found.capturedLength(),
+               "\"mass_g\": -" + found.captured(1));
   const QString path = dir.filePath("broken.json");
   QFile broken(path);
   QVERIFY(broken.open(QIODevice::WriteOnly));

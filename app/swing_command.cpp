@@ -1,0 +1,55 @@
+// pianoaction swing: the hammer swing test on its flange (DESIGN.md fact F5, section 5).
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "action_setup.h"
+#include "analysis/swing_test.h"
+#include "commands.h"
+#include "core/error.h"
+
+namespace pat::app {
+
+int run_swing(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--release-deg"},
+                       {"--json"});
+  const ActionModel model = load_configured_action(cl);
+  SwingOptions options;
+  if (cl.has("--release-deg")) {
+    const double degrees = cl.positive_number("--release-deg");
+    if (degrees > 179.0) throw InputError("--release-deg: at most 179 degrees from hanging");
+    options.release_angle_rad = degrees * M_PI / 180.0;
+  }
+  const SwingResult result = swing_test(model, options);
+  const std::string out_path = cl.value_or("--out", "");
+  if (!out_path.empty()) {
+    CsvTable table = result.trace;
+    table.metadata["action"] = model.name;
+    table.metadata["analysis"] = "swing test: hammer alone on its flange, released from " +
+                                 std::to_string(options.release_angle_rad * 180.0 / M_PI) +
+                                 " deg from hanging";
+    write_csv(out_path, table);
+  }
+  if (cl.has("--json")) {
+    nlohmann::json out{{"round_trips", result.round_trips},
+                       {"half_swings", result.half_swings},
+                       {"stopped", result.stopped},
+                       {"stop_time_s", result.stop_time_s},
+                       {"stick_angle_deg", result.stick_angle_deg},
+                       {"first_half_period_s", result.first_half_period_s},
+                       {"turning_amplitudes_deg", result.turning_amplitudes_deg},
+                       {"action", model.kind}};
+    std::cout << out.dump(1) << "\n";
+  } else {
+    std::cout << model.name << ": hammer swing test\n  " << result.round_trips << " round trips ("
+              << result.half_swings << " half swings), "
+              << (result.stopped ? "stopped" : "still swinging") << " at " << result.stop_time_s
+              << " s; sticks within " << result.stick_angle_deg
+              << " deg of hanging\n  turning points (deg from hanging):";
+    for (double a : result.turning_amplitudes_deg) std::cout << " " << a;
+    std::cout << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,56 @@
+// pianoaction touchweight: static downweight and upweight at the key front (Stanwood; fact F9).
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "action_setup.h"
+#include "analysis/touchweight.h"
+#include "commands.h"
+#include "core/error.h"
+#include "model/model_variations.h"
+
+namespace pat::app {
+
+int run_touchweight(const std::vector<std::string>& args) {
+  const CommandLine cl(
+      args, {"--action", "--set", "--without", "--out", "--spring-factor", "--key-lead-g"},
+      {"--json"});
+  ActionModel model = load_configured_action(cl);
+  for (const std::string& assignment : cl.values("--spring-factor")) {
+    const std::size_t eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw InputError("--spring-factor " + assignment + ": expected SPRING=FACTOR");
+    model = with_spring_factor(
+        model, assignment.substr(0, eq),
+        parse_number(assignment.substr(eq + 1), "--spring-factor " + assignment));
+  }
+  if (cl.has("--key-lead-g"))
+    model = with_key_front_lead(model, parse_number(cl.value("--key-lead-g"), "--key-lead-g"));
+  const TouchweightResult result = measure_touchweight(model);
+  const std::string out_path = cl.value_or("--out", "");
+  if (!out_path.empty()) {
+    CsvTable table = result.table();
+    table.metadata["action"] = model.name;
+    table.metadata["analysis"] = "quasi-static touchweight at the key front (Coulomb friction)";
+    write_csv(out_path, table);
+  }
+  if (cl.has("--json")) {
+    nlohmann::json out{{"downweight_g", result.downweight_g},
+                       {"upweight_g", result.upweight_g},
+                       {"balance_weight_g", result.balance_weight_g},
+                       {"friction_weight_g", result.friction_weight_g},
+                       {"key_ratio", result.key_ratio},
+                       {"strike_weight_g", result.strike_weight_g},
+                       {"front_weight_g", result.front_weight_g},
+                       {"action", model.kind}};
+    std::cout << out.dump(1) << "\n";
+  } else {
+    std::cout << model.name << ": static touchweight\n  downweight " << result.downweight_g
+              << " g, upweight " << result.upweight_g << " g, balance weight "
+              << result.balance_weight_g << " g, friction weight " << result.friction_weight_g
+              << " g\n  key ratio " << result.key_ratio << ", strike weight "
+              << result.strike_weight_g << " g, front weight " << result.front_weight_g << " g\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,109 @@
+// Static touchweight (analysis/touchweight.h): closed forms of the virtual-work balance (lead at
+// the key front, friction of the balance pin alone, no friction), fact F9 and the directions a
+// technician expects.
+#include "analysis/touchweight.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "model/model_variations.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+/// The action with every joint and contact frictionless except the key's balance pin.
+ActionModel only_key_friction(ActionModel model) {
+  for (std::size_t b = 0; b < model.bodies.size(); ++b)
+    if (static_cast<int>(b) != model.landmarks.key) model.bodies[b].friction = JointFriction{};
+  for (Contact& c : model.contacts) c.friction.mu = 0.0;
+  return model;
+}
+
+TEST(Touchweight, WithoutFrictionDownweightEqualsUpweight) {
+  ActionModel grand = only_key_friction(test::shipped("grand"));
+  grand.bodies[grand.landmarks.key].friction = JointFriction{};
+  const TouchweightResult r = measure_touchweight(grand);
+  EXPECT_NEAR(r.friction_weight_g, 0.0, 1e-9);
+  EXPECT_NEAR(r.downweight_g, r.upweight_g, 1e-9);
+}
+
+TEST(Touchweight, BalancePinFrictionAloneGivesItsTorqueOverTheFrontArm) {
+  // only the key turns against friction: Ff = A_key / (dy/dθ), the key-front arm
+  const ActionModel grand = only_key_friction(test::shipped("grand"));
+  const TouchweightResult r = measure_touchweight(grand);
+  const Body& key = grand.bodies[grand.landmarks.key];
+  const double arm = std::abs(grand.landmarks.key_front.x() - key.pivot.x());
+  const double expected_g = key.friction.a_nm / arm / kGravity * 1e3;
+  // the arm changes by < 0.1 % over the few degrees the key turns (front 22 mm above the pin
+  // and a 2.6° stroke: 22·sin 2.6° / 220 ≈ 0.5 %, its cosine part ≈ 0.1 %)
+  for (const TouchweightPoint& p : r.curve)
+    EXPECT_NEAR(p.friction_force_n / kGravity * 1e3, expected_g, 0.006 * expected_g);
+}
+
+TEST(Touchweight, LeadAtTheKeyFrontLowersBalanceWeightGramForGram) {
+  // a mass at the key front acts with the very arm of the weights that measure the touch
+  // (Stanwood: +1 g front weight → −1 g balance weight); friction does not change
+  const ActionModel grand = test::shipped("grand");
+  const TouchweightResult before = measure_touchweight(grand);
+  const TouchweightResult after = measure_touchweight(with_key_front_lead(grand, 10.0));
+  // the rest state (from which the dips are counted) moves by the back-rail felt's extra
+  // compression only, a few µm: 0.05 g
+  EXPECT_NEAR(after.balance_weight_g, before.balance_weight_g - 10.0, 0.05);
+  EXPECT_NEAR(after.friction_weight_g, before.friction_weight_g, 0.05);
+  EXPECT_NEAR(after.front_weight_g, before.front_weight_g + 10.0, 0.05);
+}
+
+TEST(Touchweight, GrandIsInTheUsualRanges) {
+  // fact F9 (Stanwood; domain notes): downweight 45–55 g, upweight 20–30 g
+  const TouchweightResult r = measure_touchweight(test::shipped("grand"));
+  EXPECT_GE(r.downweight_g, 45.0);
+  EXPECT_LE(r.downweight_g, 55.0);
+  EXPECT_GE(r.upweight_g, 20.0);
+  EXPECT_LE(r.upweight_g, 30.0);
+  EXPECT_NEAR(r.balance_weight_g, 0.5 * (r.downweight_g + r.upweight_g), 1e-9);
+  EXPECT_NEAR(r.friction_weight_g, 0.5 * (r.downweight_g - r.upweight_g), 1e-9);
+  // key ratio about 0.5 (DESIGN.md section 2; PTL default 0.5, a Steinway L 0.46)
+  EXPECT_GT(r.key_ratio, 0.4);
+  EXPECT_LT(r.key_ratio, 0.65);
+  // strike weight of a mid-range hammer: Stanwood's table spans 3.5–14.8 g
+  EXPECT_GT(r.strike_weight_g, 3.5);
+  EXPECT_LT(r.strike_weight_g, 14.8);
+}
+
+TEST(Touchweight, StrongerRepetitionSpringMakesTheGrandLighter) {
+  // the repetition spring lifts the hammer through the lever: a stronger spring takes weight
+  // off the key (balance weight, downweight and upweight fall), a weaker one adds balance
+  // weight and downweight. (Its upweight does not rise: with a weak spring the friction weight
+  // grows by about 1 g, more than the balance weight.)
+  const ActionModel grand = test::shipped("grand");
+  const TouchweightResult normal = measure_touchweight(grand);
+  const TouchweightResult strong =
+      measure_touchweight(with_spring_factor(grand, "repetition_spring", 1.5));
+  const TouchweightResult weak =
+      measure_touchweight(with_spring_factor(grand, "repetition_spring", 0.5));
+  EXPECT_LT(strong.downweight_g, normal.downweight_g);
+  EXPECT_LT(strong.upweight_g, normal.upweight_g);
+  EXPECT_LT(strong.balance_weight_g, normal.balance_weight_g);
+  EXPECT_GT(weak.downweight_g, normal.downweight_g);
+  EXPECT_GT(weak.balance_weight_g, normal.balance_weight_g);
+}
+
+TEST(Touchweight, SpringFactorAndLeadRejectBadValues) {
+  const ActionModel grand = test::shipped("grand");
+  EXPECT_THROW(with_spring_factor(grand, "no_such_spring", 1.0), InputError);
+  EXPECT_THROW(with_spring_factor(grand, "repetition_spring", -1.0), InputError);
+  EXPECT_THROW(with_key_front_lead(grand, -1000.0), InputError);
+}
+
+TEST(Touchweight, CancelsThroughItsProgressCallback) {
+  EXPECT_THROW(
+      measure_touchweight(test::shipped("grand"), {},
+                          [](double fraction, const std::string&) { return fraction < 0.2; }),
+      Cancelled);
+}
+
+}  // namespace
+}  // namespace pat
