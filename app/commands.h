@@ -11,5 +11,9 @@ int run_simulate(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 int run_regulate(const std::vector<std::string>& args);
 int run_deregulate(const std::vector<std::string>& args);
+int run_sweep(const std::vector<std::string>& args);
+/// `study WHAT ...`: dispatches on the study name (study_command.cpp).
+int run_study(const std::vector<std::string>& args);
+int run_study_compare(const std::vector<std::string>& args);
 
 }  // namespace pat::app

@@ -25,6 +25,10 @@ usage:
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--json]
+  pianoaction sweep     --action A --stroke full|half [--mode chirp|steps] [--fmax HZ]
+                        [--fstart HZ] [--rate HZ_PER_S] [--step-hz HZ] [--window CYCLES]
+                        [--set ADJUSTER=MM]... [--out CSV] [--plot FILE] [--json]
+  pianoaction study compare [--input SPEC] [--duration S] [--fmax HZ] [--out CSV] [--json]
   pianoaction bench     [--json] [--duration S]
 
 input SPEC:
@@ -81,6 +85,8 @@ int main(int argc, char** argv) {
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
+    if (command == "sweep") return pat::app::run_sweep(args);
+    if (command == "study") return pat::app::run_study(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

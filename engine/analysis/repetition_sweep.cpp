@@ -1,0 +1,297 @@
+#include "analysis/repetition_sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+
+#include "analysis/parallel_runs.h"
+#include "core/error.h"
+#include "core/format.h"
+#include "core/types.h"
+#include "sim/key_travel.h"
+
+namespace pat {
+
+std::string stroke_name(Stroke stroke) {
+  return stroke == Stroke::full ? "full" : "half";
+}
+
+std::string sweep_mode_name(SweepMode mode) {
+  return mode == SweepMode::chirp ? "chirp" : "steps";
+}
+
+Stroke parse_stroke(const std::string& word, const std::string& what) {
+  if (word == "full") return Stroke::full;
+  if (word == "half") return Stroke::half;
+  throw InputError(what + ": unknown stroke '" + word + "' (expected full or half)");
+}
+
+SweepMode parse_sweep_mode(const std::string& word, const std::string& what) {
+  if (word == "chirp") return SweepMode::chirp;
+  if (word == "steps") return SweepMode::steps;
+  throw InputError(what + ": unknown mode '" + word + "' (expected chirp or steps)");
+}
+
+std::string outcome_name(CycleOutcome outcome) {
+  switch (outcome) {
+    case CycleOutcome::struck_once:
+      return "ok";
+    case CycleOutcome::missed:
+      return "missed";
+    case CycleOutcome::double_strike:
+      return "double";
+    case CycleOutcome::stopped:
+      return "stopped";
+  }
+  return "?";
+}
+
+std::vector<double> cycle_boundaries(Stroke stroke, double f0_hz, double rate_hz_per_s,
+                                     double t_end_s) {
+  // τ at which the phase reaches φ: π r τ² + 2π f0 τ − φ = 0
+  auto time_of_phase = [&](double phi) {
+    const double turns = phi / (2.0 * kPi);
+    if (rate_hz_per_s == 0.0) return turns / f0_hz;
+    return (-f0_hz + std::sqrt(f0_hz * f0_hz + 2.0 * rate_hz_per_s * turns)) / rate_hz_per_s;
+  };
+  std::vector<double> boundaries{0.0};
+  const double origin = stroke == Stroke::half ? 0.5 / f0_hz : 0.0;  // the first descent
+  const double first_phase = stroke == Stroke::half ? kPi : 2.0 * kPi;
+  for (int k = 0;; ++k) {
+    const double t = origin + time_of_phase(first_phase + 2.0 * kPi * k);
+    if (t > t_end_s + 1e-12) break;
+    boundaries.push_back(t);
+  }
+  return boundaries;
+}
+
+std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
+                                         const std::vector<Impact>& impacts, double merge_s,
+                                         int settle_cycles, double run_end_s, bool stopped) {
+  std::vector<CycleResult> cycles;
+  std::size_t next_impact = 0;
+  double last_strike = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < boundaries.size(); ++k) {
+    CycleResult cycle;
+    cycle.t_start_s = boundaries[k];
+    cycle.t_end_s = boundaries[k + 1];
+    cycle.frequency_hz = 1.0 / (cycle.t_end_s - cycle.t_start_s);
+    cycle.judged = static_cast<int>(k) >= settle_cycles;
+    if (stopped && cycle.t_start_s > run_end_s) break;
+    while (next_impact < impacts.size() && impacts[next_impact].t_s < cycle.t_end_s) {
+      const Impact& impact = impacts[next_impact++];
+      const bool new_strike = impact.t_s - last_strike >= merge_s;
+      last_strike = impact.t_s;  // a chatter chain extends from its latest contact
+      if (!new_strike || impact.t_s < cycle.t_start_s) continue;
+      if (cycle.strikes++ == 0) cycle.strike_velocity_mps = impact.velocity_mps;
+    }
+    if (stopped && run_end_s < cycle.t_end_s) {
+      cycle.outcome = CycleOutcome::stopped;
+      cycles.push_back(cycle);
+      break;
+    }
+    cycle.outcome = cycle.strikes == 1   ? CycleOutcome::struck_once
+                    : cycle.strikes == 0 ? CycleOutcome::missed
+                                         : CycleOutcome::double_strike;
+    cycles.push_back(cycle);
+  }
+  return cycles;
+}
+
+void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, SweepResult& result) {
+  result.max_frequency_hz.reset();
+  result.first_failure.reset();
+  result.limit_found = false;
+  std::size_t end_of_best = cycles.size();  // index of the cycle ending the highest window
+  int successes_in_a_row = 0;
+  for (std::size_t k = 0; k < cycles.size(); ++k) {
+    const CycleResult& cycle = cycles[k];
+    if (!cycle.judged) continue;
+    successes_in_a_row = cycle.success() ? successes_in_a_row + 1 : 0;
+    if (successes_in_a_row >= window_cycles &&
+        (!result.max_frequency_hz || cycle.frequency_hz > *result.max_frequency_hz)) {
+      result.max_frequency_hz = cycle.frequency_hz;
+      end_of_best = k;
+    }
+  }
+  const std::size_t from = result.max_frequency_hz ? end_of_best + 1 : 0;
+  for (std::size_t k = from; k < cycles.size(); ++k) {
+    if (!cycles[k].judged || cycles[k].success()) continue;
+    result.first_failure = cycles[k];
+    result.limit_found = true;
+    return;
+  }
+}
+
+void steps_maximum(const std::vector<FrequencyResult>& frequencies, SweepResult& result) {
+  result.max_frequency_hz.reset();
+  result.first_failure.reset();
+  result.limit_found = false;
+  std::size_t from = 0;
+  for (std::size_t i = 0; i < frequencies.size(); ++i) {
+    if (!frequencies[i].passed) continue;
+    result.max_frequency_hz = frequencies[i].frequency_hz;
+    from = i + 1;
+  }
+  for (std::size_t i = from; i < frequencies.size(); ++i) {
+    if (frequencies[i].passed) continue;
+    result.limit_found = true;
+    for (const CycleResult& cycle : frequencies[i].cycles) {
+      if (!cycle.success()) {  // a run that stops while settling fails there
+        result.first_failure = cycle;
+        break;
+      }
+    }
+    return;
+  }
+}
+
+std::string chirp_spec(const SweepOptions& options) {
+  const double seconds = (options.f_max_hz - options.f_start_hz) / options.chirp_rate_hz_per_s;
+  // 12 digits: the run's phase must be the one cycle_boundaries assumes
+  return "motion:chirp:" + format_number(options.f_start_hz, 12) + ":" +
+         format_number(options.f_max_hz, 12) + ":" + format_number(seconds, 12) + ":" +
+         stroke_name(options.stroke);
+}
+
+namespace {
+
+void check_options(const SweepOptions& o) {
+  auto positive = [](double value, const std::string& what) {
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw InputError(what + " must be a positive number (got " + format_number(value) + ")");
+  };
+  positive(o.f_start_hz, "sweep start frequency");
+  positive(o.f_max_hz, "sweep maximum frequency (--fmax)");
+  positive(o.chirp_rate_hz_per_s, "chirp rate");
+  positive(o.step_hz, "frequency step");
+  positive(o.step_s, "integrator step");
+  if (!(o.f_max_hz > o.f_start_hz))
+    throw InputError("sweep maximum frequency (--fmax) must be above the start frequency " +
+                     format_number(o.f_start_hz) + " Hz (got " + format_number(o.f_max_hz) +
+                     " Hz)");
+  if (o.settle_cycles < 0) throw InputError("settling cycles must not be negative");
+  if (o.window_cycles < 1) throw InputError("steady window must have at least one cycle");
+}
+
+SimulationOptions simulation_options(const SweepOptions& o, double duration) {
+  SimulationOptions options;
+  options.integrator = o.integrator;
+  options.integrator_options.fixed_step_s = o.step_s;
+  options.duration_s = duration;
+  options.sample_interval_s = 0.0;
+  return options;
+}
+
+std::vector<Impact> impacts_of(const SimulationResult& run) {
+  std::vector<Impact> impacts;
+  for (const SimEvent& e : run.events)
+    if (e.type == "impact") impacts.push_back({e.t, e.hammer_velocity});
+  return impacts;
+}
+
+// Keep the simulated time of a run a whole number of cycles plus a little, so that the last
+// boundary falls inside the run.
+constexpr double kTailS = 1e-3;
+
+void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptions& o,
+               const ProgressCallback& progress, SweepResult& result) {
+  const auto input = parse_input_spec(chirp_spec(o), input_context(model, rest));
+  const double origin = o.stroke == Stroke::half ? 0.5 / o.f_start_hz : 0.0;
+  const double sweep_s = (o.f_max_hz - o.f_start_hz) / o.chirp_rate_hz_per_s;
+  const double duration = origin + sweep_s + kTailS;
+  SimulationOptions options = simulation_options(o, duration);
+  options.sample_interval_s = o.trace_interval_s;
+  ProgressReporter reporter(progress, 1);
+  double next_report = 0.0;
+  options.on_step = [&](double t) {
+    if (t < next_report) return true;
+    next_report = t + 0.01;  // every 10 ms of simulated time
+    const double f = o.f_start_hz + o.chirp_rate_hz_per_s * std::max(0.0, t - origin);
+    reporter.partial(t / duration, format_number(std::round(f * 10.0) / 10.0) + " Hz of " +
+                                       format_number(o.f_max_hz));
+    return !reporter.cancelled();
+  };
+  SimulationResult run = simulate(model, input.get(), options, &rest);
+  reporter.throw_if_cancelled();
+  const bool stopped = run.status != "ok";
+  result.run_status = run.status;
+  result.stop_cause = run.stop_cause;
+  result.simulated_s = run.end_time;
+  result.cycles =
+      classify_cycles(cycle_boundaries(o.stroke, o.f_start_hz, o.chirp_rate_hz_per_s, duration),
+                      impacts_of(run), o.strike_merge_s, o.settle_cycles, run.end_time, stopped);
+  result.trace = std::move(run.trace);
+  chirp_maximum(result.cycles, o.window_cycles, result);
+  reporter.item_done("done");
+}
+
+void run_steps(const ActionModel& model, const RestState& rest, const SweepOptions& o,
+               const ProgressCallback& progress, SweepResult& result) {
+  std::vector<double> frequencies;
+  for (int i = 0;; ++i) {
+    const double f = o.f_start_hz + i * o.step_hz;
+    if (f > o.f_max_hz + 1e-9) break;
+    frequencies.push_back(f);
+  }
+  const InputContext context = input_context(model, rest);
+  std::vector<FrequencyResult> results(frequencies.size());
+  std::vector<double> simulated(frequencies.size(), 0.0);
+  ProgressReporter reporter(progress, frequencies.size());
+  run_parallel(
+      frequencies.size(),
+      [&](std::size_t i) {
+        const double f = frequencies[i];
+        const auto input = parse_input_spec(
+            "motion:sine:" + format_number(f, 12) + ":" + stroke_name(o.stroke), context);
+        const int cycles = o.settle_cycles + o.window_cycles;
+        const double origin = o.stroke == Stroke::half ? 0.5 / f : 0.0;
+        const double duration = origin + cycles / f + kTailS;
+        SimulationOptions options = simulation_options(o, duration);
+        options.on_step = [&](double) { return !reporter.cancelled(); };
+        const SimulationResult run = simulate(model, input.get(), options, &rest);
+        FrequencyResult& out = results[i];
+        out.frequency_hz = f;
+        out.run_status = run.status;
+        out.stop_cause = run.stop_cause;
+        out.cycles =
+            classify_cycles(cycle_boundaries(o.stroke, f, 0.0, duration), impacts_of(run),
+                            o.strike_merge_s, o.settle_cycles, run.end_time, run.status != "ok");
+        int judged = 0;
+        for (const CycleResult& c : out.cycles) {
+          if (!c.judged) continue;
+          ++judged;
+          if (!c.success()) ++out.failed_cycles;
+        }
+        out.passed = out.failed_cycles == 0 && judged == o.window_cycles;
+        simulated[i] = run.end_time;
+        reporter.item_done(format_number(f) + " Hz");
+      },
+      &reporter, o.threads);
+  reporter.throw_if_cancelled();
+  result.frequencies = std::move(results);
+  for (double s : simulated) result.simulated_s += s;
+  steps_maximum(result.frequencies, result);
+}
+
+}  // namespace
+
+SweepResult run_repetition_sweep(const ActionModel& model, const SweepOptions& options,
+                                 const ProgressCallback& progress) {
+  check_options(options);
+  const auto start = std::chrono::steady_clock::now();
+  const RestState rest = find_rest_state(model);
+  SweepResult result;
+  result.stroke = options.stroke;
+  result.mode = options.mode;
+  if (options.mode == SweepMode::chirp)
+    run_chirp(model, rest, options, progress, result);
+  else
+    run_steps(model, rest, options, progress, result);
+  result.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace pat
