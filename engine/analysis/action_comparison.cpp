@@ -84,8 +84,7 @@ ComparisonResult compare_actions(const std::vector<const ActionModel*>& models,
             out.first_impact = e;
             break;
           }
-          reporter.item_done(out.action + " run");
-          return;
+          return;  // run_parallel counts the finished runs
         }
         SweepOptions sweep = o.sweep;
         sweep.stroke = kind == 1 ? Stroke::full : Stroke::half;
@@ -93,7 +92,6 @@ ComparisonResult compare_actions(const std::vector<const ActionModel*>& models,
         sweep.f_max_hz = kind == 1 ? o.f_max_full_hz : o.f_max_half_hz;
         SweepResult limit = run_repetition_sweep(model, sweep, keep_going);
         (kind == 1 ? out.full_stroke : out.half_stroke) = std::move(limit);
-        reporter.item_done(out.action + " " + stroke_name(sweep.stroke) + " stroke sweep");
       },
       &reporter);
   reporter.throw_if_cancelled();

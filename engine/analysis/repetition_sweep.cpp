@@ -266,8 +266,7 @@ void run_steps(const ActionModel& model, const RestState& rest, const SweepOptio
           if (!c.success()) ++out.failed_cycles;
         }
         out.passed = out.failed_cycles == 0 && judged == o.window_cycles;
-        simulated[i] = run.end_time;
-        reporter.item_done(format_number(f) + " Hz");
+        simulated[i] = run.end_time;  // run_parallel counts the finished frequency
       },
       &reporter, o.threads);
   reporter.throw_if_cancelled();

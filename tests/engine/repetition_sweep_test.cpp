@@ -30,7 +30,8 @@ void expect_turning_points(const std::string& spec, Stroke stroke, double f0, do
     const KeyMotionSample m = input->motion(b[k]);
     EXPECT_NEAR(m.angle, top, 1e-9) << spec << " boundary " << k;
     EXPECT_NEAR(m.rate, 0.0, 1e-6) << spec << " boundary " << k;
-    EXPECT_LT(m.acceleration, 0.0) << "a top, not a bottom: " << spec << " boundary " << k;
+    // the key's highest point is the angle's minimum (angles are positive down)
+    EXPECT_GT(m.acceleration, 0.0) << "a top, not a bottom: " << spec << " boundary " << k;
     EXPECT_GT(b[k], b[k - 1]);
     EXPECT_LE(b[k], t_end);
   }
