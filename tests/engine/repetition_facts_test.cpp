@@ -32,30 +32,44 @@ const Case kCases[] = {
 };
 constexpr std::size_t kCaseCount = sizeof(kCases) / sizeof(kCases[0]);
 
-// Max frequency of every case at a chirp rate, computed once per rate for the whole suite.
-const std::vector<SweepResult>& sweeps_at(double rate_hz_per_s) {
-  static std::map<double, std::vector<SweepResult>> cache;
-  auto found = cache.find(rate_hz_per_s);
-  if (found != cache.end()) return found->second;
+// Sweep results by (case, chirp rate). ctest runs each test in its own process, so each test
+// computes only the sweeps it needs (the missing ones in parallel); within one process (a plain
+// engine_tests run) they are shared.
+using SweepKey = std::pair<std::size_t, double>;
+std::map<SweepKey, SweepResult>& sweep_cache() {
+  static std::map<SweepKey, SweepResult> cache;
+  return cache;
+}
+
+void compute_sweeps(const std::vector<SweepKey>& wanted) {
   static const ActionModel grand = test::shipped("grand"), upright = test::shipped("upright");
-  std::vector<SweepResult> results(kCaseCount);
-  run_parallel(kCaseCount, [&](std::size_t i) {
+  std::vector<SweepKey> missing;
+  for (const SweepKey& key : wanted)
+    if (!sweep_cache().count(key)) missing.push_back(key);
+  std::vector<SweepResult> results(missing.size());
+  run_parallel(missing.size(), [&](std::size_t j) {
+    const Case& c = kCases[missing[j].first];
     SweepOptions o;
-    o.stroke = kCases[i].stroke;
-    o.f_start_hz = kCases[i].f_start_hz;
-    o.f_max_hz = kCases[i].f_max_hz;
-    o.chirp_rate_hz_per_s = rate_hz_per_s;
-    results[i] =
-        run_repetition_sweep(std::string(kCases[i].action) == "grand" ? grand : upright, o);
+    o.stroke = c.stroke;
+    o.f_start_hz = c.f_start_hz;
+    o.f_max_hz = c.f_max_hz;
+    o.chirp_rate_hz_per_s = missing[j].second;
+    results[j] = run_repetition_sweep(std::string(c.action) == "grand" ? grand : upright, o);
   });
-  for (std::size_t i = 0; i < kCaseCount; ++i) {
-    const SweepResult& r = results[i];
-    std::printf("%s %s stroke at %.2f Hz/s: max %.2f Hz%s (%s)\n", kCases[i].action,
-                stroke_name(kCases[i].stroke).c_str(), rate_hz_per_s,
-                r.max_frequency_hz.value_or(0.0), r.limit_found ? "" : " (no limit found)",
+  for (std::size_t j = 0; j < missing.size(); ++j) {
+    const Case& c = kCases[missing[j].first];
+    const SweepResult& r = results[j];
+    std::printf("%s %s stroke at %.2f Hz/s: max %.2f Hz%s (%s)\n", c.action,
+                stroke_name(c.stroke).c_str(), missing[j].second, r.max_frequency_hz.value_or(0.0),
+                r.limit_found ? "" : " (no limit found)",
                 r.first_failure ? outcome_name(r.first_failure->outcome).c_str() : "-");
+    sweep_cache()[missing[j]] = r;
   }
-  return cache.emplace(rate_hz_per_s, std::move(results)).first->second;
+}
+
+const SweepResult& sweep(std::size_t i, double rate_hz_per_s) {
+  compute_sweeps({{i, rate_hz_per_s}});
+  return sweep_cache().at({i, rate_hz_per_s});
 }
 
 double limit(const SweepResult& r) {
@@ -66,14 +80,15 @@ double limit(const SweepResult& r) {
 }
 
 void expect_in_f4_range(std::size_t i) {
-  const double f = limit(sweeps_at(1.0)[i]);  // the paper's Fig. 19 rate
+  const double f = limit(sweep(i, 1.0));  // the paper's Fig. 19 rate
   EXPECT_GE(f, kCases[i].low_hz);
   EXPECT_LE(f, kCases[i].high_hz);
 }
 
 // DESIGN.md F4 / issue 4: the sweep result is stable to ±0.5 Hz when the chirp rate is halved
 void expect_stable_when_rate_halved(std::size_t i) {
-  EXPECT_NEAR(limit(sweeps_at(0.5)[i]), limit(sweeps_at(1.0)[i]), 0.5);
+  compute_sweeps({{i, 1.0}, {i, 0.5}});
+  EXPECT_NEAR(limit(sweep(i, 0.5)), limit(sweep(i, 1.0)), 0.5);
 }
 
 TEST(RepetitionFacts, F4_UprightFullStrokeAbout11To13Hz) {
@@ -87,8 +102,9 @@ TEST(RepetitionFacts, F4_GrandHalfStrokeAbout19To20Hz) {
 }
 
 TEST(RepetitionFacts, F4_HalfStrokeFasterThanFullAndGrandAtLeastAsFastAsUpright) {
-  const std::vector<SweepResult>& r = sweeps_at(1.0);
-  const double upright_full = limit(r[0]), grand_full = limit(r[1]), grand_half = limit(r[2]);
+  compute_sweeps({{0, 1.0}, {1, 1.0}, {2, 1.0}});
+  const double upright_full = limit(sweep(0, 1.0)), grand_full = limit(sweep(1, 1.0)),
+               grand_half = limit(sweep(2, 1.0));
   EXPECT_GT(grand_half, grand_full);    // the repetition lever lets the jack reset at half release
   EXPECT_GE(grand_full, upright_full);  // the double escapement repeats at least as fast
 }
