@@ -104,47 +104,59 @@ void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, Sw
   result.max_frequency_hz.reset();
   result.first_failure.reset();
   result.limit_found = false;
-  std::size_t end_of_best = cycles.size();  // index of the cycle ending the highest window
   int successes_in_a_row = 0;
-  for (std::size_t k = 0; k < cycles.size(); ++k) {
-    const CycleResult& cycle = cycles[k];
+  bool established = false;  // a whole steady window has succeeded
+  for (const CycleResult& cycle : cycles) {
     if (!cycle.judged) continue;
-    successes_in_a_row = cycle.success() ? successes_in_a_row + 1 : 0;
-    if (successes_in_a_row >= window_cycles &&
-        (!result.max_frequency_hz || cycle.frequency_hz > *result.max_frequency_hz)) {
-      result.max_frequency_hz = cycle.frequency_hz;
-      end_of_best = k;
+    if (cycle.success()) {
+      established = established || ++successes_in_a_row >= window_cycles;
+      if (established) result.max_frequency_hz = cycle.frequency_hz;
+      continue;
     }
+    if (established) {  // the failure that ends the repeating range
+      result.first_failure = cycle;
+      result.limit_found = true;
+      return;
+    }
+    if (!result.first_failure) result.first_failure = cycle;  // below the repeating range
+    successes_in_a_row = 0;
   }
-  const std::size_t from = result.max_frequency_hz ? end_of_best + 1 : 0;
-  for (std::size_t k = from; k < cycles.size(); ++k) {
-    if (!cycles[k].judged || cycles[k].success()) continue;
-    result.first_failure = cycles[k];
-    result.limit_found = true;
-    return;
+  if (established) {
+    result.first_failure.reset();  // no failure above the maximum up to the last cycle
+  } else {
+    result.limit_found = result.first_failure.has_value();
   }
 }
+
+namespace {
+
+// The cycle that made a frequency fail (a run that stops while settling fails there).
+std::optional<CycleResult> failing_cycle(const FrequencyResult& f) {
+  for (const CycleResult& cycle : f.cycles)
+    if (!cycle.success()) return cycle;
+  return std::nullopt;
+}
+
+}  // namespace
 
 void steps_maximum(const std::vector<FrequencyResult>& frequencies, SweepResult& result) {
   result.max_frequency_hz.reset();
   result.first_failure.reset();
   result.limit_found = false;
-  std::size_t from = 0;
-  for (std::size_t i = 0; i < frequencies.size(); ++i) {
-    if (!frequencies[i].passed) continue;
-    result.max_frequency_hz = frequencies[i].frequency_hz;
-    from = i + 1;
-  }
-  for (std::size_t i = from; i < frequencies.size(); ++i) {
-    if (frequencies[i].passed) continue;
-    result.limit_found = true;
-    for (const CycleResult& cycle : frequencies[i].cycles) {
-      if (!cycle.success()) {  // a run that stops while settling fails there
-        result.first_failure = cycle;
-        break;
-      }
-    }
+  std::size_t i = 0;
+  while (i < frequencies.size() && !frequencies[i].passed) ++i;  // below the repeating range
+  if (i == frequencies.size()) {
+    result.limit_found = !frequencies.empty();
+    if (result.limit_found) result.first_failure = failing_cycle(frequencies.front());
     return;
+  }
+  for (; i < frequencies.size(); ++i) {
+    if (!frequencies[i].passed) {
+      result.limit_found = true;
+      result.first_failure = failing_cycle(frequencies[i]);
+      return;
+    }
+    result.max_frequency_hz = frequencies[i].frequency_hz;
   }
 }
 

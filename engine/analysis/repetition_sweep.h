@@ -27,18 +27,21 @@
 //     reported but not judged.
 //   - A STEADY WINDOW is `window_cycles` consecutive judged cycles: in the chirp, any such run of
 //     cycles; in the steps mode, the judged cycles of one frequency's run.
-//   - Chirp: the maximum frequency is the frequency of the highest cycle that ends a steady
-//     window in which every cycle succeeds. Steps: a frequency passes when every cycle of its
-//     steady window succeeds, and the maximum is the highest frequency that passes.
-//     "Highest" and not "first failure" on purpose: a key moved too slowly throws the hammer too
-//     gently to reach the string after let-off (an upright below about 6 Hz), or lets it be
-//     thrown twice before let-off (the grand's hammer leaves the jack when the sine decelerates
-//     the key, bounces off the string and is thrown again); those low-frequency failures are not
-//     the repetition limit. Requiring a whole window of successes keeps isolated lucky cycles
-//     above the limit from counting.
-//   - The first failure reported is the first failing judged cycle after the maximum's window
-//     (steps: a failing cycle of the first failing frequency above the maximum); `limit_found`
-//     says that there is one below f_max. When no window succeeds there is no maximum
+//   - Chirp: repetition is ESTABLISHED at the end of the first steady window in which every cycle
+//     succeeds; the maximum frequency is the frequency of the last cycle that succeeds before the
+//     first failing cycle after that (every cycle from there up to the maximum succeeds).
+//     Steps: a frequency passes when every cycle of its steady window succeeds; the maximum is the
+//     highest frequency of the unbroken run of passing frequencies that starts at the first one
+//     that passes.
+//     Failures before repetition is established are not the limit: a key moved too slowly throws
+//     the hammer too gently to reach the string after let-off (the upright below about 6 Hz), or
+//     lets it be thrown twice before let-off (a sine decelerates the key before let-off, so the
+//     grand's hammer leaves the jack, bounces off the string and is thrown again, below about
+//     10 Hz). Failures after the limit do not raise it again: a lucky run of successes above the
+//     first failure (which happens when the jack resets in every other cycle or so) is not
+//     repetition.
+//   - The first failure reported is the one that ends the maximum; `limit_found` says that there
+//     is one below f_max. When no steady window succeeds there is no maximum
 //     (`max_frequency_hz` empty) and the first failure is the first failing judged cycle.
 #pragma once
 

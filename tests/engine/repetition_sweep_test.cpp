@@ -119,7 +119,7 @@ std::vector<CycleResult> cycles_from(const std::vector<std::pair<double, CycleOu
   return cycles;
 }
 
-TEST(RepetitionMaximum, ChirpTakesTheHighestCycleEndingAWindowOfSuccesses) {
+TEST(RepetitionMaximum, ChirpTakesTheLastSuccessOnceAWindowOfSuccessesEstablishedRepetition) {
   using O = CycleOutcome;
   const O ok = O::struck_once;
   SweepResult r;
@@ -136,7 +136,7 @@ TEST(RepetitionMaximum, ChirpTakesTheHighestCycleEndingAWindowOfSuccesses) {
                             1),
                 3, r);
   ASSERT_TRUE(r.max_frequency_hz.has_value());
-  EXPECT_EQ(*r.max_frequency_hz, 6.0);  // 8–9 Hz is only two successes, not a window of three
+  EXPECT_EQ(*r.max_frequency_hz, 6.0);  // the failures before 4 Hz do not count, 7 Hz ends it
   EXPECT_TRUE(r.limit_found);
   ASSERT_TRUE(r.first_failure.has_value());
   EXPECT_EQ(r.first_failure->outcome, O::double_strike);
@@ -153,9 +153,14 @@ TEST(RepetitionMaximum, ChirpTakesTheHighestCycleEndingAWindowOfSuccesses) {
   // a settling cycle does not count toward a window
   chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}}, 1), 2, r);
   EXPECT_FALSE(r.max_frequency_hz.has_value());
+  // a lucky window above the first failure does not raise the maximum
+  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}, {5, ok}, {6, ok}, {7, ok}}, 0), 2,
+                r);
+  EXPECT_EQ(*r.max_frequency_hz, 3.0);
+  EXPECT_EQ(r.first_failure->frequency_hz, 4.0);
 }
 
-TEST(RepetitionMaximum, StepsTakesTheHighestPassingFrequency) {
+TEST(RepetitionMaximum, StepsTakesTheTopOfTheFirstRunOfPassingFrequencies) {
   auto frequency = [](double f, bool passed) {
     FrequencyResult r;
     r.frequency_hz = f;
@@ -178,6 +183,8 @@ TEST(RepetitionMaximum, StepsTakesTheHighestPassingFrequency) {
   EXPECT_TRUE(r.limit_found);
   steps_maximum({frequency(10, true)}, r);
   EXPECT_FALSE(r.limit_found);
+  steps_maximum({frequency(10, true), frequency(11, false), frequency(12, true)}, r);
+  EXPECT_EQ(*r.max_frequency_hz, 10.0);  // 12 Hz passing again above the failure does not count
 }
 
 TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
