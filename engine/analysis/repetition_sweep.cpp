@@ -100,31 +100,49 @@ std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
   return cycles;
 }
 
+namespace {
+
+// The longest run of consecutive items that pass (the first of equally long ones): returns the
+// index one past its last item and sets its length (0 when nothing passes). Items where
+// `counted` is false are skipped: they neither extend nor break a run.
+std::size_t longest_run_end(const std::vector<bool>& pass, const std::vector<bool>& counted,
+                            std::size_t& best_length) {
+  std::size_t best_end = 0, length = 0;
+  best_length = 0;
+  for (std::size_t i = 0; i < pass.size(); ++i) {
+    if (!counted[i]) continue;
+    length = pass[i] ? length + 1 : 0;
+    if (length > best_length) {
+      best_length = length;
+      best_end = i + 1;
+    }
+  }
+  return best_end;
+}
+
+}  // namespace
+
 void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, SweepResult& result) {
   result.max_frequency_hz.reset();
   result.first_failure.reset();
   result.limit_found = false;
-  int successes_in_a_row = 0;
-  bool established = false;  // a whole steady window has succeeded
-  for (const CycleResult& cycle : cycles) {
-    if (!cycle.judged) continue;
-    if (cycle.success()) {
-      established = established || ++successes_in_a_row >= window_cycles;
-      if (established) result.max_frequency_hz = cycle.frequency_hz;
-      continue;
-    }
-    if (established) {  // the failure that ends the repeating range
-      result.first_failure = cycle;
-      result.limit_found = true;
-      return;
-    }
-    if (!result.first_failure) result.first_failure = cycle;  // below the repeating range
-    successes_in_a_row = 0;
+  std::vector<bool> pass, counted;
+  for (const CycleResult& c : cycles) {
+    pass.push_back(c.success());
+    counted.push_back(c.judged);
   }
-  if (established) {
-    result.first_failure.reset();  // no failure above the maximum up to the last cycle
-  } else {
-    result.limit_found = result.first_failure.has_value();
+  std::size_t length = 0;
+  const std::size_t end = longest_run_end(pass, counted, length);
+  std::size_t from = 0;
+  if (length >= static_cast<std::size_t>(window_cycles)) {
+    result.max_frequency_hz = cycles[end - 1].frequency_hz;
+    from = end;
+  }
+  for (std::size_t k = from; k < cycles.size(); ++k) {
+    if (!cycles[k].judged || cycles[k].success()) continue;
+    result.first_failure = cycles[k];
+    result.limit_found = true;
+    return;
   }
 }
 
@@ -143,20 +161,20 @@ void steps_maximum(const std::vector<FrequencyResult>& frequencies, SweepResult&
   result.max_frequency_hz.reset();
   result.first_failure.reset();
   result.limit_found = false;
-  std::size_t i = 0;
-  while (i < frequencies.size() && !frequencies[i].passed) ++i;  // below the repeating range
-  if (i == frequencies.size()) {
-    result.limit_found = !frequencies.empty();
-    if (result.limit_found) result.first_failure = failing_cycle(frequencies.front());
-    return;
+  std::vector<bool> pass;
+  for (const FrequencyResult& f : frequencies) pass.push_back(f.passed);
+  std::size_t length = 0;
+  const std::size_t end = longest_run_end(pass, std::vector<bool>(pass.size(), true), length);
+  std::size_t from = 0;
+  if (length > 0) {  // a passing frequency is a whole steady window already
+    result.max_frequency_hz = frequencies[end - 1].frequency_hz;
+    from = end;
   }
-  for (; i < frequencies.size(); ++i) {
-    if (!frequencies[i].passed) {
-      result.limit_found = true;
-      result.first_failure = failing_cycle(frequencies[i]);
-      return;
-    }
-    result.max_frequency_hz = frequencies[i].frequency_hz;
+  for (std::size_t i = from; i < frequencies.size(); ++i) {
+    if (frequencies[i].passed) continue;
+    result.limit_found = true;
+    result.first_failure = failing_cycle(frequencies[i]);
+    return;
   }
 }
 

@@ -27,22 +27,22 @@
 //     reported but not judged.
 //   - A STEADY WINDOW is `window_cycles` consecutive judged cycles: in the chirp, any such run of
 //     cycles; in the steps mode, the judged cycles of one frequency's run.
-//   - Chirp: repetition is ESTABLISHED at the end of the first steady window in which every cycle
-//     succeeds; the maximum frequency is the frequency of the last cycle that succeeds before the
-//     first failing cycle after that (every cycle from there up to the maximum succeeds).
-//     Steps: a frequency passes when every cycle of its steady window succeeds; the maximum is the
-//     highest frequency of the unbroken run of passing frequencies that starts at the first one
-//     that passes.
-//     Failures before repetition is established are not the limit: a key moved too slowly throws
-//     the hammer too gently to reach the string after let-off (the upright below about 6 Hz), or
-//     lets it be thrown twice before let-off (a sine decelerates the key before let-off, so the
-//     grand's hammer leaves the jack, bounces off the string and is thrown again, below about
-//     10 Hz). Failures after the limit do not raise it again: a lucky run of successes above the
-//     first failure (which happens when the jack resets in every other cycle or so) is not
-//     repetition.
-//   - The first failure reported is the one that ends the maximum; `limit_found` says that there
-//     is one below f_max. When no steady window succeeds there is no maximum
-//     (`max_frequency_hz` empty) and the first failure is the first failing judged cycle.
+//   - The REPEATING RANGE of a chirp is its longest run of consecutive successful judged cycles
+//     (the first of equally long runs), and it must be at least one steady window long; the
+//     maximum frequency is the frequency of its last cycle. Steps: a frequency passes when every
+//     cycle of its steady window succeeds; the repeating range is the longest run of consecutive
+//     passing frequencies and the maximum is its highest frequency.
+//     Why the longest run and not the first failure or the highest success: a key moved too
+//     slowly throws the hammer too gently to reach the string after let-off (the upright below
+//     about 6 Hz, with sporadic misses and double strikes up to about 10 Hz), or lets it be thrown
+//     twice before let-off (a sine decelerates the key before let-off, so the grand's hammer
+//     leaves the jack, bounces off the string and is thrown again, below about 10 Hz); and above
+//     the limit the jack may still reset in a lucky run of a few cycles. Neither is the range in
+//     which the action repeats, which is the long unbroken run between them.
+//   - The first failure reported is the failing cycle (frequency) right after the repeating range;
+//     `limit_found` says that there is one below f_max. When no run is a steady window long
+//     there is no maximum (`max_frequency_hz` empty) and the first failure is the first failing
+//     judged cycle (frequency).
 #pragma once
 
 #include <optional>
@@ -139,7 +139,7 @@ std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
                                          const std::vector<Impact>& impacts, double merge_s,
                                          int settle_cycles, double run_end_s, bool stopped);
 
-/// The chirp rule over cycles in time order, with steady windows of `window_cycles` cycles.
+/// The chirp rule over cycles in time order; a run must be at least `window_cycles` long.
 /// Sets max_frequency_hz, limit_found and first_failure of `result`.
 void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, SweepResult& result);
 

@@ -119,28 +119,33 @@ std::vector<CycleResult> cycles_from(const std::vector<std::pair<double, CycleOu
   return cycles;
 }
 
-TEST(RepetitionMaximum, ChirpTakesTheLastSuccessOnceAWindowOfSuccessesEstablishedRepetition) {
+TEST(RepetitionMaximum, ChirpTakesTheTopOfTheLongestRunOfSuccesses) {
   using O = CycleOutcome;
   const O ok = O::struck_once;
   SweepResult r;
-  // a settling miss, a too-slow miss, a run of three successes, a double strike, a lucky pair
+  // a settling miss; too slow: a miss, a lucky pair, a double strike; the repeating range
+  // 7–10 Hz; a miss; a lucky pair above the limit
   chirp_maximum(cycles_from({{2, O::missed},
                              {3, O::missed},
                              {4, ok},
                              {5, ok},
-                             {6, ok},
-                             {7, O::double_strike},
+                             {6, O::double_strike},
+                             {7, ok},
                              {8, ok},
                              {9, ok},
-                             {10, O::missed}},
+                             {10, ok},
+                             {11, O::missed},
+                             {12, ok},
+                             {13, ok},
+                             {14, O::missed}},
                             1),
                 3, r);
   ASSERT_TRUE(r.max_frequency_hz.has_value());
-  EXPECT_EQ(*r.max_frequency_hz, 6.0);  // the failures before 4 Hz do not count, 7 Hz ends it
+  EXPECT_EQ(*r.max_frequency_hz, 10.0);
   EXPECT_TRUE(r.limit_found);
   ASSERT_TRUE(r.first_failure.has_value());
-  EXPECT_EQ(r.first_failure->outcome, O::double_strike);
-  EXPECT_EQ(r.first_failure->frequency_hz, 7.0);
+  EXPECT_EQ(r.first_failure->outcome, O::missed);
+  EXPECT_EQ(r.first_failure->frequency_hz, 11.0);
 
   chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, ok}}, 0), 2, r);
   EXPECT_EQ(*r.max_frequency_hz, 4.0);
@@ -148,19 +153,18 @@ TEST(RepetitionMaximum, ChirpTakesTheLastSuccessOnceAWindowOfSuccessesEstablishe
   EXPECT_FALSE(r.first_failure.has_value());
 
   chirp_maximum(cycles_from({{2, ok}, {3, O::missed}, {4, ok}, {5, O::missed}}, 0), 2, r);
-  EXPECT_FALSE(r.max_frequency_hz.has_value());  // no window of two successes
+  EXPECT_FALSE(r.max_frequency_hz.has_value());  // no run of two successes
   EXPECT_EQ(r.first_failure->frequency_hz, 3.0);
-  // a settling cycle does not count toward a window
+  // a settling cycle does not count toward a run
   chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}}, 1), 2, r);
   EXPECT_FALSE(r.max_frequency_hz.has_value());
-  // a lucky window above the first failure does not raise the maximum
-  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}, {5, ok}, {6, ok}, {7, ok}}, 0), 2,
-                r);
+  // of two equally long runs the first one counts
+  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}, {5, ok}, {6, ok}}, 0), 2, r);
   EXPECT_EQ(*r.max_frequency_hz, 3.0);
   EXPECT_EQ(r.first_failure->frequency_hz, 4.0);
 }
 
-TEST(RepetitionMaximum, StepsTakesTheTopOfTheFirstRunOfPassingFrequencies) {
+TEST(RepetitionMaximum, StepsTakesTheTopOfTheLongestRunOfPassingFrequencies) {
   auto frequency = [](double f, bool passed) {
     FrequencyResult r;
     r.frequency_hz = f;
@@ -183,8 +187,11 @@ TEST(RepetitionMaximum, StepsTakesTheTopOfTheFirstRunOfPassingFrequencies) {
   EXPECT_TRUE(r.limit_found);
   steps_maximum({frequency(10, true)}, r);
   EXPECT_FALSE(r.limit_found);
-  steps_maximum({frequency(10, true), frequency(11, false), frequency(12, true)}, r);
-  EXPECT_EQ(*r.max_frequency_hz, 10.0);  // 12 Hz passing again above the failure does not count
+  steps_maximum({frequency(10, true), frequency(11, false), frequency(12, true),
+                 frequency(13, true), frequency(14, false)},
+                r);
+  EXPECT_EQ(*r.max_frequency_hz, 13.0);  // the longer run 12–13 Hz, not the lone 10 Hz
+  EXPECT_EQ(r.first_failure->frequency_hz, 14.0);
 }
 
 TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
