@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
@@ -226,34 +227,88 @@ std::vector<Impact> impacts_of(const SimulationResult& run) {
 // boundary falls inside the run.
 constexpr double kTailS = 1e-3;
 
+// Chirp time (s) a later segment runs before its own band, from rest: about 10 cycles or more
+// in the bands of interest (≥ 10 Hz), after which the start from rest is forgotten (the upright's
+// limit moves from 12.45 to 13.0 Hz when a segment starts from rest at 12.5 Hz without it).
+constexpr double kOverlapS = 1.0;
+
+// One chirp run over [f_a, f_b] (a segment of the sweep), classified. `done_s` accumulates the
+// simulated time of all segments for the progress report.
+struct ChirpSegment {
+  double f_a = 0.0, f_b = 0.0;
+  double t_offset_s = 0.0;   // where f_a falls in one continuous chirp from f_start
+  double keep_from_s = 0.0;  // cycles starting earlier in the run belong to the segment before
+  SimulationResult run;
+  std::vector<CycleResult> cycles;
+};
+
 void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptions& o,
                const ProgressCallback& progress, SweepResult& result) {
-  const auto input = parse_input_spec(chirp_spec(o), input_context(model, rest));
-  const double origin = o.stroke == Stroke::half ? 0.5 / o.f_start_hz : 0.0;
-  const double sweep_s = (o.f_max_hz - o.f_start_hz) / o.chirp_rate_hz_per_s;
-  const double duration = origin + sweep_s + kTailS;
-  SimulationOptions options = simulation_options(o, duration);
-  options.sample_interval_s = o.trace_interval_s;
+  // with a trace (for a plot) one continuous run; otherwise one segment per thread
+  const unsigned threads = o.threads == 0 ? default_thread_count() : o.threads;
+  const std::size_t count =
+      o.trace_interval_s > 0.0
+          ? 1
+          : std::max<std::size_t>(1, o.chirp_segments == 0 ? threads : o.chirp_segments);
+  std::vector<ChirpSegment> segments(count);
+  double total_s = 0.0;
+  for (std::size_t i = 0; i < count; ++i) {
+    ChirpSegment& seg = segments[i];
+    const double f_a = o.f_start_hz + (o.f_max_hz - o.f_start_hz) * static_cast<double>(i) / count;
+    seg.f_b = o.f_start_hz + (o.f_max_hz - o.f_start_hz) * static_cast<double>(i + 1) / count;
+    // a later segment starts kOverlapS of chirp earlier, from rest, and its cycles before f_a
+    // are dropped: the action forgets its start from rest before it reaches its own band
+    seg.f_a = std::max(o.f_start_hz, f_a - o.chirp_rate_hz_per_s * kOverlapS);
+    seg.keep_from_s = (f_a - seg.f_a) / o.chirp_rate_hz_per_s;
+    seg.t_offset_s = (seg.f_a - o.f_start_hz) / o.chirp_rate_hz_per_s;
+    total_s += (seg.f_b - seg.f_a) / o.chirp_rate_hz_per_s;
+  }
+  const InputContext context = input_context(model, rest);
   ProgressReporter reporter(progress, 1);
-  double next_report = 0.0;
-  options.on_step = [&](double t) {
-    if (t < next_report) return true;
-    next_report = t + 0.01;  // every 10 ms of simulated time
-    const double f = o.f_start_hz + o.chirp_rate_hz_per_s * std::max(0.0, t - origin);
-    reporter.partial(t / duration, format_number(std::round(f * 10.0) / 10.0) + " Hz of " +
-                                       format_number(o.f_max_hz));
-    return !reporter.cancelled();
+  std::mutex progress_mutex;  // keeps the reported fractions in order across segments
+  double done_s = 0.0;        // simulated time of all segments so far
+  const auto run_segment = [&](std::size_t i) {
+    ChirpSegment& seg = segments[i];
+    SweepOptions segment_options = o;
+    segment_options.f_start_hz = seg.f_a;
+    segment_options.f_max_hz = seg.f_b;
+    const auto input = parse_input_spec(chirp_spec(segment_options), context);
+    const double origin = o.stroke == Stroke::half ? 0.5 / seg.f_a : 0.0;
+    const double duration = origin + (seg.f_b - seg.f_a) / o.chirp_rate_hz_per_s + kTailS;
+    SimulationOptions options = simulation_options(o, duration);
+    options.sample_interval_s = o.trace_interval_s;
+    double last_report = 0.0;
+    options.on_step = [&](double t) {
+      if (t < last_report + 0.01) return true;  // every 10 ms of simulated time
+      const double f = seg.f_a + o.chirp_rate_hz_per_s * std::max(0.0, t - origin);
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      done_s += t - last_report;
+      last_report = t;
+      reporter.partial(done_s / total_s, format_number(std::round(f * 10.0) / 10.0) + " Hz of " +
+                                             format_number(o.f_max_hz));
+      return !reporter.cancelled();
+    };
+    seg.run = simulate(model, input.get(), options, &rest);
+    seg.cycles = classify_cycles(
+        cycle_boundaries(o.stroke, seg.f_a, o.chirp_rate_hz_per_s, duration), impacts_of(seg.run),
+        o.strike_merge_s, o.settle_cycles, seg.run.end_time, seg.run.status != "ok");
   };
-  SimulationResult run = simulate(model, input.get(), options, &rest);
+  run_parallel(count, run_segment, nullptr, threads);
   reporter.throw_if_cancelled();
-  const bool stopped = run.status != "ok";
-  result.run_status = run.status;
-  result.stop_cause = run.stop_cause;
-  result.simulated_s = run.end_time;
-  result.cycles =
-      classify_cycles(cycle_boundaries(o.stroke, o.f_start_hz, o.chirp_rate_hz_per_s, duration),
-                      impacts_of(run), o.strike_merge_s, o.settle_cycles, run.end_time, stopped);
-  result.trace = std::move(run.trace);
+  for (const ChirpSegment& seg : segments) {
+    for (CycleResult c : seg.cycles) {  // times as in one continuous chirp from f_start
+      if (c.t_start_s < seg.keep_from_s - 1e-12) continue;
+      c.t_start_s += seg.t_offset_s;
+      c.t_end_s += seg.t_offset_s;
+      result.cycles.push_back(c);
+    }
+    result.simulated_s += seg.run.end_time;
+    if (seg.run.status != "ok" && result.run_status == "ok") {
+      result.run_status = seg.run.status;
+      result.stop_cause = seg.run.stop_cause;
+    }
+  }
+  result.trace = std::move(segments.front().run.trace);
   chirp_maximum(result.cycles, o.window_cycles, result);
   reporter.item_done("done");
 }

@@ -6,8 +6,13 @@
 //                 θ(t) = A − A/4 (1 − cos φ(t − t0)),  t0 = 1/(2 f_start)
 //                 i.e. between full dip and half release, where the grand's repetition lever
 //                 lets the jack re-engage under the knuckle without a full key return.
-// Chirp mode: one run with the phase φ(τ) = 2π (f_start τ + r τ²/2), r the chirp rate in Hz/s;
+// Chirp mode: a run with the phase φ(τ) = 2π (f_start τ + r τ²/2), r the chirp rate in Hz/s;
 // with r = 1 Hz/s the frequency (Hz) equals the time (s) plus f_start, as in the paper's Fig. 19.
+// To use the cores, the band [f_start, f_max] is cut into equal segments run in parallel, each
+// its own chirp at the same rate from rest; every segment after the first starts 1 s of chirp
+// below its band and drops the cycles before it, so that its start from rest is forgotten (the
+// cycles are then put end to end in the times of one continuous chirp). With a trace (for a
+// plot) the chirp is one run.
 // Steps mode: one run per frequency f_i = f_start, f_start + Δf, …, ≤ f_max, each a constant
 // sine held for settle + window cycles; the frequencies run in parallel on the cores.
 //
@@ -78,7 +83,9 @@ struct SweepOptions {
   double trace_interval_s = 0.0;  ///< chirp: > 0 keeps a trace sampled at this interval (s)
   std::string integrator = "w2";
   double step_s = 1e-5;  ///< fixed integrator step (s)
-  unsigned threads = 0;  ///< steps: worker threads (0: one per core)
+  unsigned threads = 0;  ///< worker threads (0: one per core)
+  /// chirp: segments run in parallel (0: one per thread; forced to 1 with a trace)
+  unsigned chirp_segments = 0;
 };
 
 enum class CycleOutcome { struck_once, missed, double_strike, stopped };

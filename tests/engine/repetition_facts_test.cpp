@@ -159,6 +159,7 @@ TEST(RepetitionSweep, ChirpReportsProgressBySimulatedTimeAndCancels) {
   SweepOptions o;
   o.f_start_hz = 10.0;
   o.f_max_hz = 12.0;
+  o.threads = 2;  // two segments on any machine
   double last = 0.0;
   int reports = 0;
   EXPECT_THROW(run_repetition_sweep(grand, o,
@@ -169,8 +170,10 @@ TEST(RepetitionSweep, ChirpReportsProgressBySimulatedTimeAndCancels) {
                                     }),
                Cancelled);
   EXPECT_EQ(reports, 20);  // nothing reported after the cancel
-  // 20 reports at 10 ms of simulated time each, out of a 2 s run
-  EXPECT_NEAR(last, 0.19 / 2.001, 0.01);
+  // 20 reports, each after 10 ms (plus at most a 10 µs step) more of simulated time in one of
+  // the segments, out of 3 s: the 2 s band, and the second of two segments (10–11 Hz and
+  // 11–12 Hz) starts 1 s of chirp early
+  EXPECT_NEAR(last, 20 * 0.01 / 3.0, 0.005);
 }
 
 }  // namespace
