@@ -18,5 +18,9 @@ int run_touchweight(const std::vector<std::string>& args);
 int run_study_double_blow(const std::vector<std::string>& args);
 /// study sensitivity (the word after `study` removed)
 int run_study_sensitivity(const std::vector<std::string>& args);
+int run_sweep(const std::vector<std::string>& args);
+/// `study WHAT ...`: dispatches on the study name (study_command.cpp).
+int run_study(const std::vector<std::string>& args);
+int run_study_compare(const std::vector<std::string>& args);
 
 }  // namespace pat::app

@@ -25,6 +25,10 @@ usage:
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--json]
+  pianoaction sweep     --action A --stroke full|half [--mode chirp|steps] [--fmax HZ]
+                        [--fstart HZ] [--rate HZ_PER_S] [--step-hz HZ] [--window CYCLES]
+                        [--set ADJUSTER=MM]... [--out CSV] [--plot FILE] [--json]
+  pianoaction study compare [--input SPEC] [--duration S] [--fmax HZ] [--out CSV] [--json]
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--json]
   pianoaction bench     [--json] [--duration S]
@@ -89,17 +93,11 @@ int main(int argc, char** argv) {
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
+    if (command == "sweep") return pat::app::run_sweep(args);
     if (command == "swing") return pat::app::run_swing(args);
     if (command == "keyfall") return pat::app::run_keyfall(args);
     if (command == "touchweight") return pat::app::run_touchweight(args);
-    if (command == "study" && !args.empty() && args[0] == "double-blow")
-      return pat::app::run_study_double_blow({args.begin() + 1, args.end()});
-    if (command == "study" && !args.empty() && args[0] == "sensitivity")
-      return pat::app::run_study_sensitivity({args.begin() + 1, args.end()});
-    if (command == "study") {
-      std::cerr << "pianoaction study: name a study (double-blow, sensitivity)\n\n" << kUsage;
-      return 2;
-    }
+    if (command == "study") return pat::app::run_study(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

@@ -20,7 +20,9 @@ void write_plot(const std::string& path, const CsvTable& trace) {
 }
 #else
 void check_plot_path(const std::string& path) {
-  throw InputError("--plot " + path + ": this build has no plotting (built with PAT_ENGINE_ONLY)");
+  throw InputError("--plot " + path +
+                   ": plots need the window build; this build has no plotting (configured with "
+                   "PAT_ENGINE_ONLY)");
 }
 
 void write_plot(const std::string& path, const CsvTable&) {

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "analysis/parallel_runs.h"
+#include "analysis/repetition_sweep.h"
 #include "analysis/touchweight.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -58,8 +59,28 @@ SensitivityMetricGroup touchweight_metrics() {
   return group;
 }
 
+SensitivityMetricGroup repetition_metrics() {
+  SensitivityMetricGroup group;
+  group.names = {"max_repetition_hz"};
+  group.evaluate = [](const ActionModel& model, const RestState&) {
+    SweepOptions options;
+    // the grand's halfway stroke exercises its repetition lever (drop, lever height); the
+    // upright has only the full stroke
+    options.stroke = model.kind == "grand" ? Stroke::half : Stroke::full;
+    options.mode = SweepMode::chirp;
+    options.f_start_hz = 6.0;  // below every limit of F4, above the slow-key misfires
+    options.f_max_hz = 24.0;
+    options.chirp_rate_hz_per_s = 1.0;
+    options.threads = 1;  // the sensitivity cases are already spread over the cores
+    options.chirp_segments = 1;
+    const SweepResult r = run_repetition_sweep(model, options);
+    return std::vector<double>{r.max_frequency_hz ? *r.max_frequency_hz : kNaN};
+  };
+  return group;
+}
+
 std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n) {
-  return {blow_metrics(key_force_n), touchweight_metrics()};
+  return {blow_metrics(key_force_n), touchweight_metrics(), repetition_metrics()};
 }
 
 SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,

@@ -33,6 +33,10 @@ std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n
 /// downweight_g and upweight_g (static touchweight, analysis/touchweight.h).
 SensitivityMetricGroup touchweight_metrics();
 
+/// max_repetition_hz: the repetition limit of a chirp (analysis/repetition_sweep.h), halfway
+/// stroke on the grand, full stroke on the upright.
+SensitivityMetricGroup repetition_metrics();
+
 struct SensitivityOptions {
   double step_mm = 0.5;  ///< each adjuster at −step and +step
   std::vector<SensitivityMetricGroup> groups = sensitivity_metric_groups();

@@ -1,0 +1,85 @@
+// pianoaction study compare: upright vs grand under the same input (analysis/action_comparison.h).
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "analysis/action_comparison.h"
+#include "command_line.h"
+#include "commands.h"
+#include "core/format.h"
+#include "model/preset_loader.h"
+#include "sweep_report.h"
+
+namespace pat::app {
+namespace {
+
+nlohmann::json limit_json(const std::optional<SweepResult>& sweep) {
+  if (!sweep) return nullptr;
+  return {
+      {"max_frequency_hz", sweep->max_frequency_hz ? nlohmann::json(*sweep->max_frequency_hz)
+                                                   : nlohmann::json(nullptr)},
+      {"limit_found", sweep->limit_found},
+      {"first_failure_kind", sweep->first_failure
+                                 ? nlohmann::json(outcome_name(sweep->first_failure->outcome))
+                                 : nlohmann::json(nullptr)},
+      {"first_failure_hz", sweep->first_failure ? nlohmann::json(sweep->first_failure->frequency_hz)
+                                                : nlohmann::json(nullptr)}};
+}
+
+}  // namespace
+
+int run_study_compare(const std::vector<std::string>& args) {
+  const CommandLine cl(args, {"--input", "--duration", "--fmax", "--out"},
+                       {"--json", "--no-limits"});
+  ComparisonOptions options;
+  options.input = cl.value_or("--input", options.input);
+  options.duration_s = cl.positive_number_or("--duration", options.duration_s);
+  options.repetition_limits = !cl.has("--no-limits");
+  if (cl.has("--fmax"))
+    options.f_max_full_hz = options.f_max_half_hz = cl.positive_number("--fmax");
+  const ActionModel grand = load_action("grand");
+  const ActionModel upright = load_action("upright");
+  const ComparisonResult result = compare_actions({&grand, &upright}, options);
+  const std::string out_path = cl.value_or("--out", "");
+  if (!out_path.empty()) write_csv(out_path, result.overlay);
+
+  if (cl.has("--json")) {
+    nlohmann::json actions = nlohmann::json::array();
+    for (const ActionComparison& a : result.actions) {
+      const SimEvent* impact = a.first_impact ? &*a.first_impact : nullptr;
+      actions.push_back(
+          {{"action", a.action},
+           {"status", a.run.status},
+           {"stop_cause",
+            a.run.status == "ok" ? nlohmann::json(nullptr) : nlohmann::json(a.run.stop_cause)},
+           {"impact_t_s", impact ? nlohmann::json(impact->t) : nlohmann::json(nullptr)},
+           {"impact_velocity_mps",
+            impact ? nlohmann::json(impact->hammer_velocity) : nlohmann::json(nullptr)},
+           {"repetition_full", limit_json(a.full_stroke)},
+           {"repetition_half", limit_json(a.half_stroke)}});
+    }
+    std::cout << nlohmann::json{{"input", options.input},
+                                {"duration_s", options.duration_s},
+                                {"actions", actions},
+                                {"wall_s", result.wall_s}}
+                     .dump(1)
+              << "\n";
+  } else {
+    std::cout << "upright vs grand, input " << options.input << "\n";
+    for (const ActionComparison& a : result.actions) {
+      std::cout << "  " << a.action << ": ";
+      if (a.first_impact)
+        std::cout << "impact at " << format_number(a.first_impact->t * 1e3) << " ms, "
+                  << format_number(a.first_impact->hammer_velocity) << " m/s";
+      else
+        std::cout << "no impact within " << options.duration_s << " s";
+      if (a.run.status != "ok") std::cout << " (run stopped: " << a.run.stop_cause << ")";
+      std::cout << "\n";
+      if (a.full_stroke) std::cout << "    full stroke: " << sweep_summary(*a.full_stroke) << "\n";
+      if (a.half_stroke) std::cout << "    half stroke: " << sweep_summary(*a.half_stroke) << "\n";
+    }
+    if (!out_path.empty()) std::cout << "  overlay written to " << out_path << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

@@ -1,0 +1,62 @@
+// pianoaction sweep: the maximum repetition frequency (DESIGN.md section 5, fact F4; the
+// definitions are in engine/analysis/repetition_sweep.h).
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "action_setup.h"
+#include "commands.h"
+#include "core/error.h"
+#include "io/csv.h"
+#include "plot_output.h"
+#include "sweep_report.h"
+
+namespace pat::app {
+
+int run_sweep(const std::vector<std::string>& args) {
+  const CommandLine cl(args,
+                       {"--action", "--set", "--without", "--stroke", "--mode", "--fmax",
+                        "--fstart", "--rate", "--step-hz", "--window", "--out", "--plot"},
+                       {"--json"});
+  const ActionModel model = load_configured_action(cl);
+  SweepOptions options;
+  options.stroke = parse_stroke(cl.value("--stroke"), "--stroke");
+  options.mode = parse_sweep_mode(cl.value_or("--mode", "chirp"), "--mode");
+  options.f_start_hz = cl.positive_number_or("--fstart", options.f_start_hz);
+  options.f_max_hz = cl.positive_number_or("--fmax", options.stroke == Stroke::half ? 25.0 : 20.0);
+  options.chirp_rate_hz_per_s = cl.positive_number_or("--rate", options.chirp_rate_hz_per_s);
+  options.step_hz = cl.positive_number_or("--step-hz", options.step_hz);
+  if (cl.has("--window")) {
+    const double window = cl.positive_number("--window");
+    if (window != static_cast<int>(window))
+      throw InputError("--window: expected a whole number of cycles (got " + cl.value("--window") +
+                       ")");
+    options.window_cycles = static_cast<int>(window);
+  }
+  const std::string out_path = cl.value_or("--out", "");
+  const std::string plot_path = cl.value_or("--plot", "");
+  if (!plot_path.empty()) {
+    if (options.mode != SweepMode::chirp)
+      throw InputError("--plot: plots the chirp run's key and hammer motion; use --mode chirp");
+    check_plot_path(plot_path);  // an engine-only build or a wrong extension fails before the run
+    options.trace_interval_s = 5e-4;
+  }
+
+  const SweepResult result = run_repetition_sweep(model, options);
+  if (!out_path.empty()) write_csv(out_path, sweep_cycles_table(result, model));
+  if (!plot_path.empty()) write_plot(plot_path, result.trace);
+
+  if (cl.has("--json")) {
+    nlohmann::json out = sweep_json(result);
+    out["action"] = model.kind;
+    std::cout << out.dump(1) << "\n";
+  } else {
+    std::cout << model.name << ", " << stroke_name(result.stroke) << " stroke, "
+              << sweep_mode_name(result.mode) << ": " << sweep_summary(result) << "\n";
+    std::cout << "  " << result.simulated_s << " s simulated in " << result.wall_s << " s\n";
+    if (!out_path.empty()) std::cout << "  cycles written to " << out_path << "\n";
+    if (!plot_path.empty()) std::cout << "  plot written to " << plot_path << "\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

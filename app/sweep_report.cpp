@@ -1,0 +1,104 @@
+#include "sweep_report.h"
+
+#include "core/format.h"
+
+namespace pat::app {
+namespace {
+
+nlohmann::json cycle_json(const CycleResult& c) {
+  return {{"t_s", c.t_start_s},
+          {"frequency_hz", c.frequency_hz},
+          {"strikes", c.strikes},
+          {"success", c.success()},
+          {"kind", outcome_name(c.outcome)},
+          {"judged", c.judged},
+          {"strike_velocity_mps", c.strike_velocity_mps}};
+}
+
+std::string failure_words(CycleOutcome outcome) {
+  switch (outcome) {
+    case CycleOutcome::missed:
+      return "missed strike";
+    case CycleOutcome::double_strike:
+      return "double strike";
+    case CycleOutcome::stopped:
+      return "run stopped";
+    case CycleOutcome::struck_once:
+      break;
+  }
+  return "none";
+}
+
+void add_cycle_rows(CsvTable& table, const std::vector<CycleResult>& cycles, double step_hz) {
+  for (const CycleResult& c : cycles) {
+    std::vector<double> row{c.t_start_s, c.frequency_hz, static_cast<double>(c.strikes),
+                            c.success() ? 1.0 : 0.0, c.judged ? 1.0 : 0.0};
+    if (step_hz > 0.0) row.push_back(step_hz);
+    table.rows.push_back(std::move(row));
+  }
+}
+
+}  // namespace
+
+nlohmann::json sweep_json(const SweepResult& r) {
+  nlohmann::json out{
+      {"max_frequency_hz",
+       r.max_frequency_hz ? nlohmann::json(*r.max_frequency_hz) : nlohmann::json(nullptr)},
+      {"stroke", stroke_name(r.stroke)},
+      {"mode", sweep_mode_name(r.mode)},
+      {"limit_found", r.limit_found},
+      {"first_failure", r.first_failure ? cycle_json(*r.first_failure) : nlohmann::json(nullptr)},
+      {"simulated_s", r.simulated_s},
+      {"wall_s", r.wall_s}};
+  if (r.mode == SweepMode::chirp) {
+    out["run_status"] = r.run_status;
+    out["stop_cause"] =
+        r.run_status == "ok" ? nlohmann::json(nullptr) : nlohmann::json(r.stop_cause);
+    nlohmann::json cycles = nlohmann::json::array();
+    for (const CycleResult& c : r.cycles) cycles.push_back(cycle_json(c));
+    out["cycles"] = cycles;
+  } else {
+    nlohmann::json frequencies = nlohmann::json::array();
+    for (const FrequencyResult& f : r.frequencies) {
+      nlohmann::json cycles = nlohmann::json::array();
+      for (const CycleResult& c : f.cycles) cycles.push_back(cycle_json(c));
+      frequencies.push_back({{"frequency_hz", f.frequency_hz},
+                             {"passed", f.passed},
+                             {"failed_cycles", f.failed_cycles},
+                             {"run_status", f.run_status},
+                             {"stop_cause", f.run_status == "ok" ? nlohmann::json(nullptr)
+                                                                 : nlohmann::json(f.stop_cause)},
+                             {"cycles", cycles}});
+    }
+    out["frequencies"] = frequencies;
+  }
+  return out;
+}
+
+CsvTable sweep_cycles_table(const SweepResult& r, const ActionModel& model) {
+  CsvTable table;
+  table.metadata["action"] = model.kind;
+  table.metadata["stroke"] = stroke_name(r.stroke);
+  table.metadata["mode"] = sweep_mode_name(r.mode);
+  table.columns = {"t_s", "frequency_hz", "strikes", "success", "judged"};
+  if (r.mode == SweepMode::chirp) {
+    add_cycle_rows(table, r.cycles, 0.0);
+  } else {
+    table.columns.push_back("step_frequency_hz");
+    for (const FrequencyResult& f : r.frequencies) add_cycle_rows(table, f.cycles, f.frequency_hz);
+  }
+  return table;
+}
+
+std::string sweep_summary(const SweepResult& r) {
+  std::string text = r.max_frequency_hz ? "maximum " + format_number(*r.max_frequency_hz) + " Hz"
+                                        : std::string("no maximum (the first judged cycle fails)");
+  if (!r.limit_found) return text + " (no failure up to the last frequency)";
+  if (!r.first_failure) return text + " (a run stopped while settling)";
+  const CycleResult& f = *r.first_failure;
+  return text + " (first failure: " + failure_words(f.outcome) + ", " + std::to_string(f.strikes) +
+         " strikes, at " + format_number(f.frequency_hz) +
+         " Hz, t = " + format_number(f.t_start_s) + " s)";
+}
+
+}  // namespace pat::app

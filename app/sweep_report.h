@@ -1,0 +1,23 @@
+// JSON, CSV and one-line summaries of a repetition sweep, shared by `sweep` and `study compare`.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/repetition_sweep.h"
+
+namespace pat::app {
+
+/// DESIGN.md section 5 keys (max_frequency_hz, stroke, mode) plus limit_found, first_failure
+/// (t_s, frequency_hz, kind, strikes), run status, timing (simulated_s, wall_s) and the cycles
+/// (chirp) or frequencies (steps).
+nlohmann::json sweep_json(const SweepResult& result);
+
+/// One row per cycle: t_s (cycle start), frequency_hz, strikes, success (1/0), and the run's
+/// frequency for the steps mode (step_frequency_hz). Metadata: action, stroke, mode.
+CsvTable sweep_cycles_table(const SweepResult& result, const ActionModel& model);
+
+/// "maximum 13.2 Hz (first failure: missed strike at 13.4 Hz, t = 11.4 s)" and the like.
+std::string sweep_summary(const SweepResult& result);
+
+}  // namespace pat::app

@@ -1,0 +1,212 @@
+// The repetition sweep's definitions (analysis/repetition_sweep.h): cycle boundaries against the
+// key motion they cut, the cycle classifier and both maximum rules on synthetic impact lists.
+// The physics (fact F4) is in repetition_facts_test.cpp.
+#include "analysis/repetition_sweep.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/error.h"
+#include "inputs/key_input.h"
+
+namespace pat {
+namespace {
+
+constexpr double kDip = 0.04;  // rad, a full-dip angle for the motion inputs
+
+// Each boundary after the first must be an upper turning point of the key: rate zero and the
+// angle at the stroke's top (0 for full, A/2 for half). Tolerances: the boundaries are closed
+// forms of the same phase law, so only round-off separates them (1e-9 rad, 1e-6 rad/s at rates
+// of order A·2πf ≈ 5 rad/s).
+void expect_turning_points(const std::string& spec, Stroke stroke, double f0, double rate,
+                           double t_end) {
+  const auto input = parse_input_spec(spec, InputContext{kDip});
+  const std::vector<double> b = cycle_boundaries(stroke, f0, rate, t_end);
+  ASSERT_GT(b.size(), 5u);
+  EXPECT_EQ(b.front(), 0.0);
+  const double top = stroke == Stroke::full ? 0.0 : 0.5 * kDip;
+  for (std::size_t k = 1; k < b.size(); ++k) {
+    const KeyMotionSample m = input->motion(b[k]);
+    EXPECT_NEAR(m.angle, top, 1e-9) << spec << " boundary " << k;
+    EXPECT_NEAR(m.rate, 0.0, 1e-6) << spec << " boundary " << k;
+    // the key's highest point is the angle's minimum (angles are positive down)
+    EXPECT_GT(m.acceleration, 0.0) << "a top, not a bottom: " << spec << " boundary " << k;
+    EXPECT_GT(b[k], b[k - 1]);
+    EXPECT_LE(b[k], t_end);
+  }
+  // no turning point is skipped: the key reaches full dip once inside every cycle
+  for (std::size_t k = 0; k + 1 < b.size(); ++k) {
+    double deepest = 0.0;
+    for (int i = 1; i < 200; ++i)
+      deepest = std::max(deepest, input->motion(b[k] + (b[k + 1] - b[k]) * i / 200.0).angle);
+    EXPECT_NEAR(deepest, kDip, 1e-3 * kDip) << spec << " cycle " << k;  // 200 samples per cycle
+  }
+}
+
+TEST(RepetitionCycles, SineBoundariesAreTheKeyTopsAtWholePeriods) {
+  expect_turning_points("motion:sine:8:full", Stroke::full, 8.0, 0.0, 1.0);
+  const std::vector<double> b = cycle_boundaries(Stroke::full, 8.0, 0.0, 1.0);
+  ASSERT_EQ(b.size(), 9u);  // 0, 1/8, …, 8/8
+  EXPECT_NEAR(b[3], 3.0 / 8.0, 1e-12);
+}
+
+TEST(RepetitionCycles, HalfStrokeBoundariesAreTheHalfReleases) {
+  expect_turning_points("motion:sine:10:half", Stroke::half, 10.0, 0.0, 1.0);
+  // cycle 0 holds the first descent and the first rise to half release: 0.05 s + 0.05 s
+  EXPECT_NEAR(cycle_boundaries(Stroke::half, 10.0, 0.0, 1.0)[1], 0.1, 1e-12);
+}
+
+TEST(RepetitionCycles, ChirpBoundariesFollowTheRisingFrequency) {
+  expect_turning_points("motion:chirp:2:12:10:full", Stroke::full, 2.0, 1.0, 10.0);
+  expect_turning_points("motion:chirp:4:14:5:half", Stroke::half, 4.0, 2.0, 5.0);
+  // the cycle frequency 1/duration tracks f0 + r t at the cycle's middle within the chirp's
+  // curvature: over one cycle the period changes by r/f² ≈ 1 %, so 1 % of f
+  const std::vector<double> b = cycle_boundaries(Stroke::full, 2.0, 1.0, 10.0);
+  for (std::size_t k = 0; k + 1 < b.size(); ++k) {
+    const double mid = 0.5 * (b[k] + b[k + 1]);
+    EXPECT_NEAR(1.0 / (b[k + 1] - b[k]), 2.0 + mid, 0.01 * (2.0 + mid));
+  }
+}
+
+TEST(RepetitionCycles, ClassifierCountsStrikesMergesChatterAndFlagsSettling) {
+  const std::vector<double> b{0, 1, 2, 3, 4, 5, 6};
+  const std::vector<Impact> impacts{
+      {0.5, 2.0},  // cycle 0: one strike
+                   // cycle 1: none
+      {2.2, 1.5},
+      {2.6, 0.8},  // cycle 2: two strikes 0.4 s apart
+      {3.5, 1.1},
+      {3.501, 0.1},  // cycle 3: a strike and its chatter 1 ms later
+      {3.999, 1.0},
+      {4.001, 0.2},  // cycle 3 again; its chatter crosses into cycle 4
+      {5.5, 1.3}};   // cycle 5
+  const auto cycles = classify_cycles(b, impacts, 3e-3, 1, 6.0, false);
+  ASSERT_EQ(cycles.size(), 6u);
+  EXPECT_FALSE(cycles[0].judged);
+  EXPECT_TRUE(cycles[1].judged);
+  EXPECT_EQ(cycles[0].outcome, CycleOutcome::struck_once);
+  EXPECT_DOUBLE_EQ(cycles[0].strike_velocity_mps, 2.0);
+  EXPECT_EQ(cycles[1].outcome, CycleOutcome::missed);
+  EXPECT_EQ(cycles[2].strikes, 2);
+  EXPECT_EQ(cycles[2].outcome, CycleOutcome::double_strike);
+  EXPECT_DOUBLE_EQ(cycles[2].strike_velocity_mps, 1.5);
+  EXPECT_EQ(cycles[3].strikes, 2);  // 3.5 and 3.999 are separate blows
+  EXPECT_EQ(cycles[4].strikes, 0);  // 4.001 belongs to the blow at 3.999
+  EXPECT_EQ(cycles[4].outcome, CycleOutcome::missed);
+  EXPECT_EQ(cycles[5].outcome, CycleOutcome::struck_once);
+  EXPECT_DOUBLE_EQ(cycles[5].frequency_hz, 1.0);
+}
+
+TEST(RepetitionCycles, AStoppedRunFailsTheCycleItStoppedIn) {
+  const std::vector<double> b{0, 1, 2, 3, 4};
+  const auto cycles = classify_cycles(b, {{0.5, 1.0}, {1.5, 1.0}, {2.2, 1.0}}, 3e-3, 0, 2.5, true);
+  ASSERT_EQ(cycles.size(), 3u);
+  EXPECT_TRUE(cycles[1].success());
+  EXPECT_EQ(cycles[2].outcome, CycleOutcome::stopped);  // struck once, but did not finish
+}
+
+std::vector<CycleResult> cycles_from(const std::vector<std::pair<double, CycleOutcome>>& list,
+                                     int settle) {
+  std::vector<CycleResult> cycles;
+  for (const auto& [f, outcome] : list) {
+    CycleResult c;
+    c.frequency_hz = f;
+    c.outcome = outcome;
+    c.judged = static_cast<int>(cycles.size()) >= settle;
+    cycles.push_back(c);
+  }
+  return cycles;
+}
+
+TEST(RepetitionMaximum, ChirpTakesTheTopOfTheLongestRunOfSuccesses) {
+  using O = CycleOutcome;
+  const O ok = O::struck_once;
+  SweepResult r;
+  // a settling miss; too slow: a miss, a lucky pair, a double strike; the repeating range
+  // 7–10 Hz; a miss; a lucky pair above the limit
+  chirp_maximum(cycles_from({{2, O::missed},
+                             {3, O::missed},
+                             {4, ok},
+                             {5, ok},
+                             {6, O::double_strike},
+                             {7, ok},
+                             {8, ok},
+                             {9, ok},
+                             {10, ok},
+                             {11, O::missed},
+                             {12, ok},
+                             {13, ok},
+                             {14, O::missed}},
+                            1),
+                3, r);
+  ASSERT_TRUE(r.max_frequency_hz.has_value());
+  EXPECT_EQ(*r.max_frequency_hz, 10.0);
+  EXPECT_TRUE(r.limit_found);
+  ASSERT_TRUE(r.first_failure.has_value());
+  EXPECT_EQ(r.first_failure->outcome, O::missed);
+  EXPECT_EQ(r.first_failure->frequency_hz, 11.0);
+
+  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, ok}}, 0), 2, r);
+  EXPECT_EQ(*r.max_frequency_hz, 4.0);
+  EXPECT_FALSE(r.limit_found);  // no failure up to the last frequency
+  EXPECT_FALSE(r.first_failure.has_value());
+
+  chirp_maximum(cycles_from({{2, ok}, {3, O::missed}, {4, ok}, {5, O::missed}}, 0), 2, r);
+  EXPECT_FALSE(r.max_frequency_hz.has_value());  // no run of two successes
+  EXPECT_EQ(r.first_failure->frequency_hz, 3.0);
+  // a settling cycle does not count toward a run
+  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}}, 1), 2, r);
+  EXPECT_FALSE(r.max_frequency_hz.has_value());
+  // of two equally long runs the first one counts
+  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, O::missed}, {5, ok}, {6, ok}}, 0), 2, r);
+  EXPECT_EQ(*r.max_frequency_hz, 3.0);
+  EXPECT_EQ(r.first_failure->frequency_hz, 4.0);
+}
+
+TEST(RepetitionMaximum, StepsTakesTheTopOfTheLongestRunOfPassingFrequencies) {
+  auto frequency = [](double f, bool passed) {
+    FrequencyResult r;
+    r.frequency_hz = f;
+    r.passed = passed;
+    CycleResult c;
+    c.frequency_hz = f;
+    c.outcome = passed ? CycleOutcome::struck_once : CycleOutcome::missed;
+    r.cycles = {c};
+    return r;
+  };
+  SweepResult r;
+  steps_maximum({frequency(4, false), frequency(10, true), frequency(11, true),
+                 frequency(12, false), frequency(13, false)},
+                r);
+  EXPECT_EQ(*r.max_frequency_hz, 11.0);  // the too-slow failure at 4 Hz is below the limit
+  EXPECT_TRUE(r.limit_found);
+  EXPECT_EQ(r.first_failure->frequency_hz, 12.0);
+  steps_maximum({frequency(10, false)}, r);
+  EXPECT_FALSE(r.max_frequency_hz.has_value());
+  EXPECT_TRUE(r.limit_found);
+  steps_maximum({frequency(10, true)}, r);
+  EXPECT_FALSE(r.limit_found);
+  steps_maximum({frequency(10, true), frequency(11, false), frequency(12, true),
+                 frequency(13, true), frequency(14, false)},
+                r);
+  EXPECT_EQ(*r.max_frequency_hz, 13.0);  // the longer run 12–13 Hz, not the lone 10 Hz
+  EXPECT_EQ(r.first_failure->frequency_hz, 14.0);
+}
+
+TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
+  SweepOptions o;
+  o.f_max_hz = 1.0;  // below the 2 Hz start
+  try {
+    run_repetition_sweep(ActionModel{}, o);
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--fmax"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(parse_stroke("quarter", "--stroke"), InputError);
+  EXPECT_THROW(parse_sweep_mode("random", "--mode"), InputError);
+  EXPECT_EQ(chirp_spec(SweepOptions{}), "motion:chirp:2:20:18:full");
+}
+
+}  // namespace
+}  // namespace pat
