@@ -250,16 +250,12 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
     const double f = input_->force_n(t);
     if (f != 0.0) add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -f), forces_);
   }
-
-  // the upper triangle of M, for readers of the full matrix
-  for (int i = 0; i < n_; ++i)
-    for (int j = i + 1; j < n_; ++j) mass_(i, j) = mass_(j, i);
 }
 
 DofMatrix ActionDynamics::assembled_mass() const {
   DofMatrix mass(n_, n_);
   for (int i = 0; i < n_; ++i)
-    for (int j = 0; j < n_; ++j) mass(i, j) = mass_(i, j);
+    for (int j = 0; j < n_; ++j) mass(i, j) = mass_entry(i, j);
   return mass;
 }
 
@@ -310,7 +306,7 @@ void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
     key_acc = input_->motion(t).acceleration;
     for (int i = 0; i < free_count_; ++i) {
       const int ji = free_index_[i];
-      rhs[i] = forces_[ji] - mass_(ji, key_) * key_acc;
+      rhs[i] = forces_[ji] - mass_entry(ji, key_) * key_acc;
       for (int j = 0; j <= i; ++j) factor(i, j) = mass_(ji, free_index_[j]);
     }
   }
@@ -343,7 +339,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
   }
   // the finger supplies what the key's own equation lacks
   double residual = -forces_[key_];
-  for (int j = 0; j < n_; ++j) residual += mass_(key_, j) * out.acceleration[j];
+  for (int j = 0; j < n_; ++j) residual += mass_entry(key_, j) * out.acceleration[j];
   out.finger_force = residual / arm;
 }
 

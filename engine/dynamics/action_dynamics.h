@@ -164,6 +164,8 @@ class ActionDynamics : public OdeSystem {
   /// Signed distance and normal of a contact at the current positions.
   ContactDistance contact_distance(const ContactConstants& contact) const;
   DofMatrix assembled_mass() const;
+  /// M_ij of the assembled (lower-triangle) mass matrix.
+  double mass_entry(int i, int j) const { return i >= j ? mass_(i, j) : mass_(j, i); }
 
   const ActionModel& model_;
   const KeyInput* input_;
@@ -187,7 +189,7 @@ class ActionDynamics : public OdeSystem {
   double settling_damping_ = 0.0;
   double key_rest_angle_ = 0.0;
   std::uint64_t regime_ = 0;
-  // assembled M (lower triangle used by the solve, full for readers) and forces Q − c
+  // assembled M (lower triangle only: read it through mass_entry) and forces Q − c
   SmallMatrix mass_ = SmallMatrix::Zero();
   SmallVector forces_ = SmallVector::Zero();
   // scratch, so that rhs() does not allocate

@@ -41,24 +41,51 @@ class SmallLu {
 
   /// Solves A x = b in place on the first n entries of b.
   void solve_in_place(Vector& b) const {
-    for (int k = 0; k < n_; ++k)
-      if (row_of_[k] != k) std::swap(b[k], b[row_of_[k]]);
-    for (int i = 1; i < n_; ++i) {
-      double s = b[i];
-      for (int k = 0; k < i; ++k) s -= lu_(i, k) * b[k];
-      b[i] = s;
-    }
-    for (int i = n_ - 1; i >= 0; --i) {
-      double s = b[i];
-      for (int k = i + 1; k < n_; ++k) s -= lu_(i, k) * b[k];
-      b[i] = s / lu_(i, i);
+    switch (n_) {
+      case 1:
+        return solve_fixed<1>(b);
+      case 2:
+        return solve_fixed<2>(b);
+      case 3:
+        return solve_fixed<3>(b);
+      case 4:
+        return solve_fixed<4>(b);
+      case 5:
+        return solve_fixed<5>(b);
+      case 6:
+        return solve_fixed<6>(b);
+      case 7:
+        return solve_fixed<7>(b);
+      case 8:
+        return solve_fixed<8>(b);
+      default:
+        return;
     }
   }
 
  private:
+  /// The solve for n = N, a compile-time size so that the loops unroll (it runs twice per step).
+  template <int N>
+  void solve_fixed(Vector& b) const {
+    for (int k = 0; k < N; ++k)
+      if (row_of_[k] != k) std::swap(b[k], b[row_of_[k]]);
+    for (int i = 1; i < N; ++i) {
+      double s = b[i];
+      for (int k = 0; k < i; ++k) s -= lu_(i, k) * b[k];
+      b[i] = s;
+    }
+    for (int i = N - 1; i >= 0; --i) {
+      double s = b[i];
+      for (int k = i + 1; k < N; ++k) s -= lu_(i, k) * b[k];
+      b[i] = s / lu_(i, i);
+    }
+  }
+
   Matrix lu_ = Matrix::Zero();
   int row_of_[kMaxDof] = {};  ///< row swapped with row k at step k
   int n_ = 0;
 };
+
+static_assert(kMaxDof == 8, "extend SmallLu::solve_in_place's dispatch");
 
 }  // namespace pat

@@ -27,6 +27,24 @@ std::string format_time(double t) {
   return format_number(t) + " s";
 }
 
+/// W x = r through the Schur complement (w_method.h) for n = N dofs, a compile-time size so that
+/// the loops unroll (this runs twice per step): x_v = S⁻¹ (r_v + hγ A_q r_q), x_q = r_q + hγ x_v.
+template <int N>
+void schur_solve(const SmallLu& lu, const SmallLu::Matrix& hg_a_q, double hg, const StateVector& r,
+                 SmallLu::Vector& schur_rhs, StateVector& x) {
+  for (int i = 0; i < N; ++i) {
+    double s = r[N + i];
+    for (int j = 0; j < N; ++j) s += hg_a_q(i, j) * r[j];
+    schur_rhs[i] = s;
+  }
+  lu.solve_in_place(schur_rhs);
+  for (int i = 0; i < N; ++i) {
+    x[i] = r[i] + hg * schur_rhs[i];
+    x[N + i] = schur_rhs[i];
+  }
+}
+static_assert(kMaxDof == 8, "extend WMethod2::solve's dispatch");
+
 }  // namespace
 
 void forward_difference_jacobian(OdeSystem& system, double t, const StateVector& y,
@@ -37,7 +55,10 @@ void forward_difference_jacobian(OdeSystem& system, double t, const StateVector&
   y_work = y;
   f_work.resize(dim);
   jacobian.resize(dim, dim);
-  for (int j = 0; j < dim; ++j) {
+  // velocity columns [n, 2n) first: they leave the positions as in y, so a system that memoizes
+  // its position-dependent work (the contact geometry) reuses that of f0 for all of them
+  for (int c = 0; c < dim; ++c) {
+    const int j = c < n ? n + c : (c < 2 * n ? c - n : c);
     const double scale = (n > 0 && j >= n && j < 2 * n) ? 1e-1 : 1e-3;
     const double y_j = y[j];
     const double y_plus = y_j + kSqrtEps * std::max(std::abs(y_j), scale);
@@ -132,17 +153,24 @@ void WMethod2::factor(double h) {
 
 void WMethod2::solve(const StateVector& r, StateVector& x) {
   if (use_schur_) {
-    const int n = dofs_;
     const double hg = kGamma * factored_h_;
-    for (int i = 0; i < n; ++i) {
-      double s = r[n + i];
-      for (int j = 0; j < n; ++j) s += hg_a_q_(i, j) * r[j];
-      schur_rhs_[i] = s;
-    }
-    lu_schur_.solve_in_place(schur_rhs_);
-    for (int i = 0; i < n; ++i) {
-      x[i] = r[i] + hg * schur_rhs_[i];
-      x[n + i] = schur_rhs_[i];
+    switch (dofs_) {
+      case 1:
+        return schur_solve<1>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 2:
+        return schur_solve<2>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 3:
+        return schur_solve<3>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 4:
+        return schur_solve<4>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 5:
+        return schur_solve<5>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 6:
+        return schur_solve<6>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      case 7:
+        return schur_solve<7>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+      default:
+        return schur_solve<8>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
     }
   } else {
     x = lu_full_.solve(r);

@@ -37,7 +37,8 @@ namespace pat {
 ///   J(:, j) = (f(t, y + Δ_j e_j) − f0) / Δ_j,   Δ_j = √ε · max(|y_j|, s_j),
 /// typical scale s_j = 1e-1 for the velocities v (rad/s, j in [n, 2n) when n = dofs() > 0) and
 /// s_j = 1e-3 for everything else (positions in rad, general first-order states). Calls system.rhs
-/// dimension() times; y_work and f_work are scratch vectors of length dimension(). No heap
+/// dimension() times, the velocity columns first (the positions stay those of y, which a system
+/// may have memoized from f0); y_work and f_work are scratch vectors of length dimension(). No heap
 /// allocation.
 void forward_difference_jacobian(OdeSystem& system, double t, const StateVector& y,
                                  const StateVector& f0, StateVector& y_work, StateVector& f_work,

@@ -135,6 +135,14 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     // when it produced a finite state)
     while (options.sample_interval_s > 0.0 && next_sample <= sim.time() + 1e-12 &&
            sim.time() > sim.previous_time()) {
+      if (std::abs(next_sample - sim.time()) <= 1e-12) {
+        // a sample on the step end (the usual case: the sampling interval is a multiple of the
+        // step) is the step end itself; the dynamics then reuse its memoized positions
+        if (!sim.q().allFinite() || !sim.v().allFinite()) break;
+        record(next_sample, sim.q(), sim.v());
+        next_sample += options.sample_interval_s;
+        continue;
+      }
       hermite(sim.previous_time(), sim.previous_q(), sim.previous_v(), sim.time(), sim.q(), sim.v(),
               next_sample, qs, vs);
       if (!qs.allFinite() || !vs.allFinite()) break;
