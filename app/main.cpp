@@ -26,6 +26,10 @@ usage:
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--json]
   pianoaction bench     [--json] [--duration S]
+  pianoaction practice new   (--action A --seed N [--level 1|2] | --exercise FILE) [--reveal]
+                        [--json]
+  pianoaction practice check (--action A --seed N [--level 1|2] | --exercise FILE)
+                        --answer SETTING:more|less[,SETTING:more|less] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -81,6 +85,7 @@ int main(int argc, char** argv) {
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
+    if (command == "practice") return pat::app::run_practice(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

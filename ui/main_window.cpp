@@ -30,6 +30,7 @@
 #include "plot_export.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "practice_panel.h"
 #include "regulation/regulation.h"
 #include "regulation_panel.h"
 #include "regulation_runner.h"
@@ -78,6 +79,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->setWidget(scroll);
   dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::RightDockWidgetArea, dock);
+  regulation_dock_ = dock;
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
   connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
@@ -177,6 +179,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             }
           });
 
+  build_practice();
   build_menus();
   build_shortcuts();
   statusBar()->showMessage(
@@ -244,6 +247,11 @@ void MainWindow::build_menus() {
   follow->setChecked(true);
   connect(follow, &QAction::toggled, plots_, &PlotStack::set_following);
   connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
+  QMenu* practice = menuBar()->addMenu(tr("&Practice"));
+  QAction* mode = practice_dock_->toggleViewAction();
+  mode->setText(tr("&Practice mode (find a hidden deregulation)"));
+  mode->setShortcut(QKeySequence(tr("Ctrl+P")));
+  practice->addAction(mode);
   view->addAction(tr("&Fit the action"), this, [this] {
     view_->reset_view();
     if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
@@ -272,6 +280,49 @@ void MainWindow::build_shortcuts() {
   shortcut(QKeySequence(Qt::Key_Right), [this] { controller_->step_forward(); });
   shortcut(QKeySequence(Qt::Key_Left), [this] { controller_->step_back(); });
   shortcut(QKeySequence(Qt::Key_Home), [this] { controller_->rewind(); });
+}
+
+void MainWindow::build_practice() {
+  practice_ = new PracticePanel;
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(practice_);
+  scroll->setWidgetResizable(true);
+  practice_dock_ = new QDockWidget(tr("Practice"), this);
+  practice_dock_->setObjectName("practice_dock");
+  practice_dock_->setWidget(scroll);
+  addDockWidget(Qt::RightDockWidgetArea, practice_dock_);
+  practice_dock_->hide();
+  connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
+  // the regulation panel shows true adjuster positions and measured values: hidden while an
+  // exercise runs; closing the practice dock returns to the regulated action
+  connect(practice_, &PracticePanel::practiceActive, this, [this](bool active) {
+    practising_ = active;
+    regulation_dock_->setVisible(!active);
+  });
+  connect(practice_dock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+    if (visible || !practising_ || practice_dock_->isVisible()) return;
+    practising_ = false;
+    regulation_dock_->show();
+    if (!action_name_.empty()) open_action(action_name_);
+  });
+}
+
+void MainWindow::show_practice(bool on) {
+  practice_dock_->setVisible(on);
+  if (on) practice_dock_->raise();
+}
+
+void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {
+  if (model_ && model_->kind == model->kind && model_->source_file == model->source_file) {
+    change_model(std::move(model));
+    return;
+  }
+  // another action: set the view and plots up for it (the regulation panel stays hidden)
+  model_ = model;
+  regulation_->set_model(*model);
+  plots_->set_model(*model);
+  view_->reset_view();
+  start(run_controls_->input_form()->spec());
 }
 
 void MainWindow::open_action(const std::string& name_or_path) {

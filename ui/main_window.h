@@ -21,6 +21,7 @@ namespace pat::ui {
 
 class ActionView;
 class MeasurementService;
+class PracticePanel;
 class PlaybackController;
 class DeregulationRunner;
 class RegulationRunner;
@@ -58,6 +59,9 @@ class MainWindow : public QMainWindow {
   /// plays a 3 Hz sine, then replayed with the measured value over time in the log.
   void run_deregulation_demo();
   DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
+  /// The practice mode (issue 7): its dock, shown from the Practice menu.
+  PracticePanel* practice() const { return practice_; }
+  void show_practice(bool on);
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
   /// The message shown over the action (empty when hidden).
@@ -77,6 +81,8 @@ class MainWindow : public QMainWindow {
   void restore_settings();
   void measure_current_model();
   void save_preset_from_menu();
+  void build_practice();
+  void practise_on(std::shared_ptr<const ActionModel> model);
 
   PlaybackController* controller_;
   ActionView* view_;
@@ -91,6 +97,10 @@ class MainWindow : public QMainWindow {
   QPushButton* regulate_button_;
   QLabel* banner_;
   QScrollArea* regulation_scroll_;
+  class QDockWidget* regulation_dock_ = nullptr;
+  class QDockWidget* practice_dock_ = nullptr;
+  PracticePanel* practice_ = nullptr;
+  bool practising_ = false;
   QAction* grand_action_;
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
