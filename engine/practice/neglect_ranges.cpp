@@ -36,9 +36,10 @@ const std::vector<NeglectRange> kGrand = {
      "drop ≤1/16 in (1.6 mm) below let-off [SW][QRS]: a drift of 0.5–1.5 mm. Model: ≈5 mm/mm", +1,
      "raising the drop screw by more than 0.03 mm lets the repetition lever carry the hammer so "
      "that the jack never lifts it, instead of a hammer held close to the string"},
-    {"checking", 1.0, 2.0, -1,
+    {"checking", 0.5, 1.0, -1,
      "checking 14–16 mm [ANT], ≈5/8 in [PP]: backcheck wires bend with use by a few mm. Model: "
-     "≈−2 mm/mm (the preset's + bends toward the hammer yet the catch comes nearer the string)"},
+     "≈−2 mm/mm (the preset's + bends toward the hammer yet the catch comes nearer the string); "
+     "beyond +1.2 mm the forte blow jams the capstan into the whippen"},
 };
 
 const std::vector<NeglectRange> kUpright = {
@@ -48,10 +49,11 @@ const std::vector<NeglectRange> kUpright = {
     {"key_dip", 0.5, 1.5, -1,
      "front-rail punchings compress (spinets just under 3/8 in [AZ]; 1 mm is a neglected key). "
      "Model: 1.0 mm/mm"},
-    {"lost_motion", 0.5, 2.0, -1,
+    {"lost_motion", 0.1, 0.3, -1,
      "key and capstan felts compress: lost motion grows from minimal toward 1/16 in (1.6 mm) and "
      "beyond [JPU][RW]. Model: the rest gap stays ≈ −0.007 mm (the jack touches the butt at "
-     "rest) for any capstan position"},
+     "rest) for any capstan position, and from −0.5 mm the key never reaches its punching, so "
+     "the range stays within ±0.3 mm"},
     {"let_off", 0.2, 0.6, +1,
      "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈3 mm/mm upward",
      +1,

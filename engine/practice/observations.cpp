@@ -241,8 +241,10 @@ std::vector<PracticeTest> all_tests() {
           PracticeTest::Repetition};
 }
 
-std::vector<Observation> run_test(const ActionModel& model, const RestState& rest,
-                                  PracticeTest test, ProgressReporter* progress) {
+namespace {
+
+std::vector<Observation> run_test_unguarded(const ActionModel& model, const RestState& rest,
+                                            PracticeTest test, ProgressReporter* progress) {
   switch (test) {
     case PracticeTest::Rest:
       return rest_geometry(model, rest);
@@ -264,6 +266,35 @@ std::vector<Observation> run_test(const ActionModel& model, const RestState& res
     }
   }
   return {};
+}
+
+std::string test_label(PracticeTest test) {
+  switch (test) {
+    case PracticeTest::Rest:
+      return "rest geometry";
+    case PracticeTest::SlowPress:
+      return "slow key press";
+    case PracticeTest::ForteBlow:
+      return "forte blow";
+    case PracticeTest::Repetition:
+      return "repetition test";
+  }
+  return "test";
+}
+
+}  // namespace
+
+std::vector<Observation> run_test(const ActionModel& model, const RestState& rest,
+                                  PracticeTest test, ProgressReporter* progress) {
+  try {
+    return run_test_unguarded(model, rest, test, progress);
+  } catch (const Cancelled&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    // the action is too far off for the test itself (e.g. the key never reaches its
+    // punching): that is what the technician observes
+    return {missing(test_name(test) + ".done", test_label(test), "", e.what())};
+  }
 }
 
 std::vector<Observation> run_all_tests(const ActionModel& model, ProgressReporter* progress) {

@@ -64,7 +64,7 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
               seen);
   } else if (id == "rest.escapement_gap_mm") {
     if (more)
-      out.add("lost_motion",
+      out.add("excess_gap",
               "Lost motion at rest" + v +
                   ": the hammer lags the key, power is lost and hammers do not "
                   "return to the same height.",
@@ -116,16 +116,19 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
                   "playing.",
               seen);
   } else if (id == "slow_press.held_distance_mm") {
+    // the consequence a technician names only where the hammer is near enough to touch
     if (more)
       out.add("falls_far",
-              "With the key held down the hammer falls far back from the string" + v +
-                  ": a spongy feel, the hammer does not rise on the lever.",
+              "With the key held down the hammer falls farther back from the "
+              "string" +
+                  v + ": a spongy feel.",
               seen);
     else
-      out.add("held_close",
-              "With the key held down the hammer stays close to the string" + v +
-                  ": it may re-touch the string — bobble or double strike.",
-              seen);
+      out.add(
+          "held_close",
+          "With the key held down the hammer stays closer to the string" + v +
+              (*seen.value < 5.0 ? ": it may re-touch the string — bobble or double strike." : "."),
+          seen);
   } else if (id == "slow_press.damper_start_fraction") {
     if (more)
       out.add("damper_late",
@@ -244,6 +247,11 @@ std::vector<Symptom> describe_symptoms(const std::vector<Observation>& seen,
   SymptomList out;
   for (const Observation& o : seen) {
     const Observation* reg = find_observation(regulated, o.id);
+    if (!reg && !o.value) {
+      out.add("test_fails",
+              "The " + o.label + " cannot be done on this action: " + o.missing_reason + ".", o);
+      continue;
+    }
     if (!reg || !differs(o, *reg)) continue;
     if (o.value && reg->value) {
       if (o.id == "forte_blow.impact_speed_mps") {
@@ -271,7 +279,7 @@ std::vector<Symptom> describe_symptoms(const std::vector<Observation>& seen,
 bool differ_measurably(const std::vector<Observation>& a, const std::vector<Observation>& b) {
   for (const Observation& o : a) {
     const Observation* other = find_observation(b, o.id);
-    if (other && differs(o, *other)) return true;
+    if (other ? differs(o, *other) : !o.value) return true;  // a test that cannot be done
   }
   return false;
 }

@@ -12,7 +12,7 @@
 namespace pat {
 
 struct Symptom {
-  std::string id;           ///< stable keyword, e.g. "blocking", "double_strike", "lost_motion"
+  std::string id;           ///< stable keyword, e.g. "blocking", "double_strike", "excess_gap"
   std::string text;         ///< one sentence with the numbers
   std::string observation;  ///< the observation it was read from
 };
