@@ -1,6 +1,7 @@
 #include "practice_panel.h"
 
 #include <QComboBox>
+#include <QDateTime>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -11,6 +12,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
@@ -107,15 +109,28 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   auto* answer_row = new QHBoxLayout(answer_box);
   answer_setting_ = new QComboBox(answer_box);
   answer_direction_ = new QComboBox(answer_box);
-  answer_direction_->addItem(tr("more than its target"), "more");
-  answer_direction_->addItem(tr("less than its target"), "less");
+  second_setting_ = new QComboBox(answer_box);
+  second_direction_ = new QComboBox(answer_box);
+  for (QComboBox* d : {answer_direction_, second_direction_}) {
+    d->addItem(tr("more than its target"), "more");
+    d->addItem(tr("less than its target"), "less");
+  }
+  second_setting_->setToolTip(tr("Level 2: the second hidden setting"));
+  answer_setting_->setObjectName("answer_setting");
+  answer_direction_->setObjectName("answer_direction");
+  second_setting_->setObjectName("second_setting");
+  second_direction_->setObjectName("second_direction");
   answer_button_ = new QPushButton(tr("Answer"), answer_box);
   hint_button_ = new QPushButton(tr("Hint"), answer_box);
-  for (QWidget* w : std::initializer_list<QWidget*>{answer_setting_, answer_direction_,
-                                                    answer_button_, hint_button_}) {
+  answer_button_->setObjectName("answer_button");
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
+                                       second_direction_, answer_button_, hint_button_}) {
     answer_row->addWidget(w);
     w->setEnabled(false);
   }
+  second_setting_->hide();
+  second_direction_->hide();
   column->addWidget(answer_box);
   connect(answer_button_, &QPushButton::clicked, this, &PracticePanel::answer_from_form);
   connect(hint_button_, &QPushButton::clicked, this, &PracticePanel::request_hint);
@@ -142,6 +157,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   history_ = new QListWidget(history_box);
   history_->setWordWrap(true);
   history_layout->addWidget(history_);
+  history_layout->addWidget(new QLabel(tr("Past sessions"), history_box));
+  past_sessions_ = new QListWidget(history_box);
+  past_sessions_->setMaximumHeight(90);
+  history_layout->addWidget(past_sessions_);
+  show_past_sessions();
   column->addWidget(history_box, 1);
   status_ = new QLabel(this);
   status_->setWordWrap(true);
@@ -180,6 +200,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
                             .arg(s.economy, 0, 'f', 1)
                             .arg(s.hint_penalty, 0, 'f', 1));
             export_button_->setEnabled(true);
+            remember_session(s);
             emit scored(s.total);
           });
   connect(runner_, &PracticeRunner::failed, this, [this](const QString& reason) {
@@ -246,8 +267,13 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
   symptoms_->clear();
   history_->clear();
   answer_setting_->clear();
-  for (const RegulationSetting& s : regulated_->regulation)
+  second_setting_->clear();
+  for (const RegulationSetting& s : regulated_->regulation) {
     answer_setting_->addItem(QString::fromStdString(s.name));
+    second_setting_->addItem(QString::fromStdString(s.name));
+  }
+  second_setting_->setVisible(session_->exercise().level == 2);
+  second_direction_->setVisible(session_->exercise().level == 2);
   build_adjusters();
   append_history();
   set_busy(false);
@@ -318,8 +344,13 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
 }
 
 void PracticePanel::answer_from_form() {
-  submit_answer({{answer_setting_->currentText().toStdString(),
-                  answer_direction_->currentData().toString().toStdString()}});
+  if (!session_) return;
+  std::vector<FaultAnswer> answers{{answer_setting_->currentText().toStdString(),
+                                    answer_direction_->currentData().toString().toStdString()}};
+  if (session_->exercise().level == 2)
+    answers.push_back({second_setting_->currentText().toStdString(),
+                       second_direction_->currentData().toString().toStdString()});
+  submit_answer(answers);
 }
 
 QString PracticePanel::request_hint() {
@@ -388,8 +419,9 @@ void PracticePanel::set_busy(bool busy) {
   for (QPushButton* b : test_buttons_) b->setEnabled(active && !busy);
   cancel_->setEnabled(busy);
   for (QWidget* w :
-       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, answer_button_,
-                                       hint_button_, finish_button_, adjusters_box_})
+       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
+                                       second_direction_, answer_button_, hint_button_,
+                                       finish_button_, adjusters_box_})
     w->setEnabled(active && !busy);
   if (!busy) progress_->setValue(progress_->maximum());
 }
@@ -407,6 +439,35 @@ void PracticePanel::append_history() {
                           .arg(QString::fromStdString(events[i].kind))
                           .arg(QString::fromStdString(events[i].detail)));
   history_->scrollToBottom();
+}
+
+/// How many scored sessions the settings keep.
+constexpr int kPastSessionsKept = 50;
+
+void PracticePanel::remember_session(const SessionScore& score) {
+  QSettings settings;
+  QStringList past = settings.value("practice/past_sessions").toStringList();
+  past.prepend(tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
+                   .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
+                   .arg(QString::fromStdString(session_->exercise().title))
+                   .arg(score.total, 0, 'f', 1)
+                   .arg(score.tests_used)
+                   .arg(score.hints_used)
+                   .arg(score.time_s, 0, 'f', 0));
+  while (past.size() > kPastSessionsKept) past.removeLast();
+  settings.setValue("practice/past_sessions", past);
+  show_past_sessions();
+}
+
+void PracticePanel::show_past_sessions() {
+  past_sessions_->clear();
+  past_sessions_->addItems(QSettings().value("practice/past_sessions").toStringList());
+}
+
+QStringList PracticePanel::past_sessions() const {
+  QStringList lines;
+  for (int i = 0; i < past_sessions_->count(); ++i) lines << past_sessions_->item(i)->text();
+  return lines;
 }
 
 double PracticePanel::elapsed_s() const {

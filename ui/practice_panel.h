@@ -51,6 +51,8 @@ class PracticePanel : public QWidget {
   PracticeRunner* runner() const { return runner_; }
   /// The symptom lines shown, and the status line (tests).
   QStringList symptom_lines() const;
+  /// The scored sessions remembered between runs of the program (newest first).
+  QStringList past_sessions() const;
   QString status_text() const;
 
  signals:
@@ -67,6 +69,8 @@ class PracticePanel : public QWidget {
   void set_busy(bool busy);
   void show_status(const QString& text);
   void append_history();
+  void remember_session(const SessionScore& score);
+  void show_past_sessions();
   double elapsed_s() const;
   void start_from_form();
   void open_file_from_dialog();
@@ -88,6 +92,8 @@ class PracticePanel : public QWidget {
   QListWidget* symptoms_;
   QComboBox* answer_setting_;
   QComboBox* answer_direction_;
+  QComboBox* second_setting_;  ///< level 2: the second fault named
+  QComboBox* second_direction_;
   QPushButton* answer_button_;
   QPushButton* hint_button_;
   QPushButton* finish_button_;
@@ -96,6 +102,7 @@ class PracticePanel : public QWidget {
   std::map<std::string, QSlider*> sliders_;
   std::map<std::string, QLabel*> moved_labels_;
   QListWidget* history_;
+  QListWidget* past_sessions_;  ///< scored sessions kept in the settings, newest first
   QLabel* status_;
 };
 

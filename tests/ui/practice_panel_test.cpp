@@ -4,9 +4,11 @@
 // naming the file and the field; the regulation panel is hidden while practising.
 #include "practice_panel.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
@@ -72,7 +74,22 @@ void PracticePanelTest::walk_through_an_exercise() {
   // answer: first half right, then right
   const auto answers = pat::exercise_answers(panel->session()->exercise());
   QVERIFY(!panel->submit_answer({answers[0]}).correct);
-  QVERIFY(panel->submit_answer(answers).correct);
+  // the second answer through the form: both faults of this level-2 exercise
+  auto choose = [panel](const char* name, const QString& data_or_text) {
+    auto* box = panel->findChild<QComboBox*>(name);
+    QVERIFY(box && box->isEnabled());
+    int index = box->findData(data_or_text);
+    if (index < 0) index = box->findText(data_or_text);
+    QVERIFY(index >= 0);
+    box->setCurrentIndex(index);
+  };
+  QCOMPARE(answers.size(), std::size_t{2});
+  choose("answer_setting", QString::fromStdString(answers[0].setting));
+  choose("answer_direction", QString::fromStdString(answers[0].direction));
+  choose("second_setting", QString::fromStdString(answers[1].setting));
+  choose("second_direction", QString::fromStdString(answers[1].direction));
+  QTest::mouseClick(panel->findChild<QPushButton*>("answer_button"), Qt::LeftButton);
+  QVERIFY2(panel->status_text().startsWith("Correct"), qPrintable(panel->status_text()));
   QVERIFY(!panel->request_hint().isEmpty());
 
   // correct: the relative moves that undo both faults
@@ -86,6 +103,8 @@ void PracticePanelTest::walk_through_an_exercise() {
   const pat::SessionScore score = *panel->session()->final_score();
   QVERIFY2(score.regulation > 39.0, qPrintable(panel->status_text()));
   QVERIFY(score.total > 0.0);
+  // the scored session is remembered for the next run of the program
+  QVERIFY(panel->past_sessions().value(0).contains("Grand, level 2"));
 
   QTemporaryDir dir;
   const QString pdf = dir.filePath("session.pdf"), csv = dir.filePath("session.csv");
