@@ -290,6 +290,8 @@ void MainWindow::build_practice() {
   practice_dock_ = new QDockWidget(tr("Practice"), this);
   practice_dock_->setObjectName("practice_dock");
   practice_dock_->setWidget(scroll);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(practice_->sizeHint().width() + 24);
   addDockWidget(Qt::RightDockWidgetArea, practice_dock_);
   practice_dock_->hide();
   connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
@@ -299,17 +301,27 @@ void MainWindow::build_practice() {
     practising_ = active;
     regulation_dock_->setVisible(!active);
   });
-  connect(practice_dock_, &QDockWidget::visibilityChanged, this, [this](bool visible) {
-    if (visible || !practising_ || practice_dock_->isVisible()) return;
-    practising_ = false;
-    regulation_dock_->show();
-    if (!action_name_.empty()) open_action(action_name_);
+  // the dock is opened and closed from the Practice menu only (no close button): hiding it
+  // behind a tab or closing the window must not end an exercise
+  practice_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  connect(practice_dock_->toggleViewAction(), &QAction::triggered, this, [this](bool shown) {
+    if (!shown) end_practice();
   });
+}
+
+void MainWindow::end_practice() {
+  if (!practising_) return;
+  practising_ = false;
+  regulation_dock_->show();
+  if (!action_name_.empty()) open_action(action_name_);
 }
 
 void MainWindow::show_practice(bool on) {
   practice_dock_->setVisible(on);
-  if (on) practice_dock_->raise();
+  if (on)
+    practice_dock_->raise();
+  else
+    end_practice();
 }
 
 void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {

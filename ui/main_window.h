@@ -61,6 +61,8 @@ class MainWindow : public QMainWindow {
   DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
   /// The practice mode (issue 7): its dock, shown from the Practice menu.
   PracticePanel* practice() const { return practice_; }
+  /// Shows the practice dock; hiding it ends a running exercise (back to the regulated action
+  /// and the regulation panel).
   void show_practice(bool on);
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
@@ -83,6 +85,7 @@ class MainWindow : public QMainWindow {
   void save_preset_from_menu();
   void build_practice();
   void practise_on(std::shared_ptr<const ActionModel> model);
+  void end_practice();
 
   PlaybackController* controller_;
   ActionView* view_;

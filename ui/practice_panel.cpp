@@ -4,6 +4,7 @@
 #include <QDateTime>
 #include <QFileDialog>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -48,6 +49,14 @@ QString test_title(PracticeTest test) {
   return {};
 }
 
+/// Long lines wrap to the list's width instead of scrolling sideways.
+void wrap_lines(QListWidget* list) {
+  list->setWordWrap(true);
+  list->setResizeMode(QListView::Adjust);
+  list->setTextElideMode(Qt::ElideNone);
+  list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+}
+
 }  // namespace
 
 PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
@@ -81,12 +90,13 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
 
   auto* tests_box = new QGroupBox(tr("Technician's tests on this action"), this);
   auto* tests_layout = new QVBoxLayout(tests_box);
-  auto* buttons = new QHBoxLayout;
+  auto* buttons = new QGridLayout;  // two by two: the dock stays narrow
   for (PracticeTest test : all_tests()) {
     auto* b = new QPushButton(test_title(test), tests_box);
     b->setEnabled(false);
     connect(b, &QPushButton::clicked, this, [this, test] { run_test(test); });
-    buttons->addWidget(b);
+    const int n = static_cast<int>(test_buttons_.size());
+    buttons->addWidget(b, n / 2, n % 2);
     test_buttons_.push_back(b);
   }
   tests_layout->addLayout(buttons);
@@ -99,14 +109,14 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   progress_row->addWidget(cancel_);
   tests_layout->addLayout(progress_row);
   symptoms_ = new QListWidget(tests_box);
-  symptoms_->setWordWrap(true);
+  wrap_lines(symptoms_);
   symptoms_->setMinimumHeight(120);
   tests_layout->addWidget(symptoms_);
   column->addWidget(tests_box);
   connect(cancel_, &QPushButton::clicked, runner_, &PracticeRunner::cancel);
 
   auto* answer_box = new QGroupBox(tr("Diagnosis"), this);
-  auto* answer_row = new QHBoxLayout(answer_box);
+  auto* answer_grid = new QGridLayout(answer_box);
   answer_setting_ = new QComboBox(answer_box);
   answer_direction_ = new QComboBox(answer_box);
   second_setting_ = new QComboBox(answer_box);
@@ -123,12 +133,16 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   answer_button_ = new QPushButton(tr("Answer"), answer_box);
   hint_button_ = new QPushButton(tr("Hint"), answer_box);
   answer_button_->setObjectName("answer_button");
+  answer_grid->addWidget(answer_setting_, 0, 0);
+  answer_grid->addWidget(answer_direction_, 0, 1);
+  answer_grid->addWidget(second_setting_, 1, 0);
+  answer_grid->addWidget(second_direction_, 1, 1);
+  answer_grid->addWidget(answer_button_, 2, 0);
+  answer_grid->addWidget(hint_button_, 2, 1);
   for (QWidget* w :
        std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
-                                       second_direction_, answer_button_, hint_button_}) {
-    answer_row->addWidget(w);
+                                       second_direction_, answer_button_, hint_button_})
     w->setEnabled(false);
-  }
   second_setting_->hide();
   second_direction_->hide();
   column->addWidget(answer_box);
@@ -155,10 +169,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   auto* history_box = new QGroupBox(tr("History"), this);
   auto* history_layout = new QVBoxLayout(history_box);
   history_ = new QListWidget(history_box);
-  history_->setWordWrap(true);
+  wrap_lines(history_);
   history_layout->addWidget(history_);
   history_layout->addWidget(new QLabel(tr("Past sessions"), history_box));
   past_sessions_ = new QListWidget(history_box);
+  wrap_lines(past_sessions_);
   past_sessions_->setMaximumHeight(90);
   history_layout->addWidget(past_sessions_);
   show_past_sessions();
@@ -418,12 +433,14 @@ void PracticePanel::set_busy(bool busy) {
   const bool active = session_ != nullptr;
   for (QPushButton* b : test_buttons_) b->setEnabled(active && !busy);
   cancel_->setEnabled(busy);
-  for (QWidget* w :
-       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
-                                       second_direction_, answer_button_, hint_button_,
-                                       finish_button_, adjusters_box_})
+  for (QWidget* w : std::initializer_list<QWidget*>{
+           answer_setting_, answer_direction_, second_setting_, second_direction_, answer_button_,
+           hint_button_, finish_button_, adjusters_box_})
     w->setEnabled(active && !busy);
-  if (!busy) progress_->setValue(progress_->maximum());
+  if (!busy) {
+    progress_->setValue(progress_->maximum());
+    progress_->setFormat(tr("ready"));
+  }
 }
 
 void PracticePanel::show_status(const QString& text) {

@@ -35,11 +35,17 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
     const QString stage = QString::fromStdString(test_name(test));
     const int runs = have_regulated ? 1 : 2;
     int run_index = 0;
+    double last_sent = -1.0;
+    // the engine reports every step (tens of thousands in a forte blow): the window hears of
+    // each whole percent only, so its event queue never floods
     ProgressReporter reporter(
-        [this, stage, &run_index, runs](double f, const std::string&) {
+        [this, stage, &run_index, &last_sent, runs](double f, const std::string&) {
           const double overall = (run_index + f) / runs;
-          QMetaObject::invokeMethod(this,
-                                    [this, overall, stage] { emit progress(overall, stage); });
+          if (overall - last_sent >= 0.01) {
+            last_sent = overall;
+            QMetaObject::invokeMethod(this,
+                                      [this, overall, stage] { emit progress(overall, stage); });
+          }
           return !cancelled_.load();
         },
         1);

@@ -98,7 +98,8 @@ std::string PracticeSession::hint(double t_s) {
       text = symptoms_seen_.empty()
                  ? "Run the four tests first: the rest geometry, a slow key press, a forte blow "
                    "and repeated notes; compare each number with the regulated action."
-                 : "Start from the clearest symptom: " + symptoms_seen_.front().text;
+                 : "Start from this symptom and ask which setting makes it: " +
+                       symptoms_seen_.front().text;
       break;
     case 1:
       text = "The hidden setting is measured in " + measuring_test(first.setting) + ".";
