@@ -5,8 +5,10 @@
 // (domain.md section 3) where the table gives one.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "analysis/parallel_runs.h"
 #include "practice/exercise.h"
@@ -184,6 +186,53 @@ INSTANTIATE_TEST_SUITE_P(EverySetting, PracticeSymptoms, ::testing::ValuesIn(eve
                          [](const auto& info) {
                            return info.param.first + "_" + info.param.second;
                          });
+
+}  // namespace
+}  // namespace pat
+
+namespace pat {
+namespace {
+
+// The observations repeat the technician's measurements (measurements.h) where they overlap:
+// the same procedure on the same model gives the same number. The tolerance 1e-9 mm is round-off
+// (the same steps are taken). The repetition counts are whole strikes over three cycles.
+TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
+  const ActionModel grand = test::shipped("grand");
+  const RestState rest = find_rest_state(grand);
+  std::vector<Observation> seen;
+  for (PracticeTest t : all_tests()) {
+    const std::vector<Observation> part = run_test(grand, rest, t);
+    seen.insert(seen.end(), part.begin(), part.end());
+  }
+  auto value = [&](const std::string& id) {
+    const Observation* o = find_observation(seen, id);
+    EXPECT_TRUE(o && o->value) << id;
+    return o && o->value ? *o->value : NAN;
+  };
+  const std::vector<std::pair<std::string, std::string>> same = {
+      {"rest.key_travel_mm", "key_dip"},
+      {"rest.hammer_distance_mm", "hammer_blow"},
+      {"rest.escapement_gap_mm", "lever_height"},
+      {"rest.jack_edge_mm", "jack_position"},
+      {"slow_press.escapement_distance_mm", "let_off"},
+      {"slow_press.held_distance_mm", "drop"},
+      {"forte_blow.caught_distance_mm", "checking"},
+  };
+  for (const auto& [id, setting] : same)
+    EXPECT_NEAR(value(id), measure_setting(grand, setting, &rest), 1e-9) << id;
+  EXPECT_EQ(value("forte_blow.strikes"), 1.0);
+  EXPECT_GT(value("forte_blow.impact_speed_mps"), 0.0);
+  for (double hz : kRepetitionFrequencies) {
+    std::ostringstream id;
+    id << "repetition." << hz << "hz_strikes_per_cycle";
+    const double per_cycle = value(id.str());
+    EXPECT_NEAR(per_cycle * 3.0, std::round(per_cycle * 3.0), 1e-12) << id.str();
+    EXPECT_GE(per_cycle, 0.0);
+  }
+  // the regulated action has no symptom compared with itself
+  EXPECT_TRUE(describe_symptoms(seen, seen).empty());
+  EXPECT_FALSE(differ_measurably(seen, seen));
+}
 
 }  // namespace
 }  // namespace pat
