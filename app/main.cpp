@@ -29,7 +29,7 @@ usage:
   pianoaction practice new   (--action A --seed N [--level 1|2] | --exercise FILE) [--reveal]
                         [--json]
   pianoaction practice check (--action A --seed N [--level 1|2] | --exercise FILE)
-                        --answer SETTING:more|less[,SETTING:more|less] [--json]
+                        --answer SETTING:more|less[,SETTING:more|less] [--reveal] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS

@@ -1,7 +1,7 @@
 // pianoaction practice: virtual deregulation exercises (issue 7).
 //   practice new   --action A (--seed N | --exercise FILE) [--level 1|2] [--reveal] [--json]
 //   practice check --action A (--seed N | --exercise FILE) [--level 1|2] --answer S:D[,S:D]
-//                  [--json]
+//                  [--reveal] [--json]
 // `new` simulates the technician's tests on the hidden and the regulated action and prints the
 // symptoms; `check` judges a diagnosis from the exercise alone (no simulation).
 #include <cstdint>
@@ -154,6 +154,12 @@ int run_check(const CommandLine& cl) {
     out["correct"] = judgement.correct;
     out["score"] = judgement.score;
     out["remarks"] = judgement.remarks;
+    if (cl.has("--reveal")) {  // for a teacher: the exercise's answer, without any simulation
+      nlohmann::json all = nlohmann::json::array();
+      for (const FaultAnswer& a : exercise_answers(loaded.exercise)) all.push_back(answer_json(a));
+      out["answer"] = all.front();
+      out["answers"] = all;
+    }
     std::cout << out.dump(1) << "\n";
   } else {
     std::cout << (judgement.correct ? "correct" : "not correct") << ", score " << judgement.score
@@ -172,8 +178,8 @@ int run_practice(const std::vector<std::string>& args) {
   if (args[0] == "new")
     return run_new(
         CommandLine(rest, {"--action", "--seed", "--level", "--exercise"}, {"--reveal", "--json"}));
-  return run_check(
-      CommandLine(rest, {"--action", "--seed", "--level", "--exercise", "--answer"}, {"--json"}));
+  return run_check(CommandLine(rest, {"--action", "--seed", "--level", "--exercise", "--answer"},
+                               {"--reveal", "--json"}));
 }
 
 }  // namespace pat::app

@@ -46,21 +46,31 @@ settings = {"grand": ["key_dip", "jack_position", "lever_height", "hammer_blow",
                       "checking"],
             "upright": ["hammer_blow", "key_dip", "lost_motion", "let_off", "checking", "bridle",
                         "damper_lift"]}
+flip = {"more": "less", "less": "more"}
 for action, names in settings.items():
     for seed in range(50):
-        # the answer as `check` judges it: exactly one (setting, direction) of 14 is correct
-        right = []
-        for name in names:
-            for direction in ("more", "less"):
-                r = run("check", "--action", action, "--seed", str(seed), "--answer",
-                        "%s:%s" % (name, direction))
-                if r["correct"]:
-                    assert r["score"] == 100, r
-                    right.append((name, direction))
-                else:
-                    assert r["score"] < 100, r
-        assert len(right) == 1, (action, seed, right)
-print("ok: practice check, one right answer out of 14 for 50 seeds of each action")
+        s = str(seed)
+        # the answer the exercise holds (--reveal), judged right; its flipped direction and
+        # every other setting judged wrong
+        r = run("check", "--action", action, "--seed", s, "--answer", names[0] + ":more",
+                "--reveal")
+        a = r["answer"]
+        right = run("check", "--action", action, "--seed", s, "--answer",
+                    "%s:%s" % (a["setting"], a["direction"]))
+        assert right["correct"] and right["score"] == 100, (action, seed, right)
+        flipped = run("check", "--action", action, "--seed", s, "--answer",
+                      "%s:%s" % (a["setting"], flip[a["direction"]]))
+        assert not flipped["correct"] and flipped["score"] == 40, (action, seed, flipped)
+        other = [n for n in names if n != a["setting"]][seed % 6]
+        wrong = run("check", "--action", action, "--seed", s, "--answer",
+                    "%s:%s" % (other, a["direction"]))
+        assert not wrong["correct"] and wrong["score"] == 0, (action, seed, wrong)
+        if seed < 3:  # all 14 answers: exactly one is right
+            hits = [(n, d) for n in names for d in ("more", "less")
+                    if run("check", "--action", action, "--seed", s, "--answer",
+                           "%s:%s" % (n, d))["correct"]]
+            assert hits == [(a["setting"], a["direction"])], (action, seed, hits)
+print("ok: practice check judges right and wrong answers for 50 seeds of each action")
 PY
 
 # the answer `new --reveal` gives is the one `check` accepts (a few seeds: `new` simulates)
