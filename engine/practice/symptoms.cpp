@@ -166,18 +166,23 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
       out.add("rests_close", "After a forte blow the hammer settles close to the string" + v + ".",
               seen);
   } else if (starts_with(id, "repetition.")) {
+    // one strike per key cycle is a repeating note: more than one is a double strike, fewer a
+    // failure to repeat; a change on the same side of one is named as what it is
     const std::string at = seen.label.substr(seen.label.find(" at ") + 1);
-    if (more)
-      out.add("double_strike",
-              "Double strikes in repeated notes " + at + ": " + fixed(*seen.value, 2) +
-                  " strikes per key cycle (regulated "
-                  "action: " +
-                  fixed(reg, 2) + ").",
+    const std::string counts = fixed(*seen.value, 2) +
+                               " strikes per key cycle (regulated "
+                               "action: " +
+                               fixed(reg, 2) + ")";
+    const double one = 1.0 + 1e-9;
+    if (more && *seen.value > one)
+      out.add("double_strike", "Double strikes in repeated notes " + at + ": " + counts + ".",
               seen);
+    else if (more)
+      out.add("repeats_more", "Repeated notes " + at + " sound more often: " + counts + ".", seen);
+    else if (*seen.value < 1.0 - 1e-9)
+      out.add("failure_to_repeat", "Failure to repeat " + at + ": " + counts + ".", seen);
     else
-      out.add("failure_to_repeat",
-              "Failure to repeat " + at + ": " + fixed(*seen.value, 2) +
-                  " strikes per key cycle (regulated action: " + fixed(reg, 2) + ").",
+      out.add("fewer_strikes", "Fewer extra strikes in repeated notes " + at + ": " + counts + ".",
               seen);
   }
 }
