@@ -22,5 +22,6 @@ int run_sweep(const std::vector<std::string>& args);
 /// `study WHAT ...`: dispatches on the study name (study_command.cpp).
 int run_study(const std::vector<std::string>& args);
 int run_study_compare(const std::vector<std::string>& args);
+int run_practice(const std::vector<std::string>& args);
 
 }  // namespace pat::app

@@ -38,6 +38,10 @@ usage:
                         [--set ADJUSTER=MM]... [--without PART]... [--out CSV] [--json]
   pianoaction study double-blow --action upright [--force N] [--pulse-ms MS] [--gap-ms MS]
                         [--duration S] [--out CSV] [--json]
+  pianoaction practice new   (--action A --seed N [--level 1|2] | --exercise FILE) [--reveal]
+                        [--json]
+  pianoaction practice check (--action A --seed N [--level 1|2] | --exercise FILE)
+                        --answer SETTING:more|less[,SETTING:more|less] [--reveal] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -98,6 +102,7 @@ int main(int argc, char** argv) {
     if (command == "keyfall") return pat::app::run_keyfall(args);
     if (command == "touchweight") return pat::app::run_touchweight(args);
     if (command == "study") return pat::app::run_study(args);
+    if (command == "practice") return pat::app::run_practice(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

@@ -35,6 +35,7 @@
 #include "plot_export.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "practice_panel.h"
 #include "regulation/regulation.h"
 #include "regulation_panel.h"
 #include "regulation_runner.h"
@@ -83,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->setWidget(scroll);
   dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
   addDockWidget(Qt::RightDockWidgetArea, dock);
+  regulation_dock_ = dock;
 
   // analyses of the current action (with whatever the sliders have done to it)
   analyses_ = new AnalysesPanel([this] { return model_; });
@@ -216,6 +218,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             }
           });
 
+  build_practice();
   build_menus();
   build_shortcuts();
   statusBar()->showMessage(
@@ -287,6 +290,11 @@ void MainWindow::build_menus() {
   follow->setChecked(true);
   connect(follow, &QAction::toggled, plots_, &PlotStack::set_following);
   connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
+  QMenu* practice = menuBar()->addMenu(tr("&Practice"));
+  QAction* mode = practice_dock_->toggleViewAction();
+  mode->setText(tr("&Practice mode (find a hidden deregulation)"));
+  mode->setShortcut(QKeySequence(tr("Ctrl+P")));
+  practice->addAction(mode);
   view->addAction(tr("&Fit the action"), this, [this] {
     view_->reset_view();
     if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
@@ -315,6 +323,64 @@ void MainWindow::build_shortcuts() {
   shortcut(QKeySequence(Qt::Key_Right), [this] { controller_->step_forward(); });
   shortcut(QKeySequence(Qt::Key_Left), [this] { controller_->step_back(); });
   shortcut(QKeySequence(Qt::Key_Home), [this] { controller_->rewind(); });
+}
+
+void MainWindow::build_practice() {
+  practice_ = new PracticePanel;
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(practice_);
+  scroll->setWidgetResizable(true);
+  practice_dock_ = new QDockWidget(tr("Practice"), this);
+  practice_dock_->setObjectName("practice_dock");
+  practice_dock_->setWidget(scroll);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(practice_->sizeHint().width() + 24);
+  addDockWidget(Qt::RightDockWidgetArea, practice_dock_);
+  practice_dock_->hide();
+  connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
+  // the regulation panel shows true adjuster positions and measured values, the analyses
+  // measure every setting against its target: both hidden while an exercise runs; closing the
+  // practice dock returns to the regulated action
+  connect(practice_, &PracticePanel::practiceActive, this, [this](bool active) {
+    practising_ = active;
+    regulation_dock_->setVisible(!active);
+    analyses_dock_->setVisible(!active);
+  });
+  // the dock is opened and closed from the Practice menu only (no close button): hiding it
+  // behind a tab or closing the window must not end an exercise
+  practice_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  connect(practice_dock_->toggleViewAction(), &QAction::triggered, this, [this](bool shown) {
+    if (!shown) end_practice();
+  });
+}
+
+void MainWindow::end_practice() {
+  if (!practising_) return;
+  practising_ = false;
+  regulation_dock_->show();
+  analyses_dock_->show();
+  if (!action_name_.empty()) open_action(action_name_);
+}
+
+void MainWindow::show_practice(bool on) {
+  practice_dock_->setVisible(on);
+  if (on)
+    practice_dock_->raise();
+  else
+    end_practice();
+}
+
+void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {
+  if (model_ && model_->kind == model->kind && model_->source_file == model->source_file) {
+    change_model(std::move(model));
+    return;
+  }
+  // another action: set the view and plots up for it (the regulation panel stays hidden)
+  model_ = model;
+  regulation_->set_model(*model);
+  plots_->set_model(*model);
+  view_->reset_view();
+  start(run_controls_->input_form()->spec());
 }
 
 void MainWindow::open_action(const std::string& name_or_path) {

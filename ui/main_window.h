@@ -29,6 +29,7 @@ namespace pat::ui {
 class ActionView;
 class AnalysesPanel;
 class MeasurementService;
+class PracticePanel;
 class PlaybackController;
 class DeregulationRunner;
 class RegulationRunner;
@@ -72,6 +73,11 @@ class MainWindow : public QMainWindow {
   /// Chooses the demo's setting and rate (mm/s), as the controls next to its button do.
   void set_deregulation_demo(const std::string& setting, double rate_mm_per_s);
   DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
+  /// The practice mode (issue 7): its dock, shown from the Practice menu.
+  PracticePanel* practice() const { return practice_; }
+  /// Shows the practice dock; hiding it ends a running exercise (back to the regulated action
+  /// and the regulation panel).
+  void show_practice(bool on);
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
   /// The message shown over the action (empty when hidden).
@@ -92,6 +98,9 @@ class MainWindow : public QMainWindow {
   void measure_current_model();
   void save_preset_from_menu();
   void show_deregulation_result(const DeregulationResult& result);
+  void build_practice();
+  void practise_on(std::shared_ptr<const ActionModel> model);
+  void end_practice();
 
   PlaybackController* controller_;
   ActionView* view_;
@@ -110,6 +119,10 @@ class MainWindow : public QMainWindow {
   QPushButton* regulate_button_;
   QLabel* banner_;
   QScrollArea* regulation_scroll_;
+  class QDockWidget* regulation_dock_ = nullptr;
+  class QDockWidget* practice_dock_ = nullptr;
+  PracticePanel* practice_ = nullptr;
+  bool practising_ = false;
   QAction* grand_action_;
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;

@@ -1,0 +1,87 @@
+#include "practice/neglect_ranges.h"
+
+#include "core/error.h"
+
+namespace pat {
+namespace {
+
+// Sources are the domain notes (shared/reference/domain.md, sections 1–3) and their references;
+// they give the drift as a change of the measured value. The adjuster ranges are those that give
+// that change on the shipped presets, whose sensitivities (measured / adjuster, from
+// measure_setting at ±0.1, ±0.3, ±1 mm) are quoted; PracticeSymptoms checks every sense by
+// simulation. Where the present model cannot show one direction (regulation geometry still
+// being fixed on branch `geometry`), the range is one-sided and model_limit says why.
+
+const std::vector<NeglectRange> kGrand = {
+    {"key_dip", 0.5, 1.5, -1,
+     "front-rail punchings compress and keys bed in: the spec band is .390–.420 in (0.76 mm, "
+     "[SK]); a neglected keyboard reads 1 mm or more off it [AZ][GW]. Model: 1.0 mm/mm"},
+    {"jack_position", 0.1, 0.2, +1,
+     "the jack regulating button felt packs and the screw turns with use; the target is an "
+     "alignment [SW], a neglected action is visibly off by 0.5–1 mm. Model: ≈5 mm/mm"},
+    {"lever_height", 0.1, 0.25, +1,
+     "target a paper's thickness (≈0.2 mm) [LPT]; the lever felt and spring settle by a few "
+     "tenths of a millimetre. Model: ≈3 mm/mm upward; downward the gap closes at −0.07 mm"},
+    {"hammer_blow", 0.1, 0.3, -1,
+     "hammer felt wear and capstan felt compression: specs differ by 3 mm (44.5 vs 47.6 mm "
+     "[SW]), an uneven hammer line by a few mm, never >5/16 in above the rail [EF10]. Model: "
+     "≈12 mm of blow per mm of capstan"},
+    {"let_off", 0.15, 0.3, +1,
+     "let-off drifts by about 1 mm (1/16–1/8 in band [QRS], 1.5–2.5 mm [PTG-L]) as the button "
+     "felt compresses, closer to the string. Model: from −0.25 mm the jack never escapes",
+     -1,
+     "screwing the button down by more than 0.03 mm makes the slow press read 'the jack never "
+     "lifts the hammer' instead of a far let-off (capstan geometry)"},
+    {"drop", 0.1, 0.3, +1,
+     "drop ≤1/16 in (1.6 mm) below let-off [SW][QRS]: a drift of 0.5–1.5 mm. Model: ≈5 mm/mm", +1,
+     "raising the drop screw by more than 0.03 mm lets the repetition lever carry the hammer so "
+     "that the jack never lifts it, instead of a hammer held close to the string"},
+    {"checking", 0.5, 1.0, -1,
+     "checking 14–16 mm [ANT], ≈5/8 in [PP]: backcheck wires bend with use by a few mm. Model: "
+     "≈−2 mm/mm (the preset's + bends toward the hammer yet the catch comes nearer the string); "
+     "beyond +1.2 mm the forte blow jams the capstan into the whippen"},
+};
+
+const std::vector<NeglectRange> kUpright = {
+    {"hammer_blow", 1.0, 2.0, -1,
+     "46 mm [LEE] vs 1 3/4 in [JPU] vs ≈47 mm old uprights [RW]: hammer rail felt compresses by "
+     "a few mm [PTG-B]. Model: ≈2 mm/mm"},
+    {"key_dip", 0.5, 1.5, -1,
+     "front-rail punchings compress (spinets just under 3/8 in [AZ]; 1 mm is a neglected key). "
+     "Model: 1.0 mm/mm"},
+    {"lost_motion", 0.1, 0.3, -1,
+     "key and capstan felts compress: lost motion grows from minimal toward 1/16 in (1.6 mm) and "
+     "beyond [JPU][RW]. Model: the rest gap stays ≈ −0.007 mm (the jack touches the butt at "
+     "rest) for any capstan position, and from −0.5 mm the key never reaches its punching, so "
+     "the range stays within ±0.3 mm"},
+    {"let_off", 0.2, 0.6, +1,
+     "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈3 mm/mm upward",
+     +1,
+     "the regulated button sits at the minimum of the let-off distance: moving it either way "
+     "gives a larger let-off, so a closer let-off cannot be made"},
+    {"checking", 1.0, 3.0, -1,
+     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−0.8 mm/mm, and the "
+     "regulated action checks at ≈5 mm"},
+    {"bridle", 1.0, 2.5, +1,
+     "bridle tapes stretch or are mis-hooked: slack is not specified numerically [JG], a few mm "
+     "is visible. Model: 1.0 mm/mm"},
+    {"damper_lift", 0.1, 0.25, -1,
+     "lift at 1/3–1/2 of the hammer travel [PROPTN][BS]: a spoon drifts by a fraction of that "
+     "band. Model: ≈1 travel fraction per mm"},
+};
+
+}  // namespace
+
+const std::vector<NeglectRange>& neglect_ranges(const std::string& kind) {
+  if (kind == "grand") return kGrand;
+  if (kind == "upright") return kUpright;
+  throw InputError("no neglect ranges for a '" + kind + "' action (grand or upright)");
+}
+
+const NeglectRange& neglect_range(const std::string& kind, const std::string& setting) {
+  for (const NeglectRange& r : neglect_ranges(kind))
+    if (r.setting == setting) return r;
+  throw InputError("no neglect range for setting '" + setting + "' of the " + kind + " action");
+}
+
+}  // namespace pat

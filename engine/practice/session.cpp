@@ -1,0 +1,258 @@
+#include "practice/session.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/format.h"
+#include "model/model_edits.h"
+#include "regulation/measurements.h"
+
+namespace pat {
+namespace {
+
+/// The technician's test that measures a setting (measurements.h).
+std::string measuring_test(const std::string& setting) {
+  if (setting == "let_off" || setting == "drop" || setting == "damper_lift")
+    return "the slow key press";
+  if (setting == "checking") return "the forte blow";
+  return "the rest geometry";
+}
+
+std::string answers_text(const std::vector<FaultAnswer>& answers) {
+  std::string text;
+  for (const FaultAnswer& a : answers)
+    text += (text.empty() ? "" : ", ") + a.setting + ":" + a.direction;
+  return text;
+}
+
+std::optional<double> try_measure(const ActionModel& model, const std::string& setting) {
+  try {
+    return measure_setting(model, setting);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;  // not measurable (no escapement, no check): scored as not corrected
+  }
+}
+
+std::string csv_field(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string quoted = "\"";
+  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+PracticeSession::PracticeSession(Exercise exercise, ActionModel regulated)
+    : exercise_(std::move(exercise)), regulated_(std::move(regulated)) {
+  history_.push_back({0.0, "start", exercise_.title});
+}
+
+ActionModel PracticeSession::current_model() const {
+  ActionModel model = hidden_model(regulated_, exercise_);
+  for (const auto& [setting, mm] : moves_mm_) {
+    const Adjuster& a = model.adjusters[model.adjuster_index(setting)];
+    model = with_adjuster(model, setting, a.value + mm * 1e-3);
+  }
+  return model;
+}
+
+std::vector<Symptom> PracticeSession::record_test(
+    PracticeTest test, const std::vector<Observation>& seen,
+    const std::vector<Observation>& regulated_observations, double t_s) {
+  ++tests_used_;
+  tests_run_.push_back(test);
+  std::vector<Symptom> symptoms = describe_symptoms(seen, regulated_observations);
+  std::string detail = test_name(test) + ": ";
+  if (symptoms.empty()) detail += "no symptom";
+  for (std::size_t i = 0; i < symptoms.size(); ++i) detail += (i ? "; " : "") + symptoms[i].id;
+  history_.push_back({t_s, "test", detail});
+  symptoms_seen_.insert(symptoms_seen_.end(), symptoms.begin(), symptoms.end());
+  return symptoms;
+}
+
+AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, double t_s) {
+  AnswerJudgement judgement = judge_answers(exercise_, given);
+  if (!first_answer_)
+    first_answer_ = judgement;
+  else if (!judgement.correct && !diagnosed_)
+    ++wrong_answers_after_first_;
+  diagnosed_ = diagnosed_ || judgement.correct;
+  std::ostringstream detail;
+  detail << answers_text(given) << " → " << (judgement.correct ? "correct" : "not correct") << " ("
+         << format_number(judgement.score) << ")";
+  history_.push_back({t_s, "answer", detail.str()});
+  return judgement;
+}
+
+std::string PracticeSession::hint(double t_s) {
+  const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
+  const FaultAnswer& first = answers.front();
+  std::string text;
+  switch (hints_used_) {
+    case 0:
+      text = symptoms_seen_.empty()
+                 ? "Run the four tests first: the rest geometry, a slow key press, a forte blow "
+                   "and repeated notes; compare each number with the regulated action."
+                 : "Start from this symptom and ask which setting makes it: " +
+                       symptoms_seen_.front().text;
+      break;
+    case 1:
+      text = "The hidden setting is measured in " + measuring_test(first.setting) + ".";
+      break;
+    case 2:
+      text = "Its measured value is " +
+             std::string(first.direction == "more" ? "larger" : "smaller") + " than its target.";
+      break;
+    default:
+      text = "The hidden setting is " + first.setting + " (" + first.direction + ")" +
+             (answers.size() > 1 ? ", and there is a second one." : ".");
+  }
+  ++hints_used_;
+  history_.push_back({t_s, "hint", text});
+  return text;
+}
+
+void PracticeSession::move_adjuster(const std::string& setting, double delta_mm, double t_s) {
+  if (regulated_.setting_index(setting) < 0)
+    throw InputError("unknown setting '" + setting + "' for the " + regulated_.kind + " action");
+  const double total = moved_mm(setting) + delta_mm;
+  std::map<std::string, double> moves = moves_mm_;
+  moves[setting] = total;
+  // checks the physical range on the hidden action (throws InputError beyond it)
+  ActionModel model = hidden_model(regulated_, exercise_);
+  const Adjuster& a = model.adjusters[model.adjuster_index(setting)];
+  with_adjuster(model, setting, a.value + total * 1e-3);
+  moves_mm_ = std::move(moves);
+  history_.push_back({t_s, "move",
+                      setting + " " + (delta_mm >= 0 ? "+" : "") + format_number(delta_mm) +
+                          " mm (moved " + format_number(total) + " mm in all)"});
+}
+
+double PracticeSession::moved_mm(const std::string& setting) const {
+  const auto it = moves_mm_.find(setting);
+  return it == moves_mm_.end() ? 0.0 : it->second;
+}
+
+std::vector<std::string> PracticeSession::scored_settings() const {
+  std::vector<std::string> names;
+  for (const HiddenFault& f : exercise_.faults) names.push_back(f.setting);
+  for (const auto& [setting, mm] : moves_mm_)
+    if (std::find(names.begin(), names.end(), setting) == names.end()) names.push_back(setting);
+  return names;
+}
+
+SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readings, double t_s) {
+  SessionScore s;
+  s.readings = readings;
+  s.tests_used = tests_used_;
+  s.hints_used = hints_used_;
+  s.time_s = t_s;
+  s.diagnosed = diagnosed_;
+  const double first = first_answer_ ? first_answer_->score : 0.0;
+  s.diagnosis = std::max(0.0, 0.5 * first - 5.0 * wrong_answers_after_first_);
+  s.notes.push_back("diagnosis " + format_number(s.diagnosis) + "/50: first answer " +
+                    format_number(first) + "/100, " + std::to_string(wrong_answers_after_first_) +
+                    " wrong answers after it");
+
+  double removed_sum = 0.0;
+  for (const HiddenFault& f : exercise_.faults) {
+    const auto r = std::find_if(readings.begin(), readings.end(),
+                                [&](const CorrectionReading& c) { return c.setting == f.setting; });
+    double removed = 0.0;
+    std::string how = "not measurable after the correction";
+    if (r != readings.end() && r->regulated && r->corrected) {
+      const double residual = std::abs(*r->corrected - *r->regulated);
+      const double initial = r->hidden ? std::abs(*r->hidden - *r->regulated) : NAN;
+      // the hidden deviation is the scale; when the hidden action could not be measured (no
+      // escapement, no check), the setting's tolerance ×10 stands for it
+      const double tolerance = regulated_.regulation[regulated_.setting_index(f.setting)].tolerance;
+      const double scale = std::isfinite(initial) && initial > tolerance ? initial : 10 * tolerance;
+      removed = std::clamp(1.0 - std::max(0.0, residual - tolerance) / scale, 0.0, 1.0);
+      how = "off by " + format_number(residual) + " after, " +
+            (std::isfinite(initial) ? format_number(initial) : std::string("unmeasurable")) +
+            " before";
+    }
+    removed_sum += removed;
+    s.notes.push_back(f.setting + ": " + format_number(100 * removed) + " % corrected (" + how +
+                      ")");
+  }
+  s.regulation = 40.0 * removed_sum / static_cast<double>(exercise_.faults.size());
+  for (const auto& [setting, mm] : moves_mm_) {
+    const bool faulty = std::any_of(exercise_.faults.begin(), exercise_.faults.end(),
+                                    [&](const HiddenFault& f) { return f.setting == setting; });
+    if (!faulty && std::abs(mm) > 0.05) {
+      s.regulation -= 5.0;
+      s.notes.push_back(setting + " was not deregulated but was left moved " + format_number(mm) +
+                        " mm (−5)");
+    }
+  }
+  s.regulation = std::max(0.0, s.regulation);
+
+  const std::set<PracticeTest> distinct(tests_run_.begin(), tests_run_.end());
+  const int extra_tests = std::max(0, tests_used_ - static_cast<int>(all_tests().size()));
+  const int slow_periods = std::max(0, static_cast<int>((t_s - 600.0) / 120.0));
+  s.economy = std::max(0.0, 10.0 - extra_tests - slow_periods);
+  s.notes.push_back("economy " + format_number(s.economy) + "/10: " + std::to_string(tests_used_) +
+                    " tests (" + std::to_string(distinct.size()) + " different), " +
+                    format_number(std::round(t_s)) + " s");
+  s.hint_penalty = 5.0 * hints_used_;
+  if (hints_used_ > 0)
+    s.notes.push_back(std::to_string(hints_used_) + " hints (−" + format_number(s.hint_penalty) +
+                      ")");
+  s.total = std::clamp(s.diagnosis + s.regulation + s.economy - s.hint_penalty, 0.0, 100.0);
+  history_.push_back({t_s, "score", format_number(s.total) + "/100"});
+  final_score_ = s;
+  return s;
+}
+
+std::vector<CorrectionReading> measure_corrections(const PracticeSession& session) {
+  const ActionModel hidden = hidden_model(session.regulated(), session.exercise());
+  const ActionModel corrected = session.current_model();
+  std::vector<CorrectionReading> readings;
+  for (const std::string& setting : session.scored_settings())
+    readings.push_back({setting, try_measure(session.regulated(), setting),
+                        try_measure(hidden, setting), try_measure(corrected, setting)});
+  return readings;
+}
+
+void write_session_csv(const std::string& path, const PracticeSession& session) {
+  std::ostringstream out;
+  const Exercise& e = session.exercise();
+  out << "# exercise: " << e.title << "\n# action: " << e.kind << "\n";
+  if (e.seed) out << "# seed: " << *e.seed << "\n";
+  if (!e.source_file.empty()) out << "# file: " << e.source_file << "\n";
+  out << "t_s,kind,detail\n";
+  for (const SessionEvent& ev : session.history())
+    out << format_number(ev.t_s) << "," << ev.kind << "," << csv_field(ev.detail) << "\n";
+  if (const auto& s = session.final_score()) {
+    for (const std::string& note : s->notes)
+      out << format_number(s->time_s) << ",score_note," << csv_field(note) << "\n";
+    for (const CorrectionReading& r : s->readings) {
+      auto value = [](const std::optional<double>& v) {
+        return v ? format_number(*v) : std::string("not measurable");
+      };
+      out << format_number(s->time_s) << ",reading,"
+          << csv_field(r.setting + ": regulated " + value(r.regulated) + ", hidden " +
+                       value(r.hidden) + ", corrected " + value(r.corrected))
+          << "\n";
+    }
+  }
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (!file) throw InputError(path + ": cannot write the session report");
+    file << out.str();
+    if (!file.flush()) throw InputError(path + ": cannot write the session report");
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    throw InputError(path + ": cannot write the session report (rename failed)");
+  }
+}
+
+}  // namespace pat

@@ -1,0 +1,113 @@
+// A practice session (issue 7): one exercise worked through by a trainee — tests run on the
+// hidden action, diagnoses given, hints asked for, adjusters moved (relative moves only: the
+// trainee never sees where an adjuster truly is), and the final score. Times are given by the
+// caller (seconds since the session started), so a session replays the same in a test.
+//
+// Score (0–100):
+//   diagnosis   50 × the first answer's judgement (judge_answers), − 5 per later wrong answer;
+//   regulation  40 × the mean, over the hidden faults, of the fraction of the measured
+//               deviation removed (1 − |corrected − regulated| / |hidden − regulated|, in [0, 1]),
+//               − 5 per setting that was not faulty but was left moved by more than 0.05 mm;
+//   economy     10 − 1 per test run beyond the four different tests − 1 per full two minutes
+//               beyond the first ten (never below 0);
+//   hints       − 5 each.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/action_model.h"
+#include "practice/exercise.h"
+#include "practice/observations.h"
+#include "practice/symptoms.h"
+
+namespace pat {
+
+struct SessionEvent {
+  double t_s = 0.0;
+  std::string kind;    ///< "start", "test", "answer", "hint", "move", "score"
+  std::string detail;  ///< in words
+};
+
+/// The measured value of a setting on three actions (its unit); empty when not measurable.
+struct CorrectionReading {
+  std::string setting;
+  std::optional<double> regulated, hidden, corrected;
+};
+
+struct SessionScore {
+  double diagnosis = 0.0;   ///< 0–50
+  double regulation = 0.0;  ///< 0–40
+  double economy = 0.0;     ///< 0–10
+  double hint_penalty = 0.0;
+  double total = 0.0;  ///< 0–100
+  bool diagnosed = false;
+  int tests_used = 0;
+  int hints_used = 0;
+  double time_s = 0.0;
+  std::vector<CorrectionReading> readings;
+  std::vector<std::string> notes;  ///< one line per component, for the report
+};
+
+class PracticeSession {
+ public:
+  /// `regulated` is the action the exercise was made for (adjusters at their regulated place).
+  PracticeSession(Exercise exercise, ActionModel regulated);
+
+  const Exercise& exercise() const { return exercise_; }
+  const ActionModel& regulated() const { return regulated_; }
+  /// The hidden action with the trainee's moves applied (what the sliders act on).
+  ActionModel current_model() const;
+
+  /// Records a test's observations on the current model; returns its symptoms compared with
+  /// the regulated action's observations `regulated_observations` of the same test.
+  std::vector<Symptom> record_test(PracticeTest test, const std::vector<Observation>& seen,
+                                   const std::vector<Observation>& regulated_observations,
+                                   double t_s);
+  /// Gives a diagnosis; the first one counts for the score.
+  AnswerJudgement answer(const std::vector<FaultAnswer>& given, double t_s);
+  /// The next hint (each more telling than the last, the last names the setting).
+  std::string hint(double t_s);
+  /// Moves an adjuster by `delta_mm` relative to where it is (the trainee's slider). Throws
+  /// InputError for an unknown setting or a move beyond the adjuster's physical range.
+  void move_adjuster(const std::string& setting, double delta_mm, double t_s);
+  /// The trainee's total move of a setting's adjuster (mm).
+  double moved_mm(const std::string& setting) const;
+
+  /// The settings whose measurements the score needs: the faults and every setting moved.
+  std::vector<std::string> scored_settings() const;
+  /// Scores the session from the readings of scored_settings() (see measure_corrections).
+  SessionScore score(const std::vector<CorrectionReading>& readings, double t_s);
+
+  const std::vector<SessionEvent>& history() const { return history_; }
+  int tests_used() const { return tests_used_; }
+  int hints_used() const { return hints_used_; }
+  const std::optional<AnswerJudgement>& first_answer() const { return first_answer_; }
+  const std::optional<SessionScore>& final_score() const { return final_score_; }
+
+ private:
+  Exercise exercise_;
+  ActionModel regulated_;
+  std::map<std::string, double> moves_mm_;
+  std::vector<SessionEvent> history_;
+  std::vector<PracticeTest> tests_run_;
+  int tests_used_ = 0;
+  int hints_used_ = 0;
+  int wrong_answers_after_first_ = 0;
+  bool diagnosed_ = false;
+  std::optional<AnswerJudgement> first_answer_;
+  std::vector<Symptom> symptoms_seen_;
+  std::optional<SessionScore> final_score_;
+};
+
+/// Measures the scored settings on the regulated, hidden and corrected actions (simulation:
+/// slow presses and forte blows; tens of milliseconds to a second each).
+std::vector<CorrectionReading> measure_corrections(const PracticeSession& session);
+
+/// Writes the session as CSV (history, then the score): columns t_s,kind,detail. Written to a
+/// temporary file and renamed. Throws InputError when the file cannot be written.
+void write_session_csv(const std::string& path, const PracticeSession& session);
+
+}  // namespace pat

@@ -1,0 +1,238 @@
+// Practice exercises without simulation: seeds, the answer check, teacher files and their
+// errors, the session's bookkeeping and score.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "core/error.h"
+#include "practice/exercise.h"
+#include "practice/neglect_ranges.h"
+#include "practice/session.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+const ActionModel& shipped_model(const std::string& kind) {
+  static const ActionModel grand = test::shipped("grand");
+  static const ActionModel upright = test::shipped("upright");
+  return kind == "grand" ? grand : upright;
+}
+
+TEST(PracticeExercise, SeedGivesTheSameExerciseWithinTheNeglectRanges) {
+  for (const std::string kind : {"grand", "upright"}) {
+    const ActionModel& model = shipped_model(kind);
+    for (std::uint64_t seed = 0; seed < 200; ++seed) {
+      for (int level : {1, 2}) {
+        const Exercise a = generate_exercise(model, kind, seed, level);
+        const Exercise b = generate_exercise(model, kind, seed, level);
+        ASSERT_EQ(a.faults.size(), static_cast<std::size_t>(level));
+        std::set<std::string> settings;
+        for (std::size_t i = 0; i < a.faults.size(); ++i) {
+          EXPECT_EQ(a.faults[i].setting, b.faults[i].setting);
+          EXPECT_EQ(a.faults[i].adjuster_mm, b.faults[i].adjuster_mm);
+          const NeglectRange& r = neglect_range(kind, a.faults[i].setting);
+          // offsets are rounded to 0.01 mm: the range holds to half of that
+          EXPECT_GE(std::abs(a.faults[i].adjuster_mm), r.min_mm - 0.005) << seed;
+          EXPECT_LE(std::abs(a.faults[i].adjuster_mm), r.max_mm + 0.005) << seed;
+          settings.insert(a.faults[i].setting);
+        }
+        EXPECT_EQ(settings.size(), a.faults.size()) << "level 2 hides two different settings";
+      }
+    }
+  }
+}
+
+TEST(PracticeExercise, EverySettingOfBothActionsCanBeHiddenInBothDirections) {
+  for (const std::string kind : {"grand", "upright"}) {
+    const ActionModel& model = shipped_model(kind);
+    std::set<std::string> drawn;
+    for (std::uint64_t seed = 0; seed < 200; ++seed)
+      for (const FaultAnswer& a : exercise_answers(generate_exercise(model, kind, seed, 1)))
+        drawn.insert(a.setting + ":" + a.direction);
+    for (const RegulationSetting& s : model.regulation) {
+      // a one-sided range (a model limit) gives the one direction its sign makes
+      const NeglectRange& r = neglect_range(kind, s.name);
+      const int way = r.sense * (r.only_sign == 0 ? 1 : r.only_sign);
+      EXPECT_TRUE(drawn.count(s.name + ":more") || (r.only_sign != 0 && way < 0))
+          << kind << " " << s.name;
+      EXPECT_TRUE(drawn.count(s.name + ":less") || (r.only_sign != 0 && way > 0))
+          << kind << " " << s.name;
+      EXPECT_EQ(r.only_sign == 0, r.model_limit.empty()) << "a one-sided range says why";
+    }
+    // every setting has a neglect range whose adjuster offsets fit the adjuster's range
+    for (const RegulationSetting& s : model.regulation) {
+      const NeglectRange& r = neglect_range(kind, s.name);
+      const Adjuster& a = model.adjusters[model.adjuster_index(s.name)];
+      EXPECT_LT(0.0, r.min_mm);
+      EXPECT_LE(r.min_mm, r.max_mm);
+      EXPECT_LE(r.max_mm * 1e-3, std::min(-a.min, a.max) + 1e-12) << s.name;
+      EXPECT_FALSE(r.source.empty());
+    }
+  }
+}
+
+TEST(PracticeCheck, JudgesRightAndWrongAnswersForFiftySeeds) {
+  for (const std::string kind : {"grand", "upright"}) {
+    const ActionModel& model = shipped_model(kind);
+    for (std::uint64_t seed = 1000; seed < 1050; ++seed) {
+      const Exercise e = generate_exercise(model, kind, seed, 1);
+      const FaultAnswer right = exercise_answers(e).front();
+      // the direction follows from the adjuster's sense and the sign of its offset
+      const int sense = neglect_range(kind, right.setting).sense;
+      EXPECT_EQ(right.direction, sense * e.faults[0].adjuster_mm > 0 ? "more" : "less");
+
+      const AnswerJudgement good = judge_answers(e, {right});
+      EXPECT_TRUE(good.correct);
+      EXPECT_DOUBLE_EQ(good.score, 100.0);
+
+      const FaultAnswer flipped{right.setting, right.direction == "more" ? "less" : "more"};
+      const AnswerJudgement half = judge_answers(e, {flipped});
+      EXPECT_FALSE(half.correct);
+      EXPECT_DOUBLE_EQ(half.score, 40.0);
+
+      for (const RegulationSetting& s : model.regulation) {
+        if (s.name == right.setting) continue;
+        const AnswerJudgement wrong = judge_answers(e, {{s.name, right.direction}});
+        EXPECT_FALSE(wrong.correct);
+        EXPECT_DOUBLE_EQ(wrong.score, 0.0);
+      }
+      // a right answer with an extra wrong name is not correct
+      const std::string other = model.regulation[0].name == right.setting
+                                    ? model.regulation[1].name
+                                    : model.regulation[0].name;
+      EXPECT_FALSE(judge_answers(e, {right, {other, "more"}}).correct);
+    }
+    const Exercise two = generate_exercise(model, kind, 7, 2);
+    const std::vector<FaultAnswer> both = exercise_answers(two);
+    EXPECT_TRUE(judge_answers(two, both).correct);
+    EXPECT_DOUBLE_EQ(judge_answers(two, {both[0]}).score, 50.0);
+    EXPECT_FALSE(judge_answers(two, {both[0]}).correct);
+  }
+}
+
+TEST(PracticeCheck, ParsesAnswersAndRejectsBadOnes) {
+  const ActionModel& model = shipped_model("grand");
+  const auto parsed = parse_answers(model, "let_off:less,checking:more");
+  ASSERT_EQ(parsed.size(), 2u);
+  EXPECT_EQ(parsed[1], (FaultAnswer{"checking", "more"}));
+  EXPECT_THROW(parse_answers(model, "let_off"), InputError);
+  EXPECT_THROW(parse_answers(model, "lost_motion:more"), InputError);  // upright only
+  EXPECT_THROW(parse_answers(model, "let_off:closer"), InputError);
+}
+
+/// Writes `text` to a temporary exercise file and returns the InputError's message.
+std::string load_error(const std::string& name, const std::string& text) {
+  const std::string path =
+      (std::filesystem::temp_directory_path() / ("pat_exercise_" + name + ".json")).string();
+  std::ofstream(path) << text;
+  try {
+    load_exercise(path);
+  } catch (const InputError& e) {
+    std::filesystem::remove(path);
+    return e.what();
+  }
+  std::filesystem::remove(path);
+  ADD_FAILURE() << name << ": no InputError";
+  return {};
+}
+
+TEST(PracticeExerciseFile, ShippedExercisesLoad) {
+  int count = 0;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(std::string(PAT_PRESET_DIR) + "/exercises")) {
+    const Exercise e = load_exercise(entry.path().string());
+    EXPECT_FALSE(e.faults.empty());
+    EXPECT_EQ(e.level, static_cast<int>(e.faults.size()));
+    EXPECT_EQ(exercise_answers(e).size(), e.faults.size());
+    ++count;
+  }
+  EXPECT_GE(count, 3);
+}
+
+TEST(PracticeExerciseFile, BrokenOrImpossibleFilesNameTheFileAndTheField) {
+  const std::string head = R"({"schema": "pat-exercise/1", "action": "grand", )";
+  struct Case {
+    std::string name, text, must_contain;
+  };
+  const std::vector<Case> cases = {
+      {"not_json", "{ \"schema\": ", "not valid JSON"},
+      {"no_schema", R"({"action": "grand", "faults": []})", "schema"},
+      {"old_schema", R"({"schema": "pat-exercise/0", "action": "grand", "faults": []})",
+       "unsupported version"},
+      {"no_faults", head + R"("title": "x"})", "faults"},
+      {"empty_faults", head + R"("faults": []})", "one or two faults"},
+      {"three_faults",
+       head + R"("faults": [{"setting": "drop", "adjuster_mm": 1}, {"setting": "let_off",
+                  "adjuster_mm": 0.1}, {"setting": "checking", "adjuster_mm": 1}]})",
+       "one or two faults"},
+      {"unknown_setting", head + R"("faults": [{"setting": "lost_motion", "adjuster_mm": 1}]})",
+       "faults[0].setting: unknown setting 'lost_motion'"},
+      {"twice", head + R"("faults": [{"setting": "drop", "adjuster_mm": 1}, {"setting": "drop",
+                  "adjuster_mm": -1}]})",
+       "faults[1].setting"},
+      {"beyond_range", head + R"("faults": [{"setting": "drop", "adjuster_mm": 12}]})",
+       "faults[0].adjuster_mm: impossible"},
+      {"zero_offset", head + R"("faults": [{"setting": "drop", "adjuster_mm": 0}]})",
+       "faults[0].adjuster_mm: must be a non-zero offset"},
+      {"text_offset", head + R"("faults": [{"setting": "drop", "adjuster_mm": "1"}]})",
+       "faults[0].adjuster_mm"},
+      {"unknown_action", R"({"schema": "pat-exercise/1", "action": "harpsichord", "faults": []})",
+       "action"},
+      {"unknown_field", head + R"("fault": []})", "fault: unknown field"},
+  };
+  for (const Case& c : cases) {
+    const std::string message = load_error(c.name, c.text);
+    EXPECT_NE(message.find("pat_exercise_" + c.name + ".json"), std::string::npos)
+        << c.name << ": " << message;
+    EXPECT_NE(message.find(c.must_contain), std::string::npos) << c.name << ": " << message;
+  }
+  EXPECT_THROW(load_exercise("/nonexistent/exercise.json"), InputError);
+}
+
+TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 3, 1);
+  e.faults = {{"checking", 2.0}};
+  PracticeSession session(e, model);
+  const FaultAnswer right = exercise_answers(e).front();
+  EXPECT_FALSE(session.answer({{"drop", "more"}}, 30.0).correct);
+  EXPECT_TRUE(session.answer({right}, 60.0).correct);
+  EXPECT_FALSE(session.hint(70.0).empty());
+  session.move_adjuster("checking", -1.5, 80.0);
+  session.move_adjuster("checking", -0.5, 90.0);
+  EXPECT_DOUBLE_EQ(session.moved_mm("checking"), -2.0);
+  EXPECT_THROW(session.move_adjuster("checking", -50.0, 95.0), InputError);
+  EXPECT_DOUBLE_EQ(session.moved_mm("checking"), -2.0) << "a refused move changes nothing";
+  // the trainee's moves undo the fault exactly: the current model is the regulated one
+  EXPECT_NEAR(session.current_model().adjusters[model.adjuster_index("checking")].value, 0.0,
+              1e-15);
+  EXPECT_EQ(session.scored_settings(), std::vector<std::string>{"checking"});
+
+  // readings as measure_corrections gives them: fully corrected
+  const SessionScore s = session.score({{"checking", 16.0, 19.0, 16.0}}, 120.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis, 0.0) << "the first answer named a wrong setting";
+  EXPECT_DOUBLE_EQ(s.regulation, 40.0);
+  EXPECT_DOUBLE_EQ(s.economy, 10.0);
+  EXPECT_DOUBLE_EQ(s.hint_penalty, 5.0);
+  EXPECT_DOUBLE_EQ(s.total, 45.0);
+  // half the deviation left (1.5 of 3 mm, minus the 0.05 mm tolerance): about half the marks
+  const SessionScore half = session.score({{"checking", 16.0, 19.0, 17.5}}, 120.0);
+  EXPECT_NEAR(half.regulation, 40.0 * (1.0 - 1.45 / 3.0), 1e-9);
+
+  const std::string csv =
+      (std::filesystem::temp_directory_path() / "pat_practice_session.csv").string();
+  write_session_csv(csv, session);
+  std::ifstream in(csv);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text.find("t_s,kind,detail"), std::string::npos);
+  EXPECT_NE(text.find("answer"), std::string::npos);
+  EXPECT_NE(text.find("score"), std::string::npos);
+  std::filesystem::remove(csv);
+  EXPECT_THROW(write_session_csv("/nonexistent/dir/session.csv", session), InputError);
+}
+
+}  // namespace
+}  // namespace pat

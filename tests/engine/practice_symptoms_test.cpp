@@ -1,0 +1,238 @@
+// Practice symptoms by simulation (issue 7, must-show 1): every setting of both actions hidden
+// in both directions (at the middle of its neglect range) gives observations that differ
+// measurably from the regulated action's; the measured value moves the way the answer says
+// (the neglect range's sense); and the symptom list carries the domain table's description
+// (domain.md section 3) where the table gives one.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "analysis/parallel_runs.h"
+#include "practice/exercise.h"
+#include "practice/neglect_ranges.h"
+#include "practice/observations.h"
+#include "practice/symptoms.h"
+#include "regulation/measurements.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+/// Symptom ids that carry the domain table's description of a (setting, direction), any one of
+/// which must appear. Directions are of the measured value relative to its target.
+const std::map<std::string, std::set<std::string>>& domain_table() {
+  static const std::map<std::string, std::set<std::string>> table = {
+      // "Let-off too close / none: blocking; blubber or double strike on fast ff"
+      {"let_off:less", {"blocking", "escapes_close", "double_strike"}},
+      // "Let-off too far: misses at ppp, weak dynamic control, lost power"
+      {"let_off:more", {"escapes_far", "lost_power"}},
+      // "Drop too little (too high): double striking / bobble; hammer re-touches the string"
+      {"drop:less", {"held_close", "double_strike"}},
+      // "Drop screw too low: no hammer rise when testing the rep spring; spongy feel"
+      {"drop:more", {"falls_far"}},
+      // "Jack too far forward: early escape, weak power, misfire"; "too deep: friction, poor
+      // repetition" (+ of the measurement is toward the strings: deep)
+      {"jack_position:less", {"jack_forward"}},
+      {"jack_position:more", {"jack_deep"}},
+      // "Rep lever too high / gap too big: lost motion"; "too low / no gap: failure to repeat"
+      {"lever_height:more", {"excess_gap"}},
+      {"lever_height:less", {"no_gap", "small_gap", "failure_to_repeat"}},
+      // "Backcheck too far / too low: hammer not checking"; "too close / high: the tail brushes
+      // on the way up, lower hammer speed"
+      {"checking:more", {"no_checking", "checks_far"}},
+      {"checking:less", {"checks_close", "lost_power"}},
+      // "Too little aftertouch (dip too shallow / blow too long)"; "too much aftertouch"
+      {"key_dip:less", {"shallow_dip"}},
+      {"key_dip:more", {"deep_dip"}},
+      {"hammer_blow:more", {"long_blow"}},
+      // "Too much lost motion (upright): hammer lags key, weak/bobbling"
+      {"lost_motion:more", {"excess_gap"}},
+      // "Damper spoon early/late: heavier touch if early; dampers not lifting if far off"
+      {"damper_lift:less", {"damper_early"}},
+      {"damper_lift:more", {"damper_late", "damper_no_lift"}},
+  };
+  return table;
+}
+
+/// (action:setting:direction) cases where the present model does not show the domain table's
+/// symptom, with the reason. They must still differ measurably from the regulated action; the
+/// test asserts the domain symptom is still absent or the setting's own measurement still does
+/// not move, so that a model fix (branch `geometry`) shows up here and the entry is removed.
+const std::map<std::string, std::string>& known_model_limits() {
+  static const std::map<std::string, std::string> cases = {
+      {"upright:lost_motion:more",
+       "the jack touches the butt at rest (gap ≈ −0.007 mm) whatever the capstan, so the rest "
+       "gap never opens; the capstan's moves show only through the key dip and let-off"},
+      {"upright:lost_motion:less",
+       "the jack already touches the butt at rest: screwing the capstan up cannot close the gap "
+       "further, its moves show only through the key dip and the repetition"},
+  };
+  return cases;
+}
+
+struct Case {
+  std::string kind, setting;
+  double adjuster_mm = 0.0;
+  std::string direction;
+};
+
+struct CaseResult {
+  std::vector<Observation> seen;
+  std::optional<double> regulated_measure, hidden_measure;
+};
+
+std::optional<double> try_measure(const ActionModel& model, const std::string& setting) {
+  try {
+    return measure_setting(model, setting);
+  } catch (const std::runtime_error&) {
+    return std::nullopt;
+  }
+}
+
+/// (action kind, setting): one test per setting keeps each under the time limit.
+class PracticeSymptoms : public ::testing::TestWithParam<std::pair<std::string, std::string>> {};
+
+TEST_P(PracticeSymptoms, HiddenSettingShowsItsDomainSymptoms) {
+  const auto& [kind, setting] = GetParam();
+  const ActionModel regulated = test::shipped(kind);
+  std::vector<Case> cases;
+  {
+    const NeglectRange& r = neglect_range(kind, setting);
+    for (double sign : {-1.0, 1.0}) {
+      if (r.only_sign != 0 && sign != r.only_sign) continue;  // a model limit: one-sided
+      Exercise e;
+      e.kind = kind;
+      e.faults = {{r.setting, sign * 0.5 * (r.min_mm + r.max_mm)}};
+      cases.push_back(
+          {kind, r.setting, e.faults[0].adjuster_mm, exercise_answers(e).front().direction});
+    }
+  }
+  std::vector<Observation> reference;
+  std::vector<CaseResult> results(cases.size());
+  // the regulated action and every case are independent runs: both cores
+  run_parallel(cases.size() + 1, [&](std::size_t i) {
+    if (i == cases.size()) {
+      reference = run_all_tests(regulated);
+      return;
+    }
+    Exercise e;
+    e.kind = kind;
+    e.faults = {{cases[i].setting, cases[i].adjuster_mm}};
+    const ActionModel hidden = hidden_model(regulated, e);
+    results[i].seen = run_all_tests(hidden);
+    results[i].regulated_measure = try_measure(regulated, cases[i].setting);
+    results[i].hidden_measure = try_measure(hidden, cases[i].setting);
+  });
+
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const Case& c = cases[i];
+    const std::string key = c.setting + ":" + c.direction;
+    const std::vector<Symptom> symptoms = describe_symptoms(results[i].seen, reference);
+    std::string listed;
+    for (const Symptom& s : symptoms) listed += "\n    " + s.id + ": " + s.text;
+    const std::string where = kind + " " + c.setting + " " + std::to_string(c.adjuster_mm) +
+                              " mm (" + c.direction + ")" + listed;
+    std::cout << "[practice] " << where << "\n";
+    // what the trainee reads never names a setting by its identifier
+    for (const RegulationSetting& r : regulated.regulation) {
+      if (r.name.find('_') == std::string::npos) continue;  // drop, checking, bridle: words
+      for (const Symptom& sy : symptoms)
+        EXPECT_EQ((sy.id + sy.text + sy.observation).find(r.name), std::string::npos) << where;
+      for (const Observation& o : results[i].seen)
+        EXPECT_EQ((o.id + o.label).find(r.name), std::string::npos) << o.id;
+    }
+    EXPECT_TRUE(differ_measurably(results[i].seen, reference)) << where;
+    EXPECT_FALSE(symptoms.empty()) << where;
+    const auto expected = domain_table().find(key);
+    auto has_domain_symptom = [&] {
+      for (const Symptom& s : symptoms)
+        if (expected != domain_table().end() && expected->second.count(s.id)) return true;
+      return false;
+    };
+    // the setting's own measurement moves the way the answer says, by more than its tolerance
+    // (the resolution the regulation works to); unmeasurable is a symptom of its own
+    const auto& reg = results[i].regulated_measure;
+    const auto& hid = results[i].hidden_measure;
+    const double tolerance = regulated.regulation[regulated.setting_index(c.setting)].tolerance;
+    const bool moved = !reg || !hid || std::abs(*hid - *reg) > tolerance;
+    const auto known = known_model_limits().find(kind + ":" + key);
+    if (known != known_model_limits().end()) {
+      EXPECT_FALSE(moved && (has_domain_symptom() || expected == domain_table().end()))
+          << where << "\n  the model now shows it: remove it from known_model_limits ("
+          << known->second << ")";
+      continue;
+    }
+    EXPECT_TRUE(moved) << where << "\n  its measurement did not move beyond " << tolerance;
+    if (reg && hid)
+      EXPECT_EQ(*hid > *reg ? "more" : "less", c.direction)
+          << where << "\n  measured " << *hid << " vs regulated " << *reg;
+    if (expected == domain_table().end()) continue;
+    EXPECT_TRUE(has_domain_symptom())
+        << where << "\n  expected one of the domain table's symptoms for " << key;
+  }
+}
+
+std::vector<std::pair<std::string, std::string>> every_setting() {
+  std::vector<std::pair<std::string, std::string>> all;
+  for (const std::string kind : {"grand", "upright"})
+    for (const NeglectRange& r : neglect_ranges(kind)) all.emplace_back(kind, r.setting);
+  return all;
+}
+
+INSTANTIATE_TEST_SUITE_P(EverySetting, PracticeSymptoms, ::testing::ValuesIn(every_setting()),
+                         [](const auto& info) {
+                           return info.param.first + "_" + info.param.second;
+                         });
+
+}  // namespace
+}  // namespace pat
+
+namespace pat {
+namespace {
+
+// The observations repeat the technician's measurements (measurements.h) where they overlap:
+// the same procedure on the same model gives the same number. The tolerance 1e-9 mm is round-off
+// (the same steps are taken). The repetition counts are whole strikes over three cycles.
+TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
+  const ActionModel grand = test::shipped("grand");
+  const RestState rest = find_rest_state(grand);
+  std::vector<Observation> seen;
+  for (PracticeTest t : all_tests()) {
+    const std::vector<Observation> part = run_test(grand, rest, t);
+    seen.insert(seen.end(), part.begin(), part.end());
+  }
+  auto value = [&](const std::string& id) {
+    const Observation* o = find_observation(seen, id);
+    EXPECT_TRUE(o && o->value) << id;
+    return o && o->value ? *o->value : NAN;
+  };
+  const std::vector<std::pair<std::string, std::string>> same = {
+      {"rest.key_travel_mm", "key_dip"},
+      {"rest.hammer_distance_mm", "hammer_blow"},
+      {"rest.escapement_gap_mm", "lever_height"},
+      {"rest.jack_edge_mm", "jack_position"},
+      {"slow_press.escapement_distance_mm", "let_off"},
+      {"slow_press.held_distance_mm", "drop"},
+      {"forte_blow.caught_distance_mm", "checking"},
+  };
+  for (const auto& [id, setting] : same)
+    EXPECT_NEAR(value(id), measure_setting(grand, setting, &rest), 1e-9) << id;
+  EXPECT_EQ(value("forte_blow.strikes"), 1.0);
+  EXPECT_GT(value("forte_blow.impact_speed_mps"), 0.0);
+  for (double hz : kRepetitionFrequencies) {
+    std::ostringstream id;
+    id << "repetition." << hz << "hz_strikes_per_cycle";
+    const double per_cycle = value(id.str());
+    EXPECT_NEAR(per_cycle * 3.0, std::round(per_cycle * 3.0), 1e-12) << id.str();
+    EXPECT_GE(per_cycle, 0.0);
+  }
+  // the regulated action has no symptom compared with itself
+  EXPECT_TRUE(describe_symptoms(seen, seen).empty());
+  EXPECT_FALSE(differ_measurably(seen, seen));
+}
+
+}  // namespace
+}  // namespace pat

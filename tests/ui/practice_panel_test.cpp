@@ -1,0 +1,160 @@
+// The practice mode in the window (issue 7): start an exercise, run the technician's tests in
+// the background (the window keeps serving events), answer, correct with the relative sliders,
+// score, export the report (PDF and CSV); a broken exercise file is refused with a message
+// naming the file and the field; the regulation panel is hidden while practising.
+#include "practice_panel.h"
+
+#include <QComboBox>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFile>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include "core/error.h"
+#include "main_window.h"
+#include "measurement_service.h"
+#include "practice/exercise.h"
+#include "practice_runner.h"
+#include "regulation_panel.h"
+#include "ui_test_support.h"
+
+using pat::ui::MainWindow;
+using pat::ui::PracticePanel;
+using pat::ui::test::wait_until;
+
+class PracticePanelTest : public QObject {
+  Q_OBJECT
+ private slots:
+  void walk_through_an_exercise();
+  void broken_exercise_file_is_refused_with_its_field();
+};
+
+void PracticePanelTest::walk_through_an_exercise() {
+  MainWindow window;
+  window.open_action("grand");
+  window.resize(1400, 900);
+  window.show();  // shown: the docks' visibility signals run as for a user, also at destruction
+  window.show_practice(true);
+  PracticePanel* panel = window.practice();
+  QSignalSpy active(panel, &PracticePanel::practiceActive);
+
+  // a teacher's file with a known fault, so the walk-through can give the right answer
+  const QString file = QStringLiteral(PAT_PRESET_DIR) + "/exercises/grand_two_faults.json";
+  panel->start_file(file.toStdString());
+  QCOMPARE(active.count(), 1);
+  QVERIFY(panel->session());
+  // the regulation panel (true adjuster positions, measured values) is hidden while practising
+  QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
+  // the window now runs the hidden action: its adjusters moved, nothing on screen says where
+  QVERIFY(window.model()->adjusters[window.model()->adjuster_index("checking")].value != 0.0);
+
+  // observe: the forte blow runs in the background while the event loop keeps turning (measured
+  // once the window has been painted: its first paint is not the test's business)
+  // (the window's own live measurements of the new action, in their thread, are let finish so
+  // that three threads do not share the two cores)
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(wait_until([&] { return !window.measurements()->busy(); }, 60000));
+  QTest::qWait(100);
+  QElapsedTimer loop;
+  qint64 longest_gap_ms = 0;
+  loop.start();
+  panel->run_test(pat::PracticeTest::ForteBlow);
+  QVERIFY(panel->runner()->running());
+  QVERIFY(wait_until(
+      [&] {
+        longest_gap_ms = std::max(longest_gap_ms, loop.restart());
+        return !panel->runner()->running();
+      },
+      60000));
+  // a frozen window would show one long gap the length of the test (hundreds of ms or more);
+  // 250 ms leaves room for a loaded CI machine
+  QVERIFY2(longest_gap_ms < 250, qPrintable(QString::number(longest_gap_ms)));
+  panel->run_test(pat::PracticeTest::Rest);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  QCOMPARE(panel->session()->tests_used(), 2);
+  const QString symptoms = panel->symptom_lines().join("\n");
+  QVERIFY2(!panel->symptom_lines().isEmpty(), qPrintable(panel->status_text()));
+  // key dip +1 mm of punching (shallower) and the backcheck bent toward the hammer
+  QVERIFY2(symptoms.contains("Key dip shallow"), qPrintable(symptoms));
+
+  // answer: first half right, then right
+  const auto answers = pat::exercise_answers(panel->session()->exercise());
+  QVERIFY(!panel->submit_answer({answers[0]}).correct);
+  // the second answer through the form: both faults of this level-2 exercise
+  auto choose = [panel](const char* name, const QString& data_or_text) {
+    auto* box = panel->findChild<QComboBox*>(name);
+    QVERIFY(box && box->isEnabled());
+    int index = box->findData(data_or_text);
+    if (index < 0) index = box->findText(data_or_text);
+    QVERIFY(index >= 0);
+    box->setCurrentIndex(index);
+  };
+  QCOMPARE(answers.size(), std::size_t{2});
+  choose("answer_setting", QString::fromStdString(answers[0].setting));
+  choose("answer_direction", QString::fromStdString(answers[0].direction));
+  choose("second_setting", QString::fromStdString(answers[1].setting));
+  choose("second_direction", QString::fromStdString(answers[1].direction));
+  QTest::mouseClick(panel->findChild<QPushButton*>("answer_button"), Qt::LeftButton);
+  QVERIFY2(panel->status_text().startsWith("Correct"), qPrintable(panel->status_text()));
+  QVERIFY(!panel->request_hint().isEmpty());
+
+  // correct: the relative moves that undo both faults
+  for (const pat::HiddenFault& f : panel->session()->exercise().faults)
+    panel->move_adjuster(f.setting, -f.adjuster_mm);
+  QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.0);
+
+  QSignalSpy scored(panel, &PracticePanel::scored);
+  panel->finish();
+  QVERIFY(wait_until([&] { return scored.count() == 1; }, 60000));
+  const pat::SessionScore score = *panel->session()->final_score();
+  QVERIFY2(score.regulation > 39.0, qPrintable(panel->status_text()));
+  QVERIFY(score.total > 0.0);
+  // the scored session is remembered for the next run of the program
+  QVERIFY(panel->past_sessions().value(0).contains("Grand, level 2"));
+
+  QTemporaryDir dir;
+  const QString pdf = dir.filePath("session.pdf"), csv = dir.filePath("session.csv");
+  panel->export_report(pdf, csv);
+  QFile pdf_file(pdf);
+  QVERIFY(pdf_file.open(QIODevice::ReadOnly));
+  QVERIFY(pdf_file.read(5) == "%PDF-");
+  QFile csv_file(csv);
+  QVERIFY(csv_file.open(QIODevice::ReadOnly));
+  const QString csv_text = QString::fromUtf8(csv_file.readAll());
+  QVERIFY(csv_text.contains("t_s,kind,detail"));
+  QVERIFY(csv_text.contains("score"));
+  QVERIFY(csv_text.contains("move,checking"));
+
+  // leaving practice mode returns to the regulated action with its regulation panel
+  window.show_practice(false);
+  QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
+}
+
+void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
+  MainWindow window;
+  window.open_action("grand");
+  QTemporaryDir dir;
+  const QString path = dir.filePath("broken.json");
+  QFile f(path);
+  QVERIFY(f.open(QIODevice::WriteOnly));
+  f.write(R"({"schema": "pat-exercise/1", "action": "grand",
+              "faults": [{"setting": "let_off", "adjuster_mm": 9}]})");
+  f.close();
+  try {
+    window.practice()->start_file(path.toStdString());
+    QFAIL("expected InputError");
+  } catch (const pat::InputError& e) {
+    const QString message = e.what();
+    QVERIFY2(message.contains("broken.json") && message.contains("faults[0].adjuster_mm"),
+             qPrintable(message));
+  }
+  QVERIFY(!window.practice()->session());
+}
+
+QTEST_MAIN(PracticePanelTest)
+#include "practice_panel_test.moc"

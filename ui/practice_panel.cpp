@@ -1,0 +1,494 @@
+#include "practice_panel.h"
+
+#include <QComboBox>
+#include <QDateTime>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "core/error.h"
+#include "model/preset_loader.h"
+#include "practice/exercise.h"
+#include "practice_report.h"
+#include "practice_runner.h"
+
+namespace pat::ui {
+namespace {
+
+/// Slider resolution: one step is 0.01 mm of adjuster travel.
+constexpr double kSliderStepMm = 0.01;
+/// Relative travel the sliders offer either way (mm); the adjuster's physical stop may come
+/// earlier (the move is then refused with the engine's message).
+constexpr int kSliderSpanSteps = 400;
+
+QString test_title(PracticeTest test) {
+  switch (test) {
+    case PracticeTest::Rest:
+      return QObject::tr("Rest geometry");
+    case PracticeTest::SlowPress:
+      return QObject::tr("Slow key press");
+    case PracticeTest::ForteBlow:
+      return QObject::tr("Forte blow");
+    case PracticeTest::Repetition:
+      return QObject::tr("Repeated notes");
+  }
+  return {};
+}
+
+/// Long lines wrap to the list's width instead of scrolling sideways.
+void wrap_lines(QListWidget* list) {
+  list->setWordWrap(true);
+  list->setResizeMode(QListView::Adjust);
+  list->setTextElideMode(Qt::ElideNone);
+  list->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+}
+
+}  // namespace
+
+PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
+  runner_ = new PracticeRunner(this);
+  auto* column = new QVBoxLayout(this);
+
+  auto* start_box = new QGroupBox(tr("Exercise"), this);
+  auto* start_form = new QFormLayout(start_box);
+  action_ = new QComboBox(start_box);
+  action_->addItems({"grand", "upright"});
+  seed_ = new QSpinBox(start_box);
+  seed_->setRange(0, 1000000);
+  level_ = new QSpinBox(start_box);
+  level_->setRange(1, 2);
+  level_->setToolTip(tr("Level 1 hides one setting, level 2 two"));
+  start_form->addRow(tr("Action"), action_);
+  start_form->addRow(tr("Seed"), seed_);
+  start_form->addRow(tr("Level"), level_);
+  auto* start_row = new QHBoxLayout;
+  auto* start_button = new QPushButton(tr("Start"), start_box);
+  auto* file_button = new QPushButton(tr("Open exercise file…"), start_box);
+  start_row->addWidget(start_button);
+  start_row->addWidget(file_button);
+  start_form->addRow(start_row);
+  title_ = new QLabel(tr("No exercise running."), start_box);
+  title_->setWordWrap(true);
+  start_form->addRow(title_);
+  column->addWidget(start_box);
+  connect(start_button, &QPushButton::clicked, this, &PracticePanel::start_from_form);
+  connect(file_button, &QPushButton::clicked, this, &PracticePanel::open_file_from_dialog);
+
+  auto* tests_box = new QGroupBox(tr("Technician's tests on this action"), this);
+  auto* tests_layout = new QVBoxLayout(tests_box);
+  auto* buttons = new QGridLayout;  // two by two: the dock stays narrow
+  for (PracticeTest test : all_tests()) {
+    auto* b = new QPushButton(test_title(test), tests_box);
+    b->setEnabled(false);
+    connect(b, &QPushButton::clicked, this, [this, test] { run_test(test); });
+    const int n = static_cast<int>(test_buttons_.size());
+    buttons->addWidget(b, n / 2, n % 2);
+    test_buttons_.push_back(b);
+  }
+  tests_layout->addLayout(buttons);
+  auto* progress_row = new QHBoxLayout;
+  progress_ = new QProgressBar(tests_box);
+  progress_->setRange(0, 100);
+  cancel_ = new QPushButton(tr("Cancel"), tests_box);
+  cancel_->setEnabled(false);
+  progress_row->addWidget(progress_, 1);
+  progress_row->addWidget(cancel_);
+  tests_layout->addLayout(progress_row);
+  symptoms_ = new QListWidget(tests_box);
+  wrap_lines(symptoms_);
+  symptoms_->setMinimumHeight(120);
+  tests_layout->addWidget(symptoms_);
+  column->addWidget(tests_box);
+  connect(cancel_, &QPushButton::clicked, runner_, &PracticeRunner::cancel);
+
+  auto* answer_box = new QGroupBox(tr("Diagnosis"), this);
+  auto* answer_grid = new QGridLayout(answer_box);
+  answer_setting_ = new QComboBox(answer_box);
+  answer_direction_ = new QComboBox(answer_box);
+  second_setting_ = new QComboBox(answer_box);
+  second_direction_ = new QComboBox(answer_box);
+  for (QComboBox* d : {answer_direction_, second_direction_}) {
+    d->addItem(tr("more than its target"), "more");
+    d->addItem(tr("less than its target"), "less");
+  }
+  second_setting_->setToolTip(tr("Level 2: the second hidden setting"));
+  answer_setting_->setObjectName("answer_setting");
+  answer_direction_->setObjectName("answer_direction");
+  second_setting_->setObjectName("second_setting");
+  second_direction_->setObjectName("second_direction");
+  answer_button_ = new QPushButton(tr("Answer"), answer_box);
+  hint_button_ = new QPushButton(tr("Hint"), answer_box);
+  answer_button_->setObjectName("answer_button");
+  answer_grid->addWidget(answer_setting_, 0, 0);
+  answer_grid->addWidget(answer_direction_, 0, 1);
+  answer_grid->addWidget(second_setting_, 1, 0);
+  answer_grid->addWidget(second_direction_, 1, 1);
+  answer_grid->addWidget(answer_button_, 2, 0);
+  answer_grid->addWidget(hint_button_, 2, 1);
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
+                                       second_direction_, answer_button_, hint_button_})
+    w->setEnabled(false);
+  second_setting_->hide();
+  second_direction_->hide();
+  column->addWidget(answer_box);
+  connect(answer_button_, &QPushButton::clicked, this, &PracticePanel::answer_from_form);
+  connect(hint_button_, &QPushButton::clicked, this, &PracticePanel::request_hint);
+
+  auto* correct_box = new QGroupBox(tr("Correction (relative moves; true positions hidden)"), this);
+  auto* correct_layout = new QVBoxLayout(correct_box);
+  adjusters_box_ = new QWidget(correct_box);
+  adjusters_box_->setLayout(new QFormLayout);
+  correct_layout->addWidget(adjusters_box_);
+  auto* end_row = new QHBoxLayout;
+  finish_button_ = new QPushButton(tr("Finish and score"), correct_box);
+  export_button_ = new QPushButton(tr("Export report…"), correct_box);
+  finish_button_->setEnabled(false);
+  export_button_->setEnabled(false);
+  end_row->addWidget(finish_button_);
+  end_row->addWidget(export_button_);
+  correct_layout->addLayout(end_row);
+  column->addWidget(correct_box);
+  connect(finish_button_, &QPushButton::clicked, this, &PracticePanel::finish);
+  connect(export_button_, &QPushButton::clicked, this, &PracticePanel::export_from_dialog);
+
+  auto* history_box = new QGroupBox(tr("History"), this);
+  auto* history_layout = new QVBoxLayout(history_box);
+  history_ = new QListWidget(history_box);
+  wrap_lines(history_);
+  history_layout->addWidget(history_);
+  history_layout->addWidget(new QLabel(tr("Past sessions"), history_box));
+  past_sessions_ = new QListWidget(history_box);
+  wrap_lines(past_sessions_);
+  past_sessions_->setMaximumHeight(90);
+  history_layout->addWidget(past_sessions_);
+  show_past_sessions();
+  column->addWidget(history_box, 1);
+  status_ = new QLabel(this);
+  status_->setWordWrap(true);
+  column->addWidget(status_);
+
+  connect(runner_, &PracticeRunner::progress, this, [this](double f, const QString& stage) {
+    progress_->setValue(static_cast<int>(std::lround(100 * f)));
+    progress_->setFormat(stage + " %p%");
+  });
+  connect(runner_, &PracticeRunner::observed, this,
+          [this](int test, const std::vector<Observation>& seen,
+                 const std::vector<Observation>& regulated) {
+            set_busy(false);
+            if (!session_) return;
+            const auto symptoms = session_->record_test(static_cast<PracticeTest>(test), seen,
+                                                        regulated, elapsed_s());
+            const QString name = test_title(static_cast<PracticeTest>(test));
+            if (symptoms.empty())
+              symptoms_->addItem(tr("%1: nothing differs from a regulated action.").arg(name));
+            for (const Symptom& s : symptoms)
+              symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
+            symptoms_->scrollToBottom();
+            append_history();
+            show_status(tr("%1 done (%2 tests used).").arg(name).arg(session_->tests_used()));
+          });
+  connect(runner_, &PracticeRunner::measured, this,
+          [this](const std::vector<CorrectionReading>& readings) {
+            set_busy(false);
+            if (!session_) return;
+            const SessionScore s = session_->score(readings, elapsed_s());
+            append_history();
+            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4, hints −%5)")
+                            .arg(s.total, 0, 'f', 1)
+                            .arg(s.diagnosis, 0, 'f', 1)
+                            .arg(s.regulation, 0, 'f', 1)
+                            .arg(s.economy, 0, 'f', 1)
+                            .arg(s.hint_penalty, 0, 'f', 1));
+            export_button_->setEnabled(true);
+            remember_session(s);
+            emit scored(s.total);
+          });
+  connect(runner_, &PracticeRunner::failed, this, [this](const QString& reason) {
+    set_busy(false);
+    show_status(tr("Stopped: %1").arg(reason));
+  });
+}
+
+void PracticePanel::start_from_form() {
+  try {
+    start_seed(action_->currentText().toStdString(), static_cast<std::uint64_t>(seed_->value()),
+               level_->value());
+  } catch (const std::exception& e) {
+    show_status(QString::fromStdString(e.what()));
+  }
+}
+
+void PracticePanel::open_file_from_dialog() {
+  const QString path = QFileDialog::getOpenFileName(
+      this, tr("Open exercise"), QString::fromStdString(preset_directory() + "/exercises"),
+      tr("Exercises (*.json)"));
+  if (path.isEmpty()) return;
+  try {
+    start_file(path.toStdString());
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Cannot open the exercise"), QString::fromStdString(e.what()));
+  }
+}
+
+void PracticePanel::start_seed(const std::string& action, std::uint64_t seed, int level) {
+  ActionModel regulated = load_action(action);
+  Exercise exercise = generate_exercise(regulated, action, seed, level);
+  begin(std::move(exercise), std::move(regulated));
+}
+
+void PracticePanel::start_file(const std::string& path) {
+  Exercise exercise = load_exercise(path);
+  ActionModel regulated = load_action(exercise.action);
+  begin(std::move(exercise), std::move(regulated));
+}
+
+void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
+  if (runner_->running()) {
+    runner_->cancel();
+    runner_->wait();
+  }
+  // an exercise whose action does not come to rest cannot be practised: refuse it here
+  ActionModel hidden = hidden_model(regulated, exercise);
+  try {
+    find_rest_state(hidden);
+  } catch (const std::runtime_error& e) {
+    throw InputError((exercise.source_file.empty() ? exercise.title : exercise.source_file) +
+                     ": impossible exercise, the deregulated action does not come to rest (" +
+                     e.what() + ")");
+  }
+  runner_->reset_cache();
+  regulated_ = std::make_shared<const ActionModel>(regulated);
+  session_ = std::make_unique<PracticeSession>(std::move(exercise), std::move(regulated));
+  clock_.start();
+  title_->setText(QString::fromStdString(session_->exercise().title) +
+                  (session_->exercise().notes.empty()
+                       ? QString()
+                       : "\n" + QString::fromStdString(session_->exercise().notes)));
+  symptoms_->clear();
+  history_->clear();
+  answer_setting_->clear();
+  second_setting_->clear();
+  for (const RegulationSetting& s : regulated_->regulation) {
+    answer_setting_->addItem(QString::fromStdString(s.name));
+    second_setting_->addItem(QString::fromStdString(s.name));
+  }
+  second_setting_->setVisible(session_->exercise().level == 2);
+  second_direction_->setVisible(session_->exercise().level == 2);
+  build_adjusters();
+  append_history();
+  set_busy(false);
+  export_button_->setEnabled(true);
+  show_status(tr("Exercise started: run the tests, then answer."));
+  emit practiceActive(true);
+  emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
+}
+
+void PracticePanel::build_adjusters() {
+  auto* form = static_cast<QFormLayout*>(adjusters_box_->layout());
+  while (form->rowCount() > 0) form->removeRow(0);
+  sliders_.clear();
+  moved_labels_.clear();
+  for (const RegulationSetting& s : regulated_->regulation) {
+    auto* row = new QWidget(adjusters_box_);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* slider = new QSlider(Qt::Horizontal, row);
+    slider->setRange(-kSliderSpanSteps, kSliderSpanSteps);
+    slider->setValue(0);
+    slider->setToolTip(tr("Moves the %1 adjuster relative to where you found it")
+                           .arg(QString::fromStdString(s.name)));
+    auto* moved = new QLabel(tr("moved 0.00 mm"), row);
+    layout->addWidget(slider, 1);
+    layout->addWidget(moved);
+    form->addRow(QString::fromStdString(s.name), row);
+    sliders_[s.name] = slider;
+    moved_labels_[s.name] = moved;
+    const std::string name = s.name;
+    auto apply = [this, name, slider] {
+      if (!session_) return;
+      const double target = slider->value() * kSliderStepMm;
+      const double delta = target - session_->moved_mm(name);
+      if (std::abs(delta) < 0.5 * kSliderStepMm) return;
+      try {
+        move_adjuster(name, delta);
+      } catch (const std::exception& e) {
+        const QSignalBlocker block(slider);
+        slider->setValue(static_cast<int>(std::lround(session_->moved_mm(name) / kSliderStepMm)));
+        show_status(QString::fromStdString(e.what()));
+      }
+    };
+    connect(slider, &QSlider::sliderReleased, this, apply);
+    connect(slider, &QSlider::valueChanged, this, [slider, apply] {
+      if (!slider->isSliderDown()) apply();  // keyboard and wheel steps
+    });
+  }
+}
+
+void PracticePanel::run_test(PracticeTest test) {
+  if (!session_ || runner_->running()) return;
+  set_busy(true);
+  progress_->setValue(0);
+  runner_->observe(std::make_shared<const ActionModel>(session_->current_model()), regulated_,
+                   test);
+}
+
+AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& answers) {
+  if (!session_) throw InputError("no exercise is running");
+  const AnswerJudgement j = session_->answer(answers, elapsed_s());
+  QStringList remarks;
+  for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
+  show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
+              " " + remarks.join("; "));
+  append_history();
+  return j;
+}
+
+void PracticePanel::answer_from_form() {
+  if (!session_) return;
+  std::vector<FaultAnswer> answers{{answer_setting_->currentText().toStdString(),
+                                    answer_direction_->currentData().toString().toStdString()}};
+  if (session_->exercise().level == 2)
+    answers.push_back({second_setting_->currentText().toStdString(),
+                       second_direction_->currentData().toString().toStdString()});
+  submit_answer(answers);
+}
+
+QString PracticePanel::request_hint() {
+  if (!session_) return {};
+  const QString hint = QString::fromStdString(session_->hint(elapsed_s()));
+  show_status(tr("Hint: %1").arg(hint));
+  append_history();
+  return hint;
+}
+
+void PracticePanel::move_adjuster(const std::string& setting, double delta_mm) {
+  if (!session_) throw InputError("no exercise is running");
+  session_->move_adjuster(setting, delta_mm, elapsed_s());
+  const double moved = session_->moved_mm(setting);
+  if (QSlider* slider = sliders_.count(setting) ? sliders_[setting] : nullptr) {
+    const QSignalBlocker block(slider);
+    slider->setValue(static_cast<int>(std::lround(moved / kSliderStepMm)));
+  }
+  if (moved_labels_.count(setting))
+    moved_labels_[setting]->setText(
+        tr("moved %1%2 mm").arg(moved >= 0 ? "+" : "").arg(moved, 0, 'f', 2));
+  append_history();
+  emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
+}
+
+void PracticePanel::finish() {
+  if (!session_ || runner_->running()) return;
+  set_busy(true);
+  show_status(tr("Measuring the corrected action…"));
+  runner_->measure(*session_);
+}
+
+void PracticePanel::export_report(const QString& pdf_path, const QString& csv_path) {
+  if (!session_) throw InputError("no exercise is running: nothing to report");
+  write_session_pdf(pdf_path, *session_);
+  write_session_csv(csv_path.toStdString(), *session_);
+  show_status(tr("Report written: %1 and %2").arg(pdf_path, csv_path));
+}
+
+void PracticePanel::export_from_dialog() {
+  const QString pdf =
+      QFileDialog::getSaveFileName(this, tr("Export the session report"), {}, tr("PDF (*.pdf)"));
+  if (pdf.isEmpty()) return;
+  QString csv = pdf;
+  csv.replace(QRegularExpression("\\.pdf$", QRegularExpression::CaseInsensitiveOption), "");
+  csv += ".csv";
+  try {
+    export_report(pdf, csv);
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
+  }
+}
+
+QStringList PracticePanel::symptom_lines() const {
+  QStringList lines;
+  for (int i = 0; i < symptoms_->count(); ++i) lines << symptoms_->item(i)->text();
+  return lines;
+}
+
+QString PracticePanel::status_text() const {
+  return status_->text();
+}
+
+void PracticePanel::set_busy(bool busy) {
+  const bool active = session_ != nullptr;
+  for (QPushButton* b : test_buttons_) b->setEnabled(active && !busy);
+  cancel_->setEnabled(busy);
+  for (QWidget* w : std::initializer_list<QWidget*>{
+           answer_setting_, answer_direction_, second_setting_, second_direction_, answer_button_,
+           hint_button_, finish_button_, adjusters_box_})
+    w->setEnabled(active && !busy);
+  if (!busy) {
+    progress_->setValue(progress_->maximum());
+    progress_->setFormat(tr("ready"));
+  }
+}
+
+void PracticePanel::show_status(const QString& text) {
+  status_->setText(text);
+}
+
+void PracticePanel::append_history() {
+  if (!session_) return;
+  const auto& events = session_->history();
+  for (std::size_t i = static_cast<std::size_t>(history_->count()); i < events.size(); ++i)
+    history_->addItem(QStringLiteral("%1 s  %2: %3")
+                          .arg(events[i].t_s, 0, 'f', 1)
+                          .arg(QString::fromStdString(events[i].kind))
+                          .arg(QString::fromStdString(events[i].detail)));
+  history_->scrollToBottom();
+}
+
+/// How many scored sessions the settings keep.
+constexpr int kPastSessionsKept = 50;
+
+void PracticePanel::remember_session(const SessionScore& score) {
+  QSettings settings;
+  QStringList past = settings.value("practice/past_sessions").toStringList();
+  past.prepend(tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
+                   .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
+                   .arg(QString::fromStdString(session_->exercise().title))
+                   .arg(score.total, 0, 'f', 1)
+                   .arg(score.tests_used)
+                   .arg(score.hints_used)
+                   .arg(score.time_s, 0, 'f', 0));
+  while (past.size() > kPastSessionsKept) past.removeLast();
+  settings.setValue("practice/past_sessions", past);
+  show_past_sessions();
+}
+
+void PracticePanel::show_past_sessions() {
+  past_sessions_->clear();
+  past_sessions_->addItems(QSettings().value("practice/past_sessions").toStringList());
+}
+
+QStringList PracticePanel::past_sessions() const {
+  QStringList lines;
+  for (int i = 0; i < past_sessions_->count(); ++i) lines << past_sessions_->item(i)->text();
+  return lines;
+}
+
+double PracticePanel::elapsed_s() const {
+  return clock_.isValid() ? clock_.elapsed() / 1000.0 : 0.0;
+}
+
+}  // namespace pat::ui

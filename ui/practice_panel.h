@@ -1,0 +1,109 @@
+// The practice mode (issue 7): a dock in the trainer window where a trainee starts an exercise
+// (a seed or a teacher's file), runs the technician's tests on the hidden action (in the
+// background, with progress and cancel), reads the symptoms, names the setting and the
+// direction, corrects it with sliders that show only relative moves, asks for hints, is scored,
+// and exports the session report (PDF and CSV). The adjusters' true positions are never shown.
+#pragma once
+
+#include <QElapsedTimer>
+#include <QWidget>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "practice/session.h"
+
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QProgressBar;
+class QPushButton;
+class QSlider;
+class QSpinBox;
+
+namespace pat::ui {
+
+class PracticeRunner;
+
+class PracticePanel : public QWidget {
+  Q_OBJECT
+ public:
+  explicit PracticePanel(QWidget* parent = nullptr);
+
+  /// Starts a seeded exercise on `action` ("grand", "upright" or a preset). Throws InputError.
+  void start_seed(const std::string& action, std::uint64_t seed, int level);
+  /// Starts a teacher's exercise file. Throws InputError naming the file and the field.
+  void start_file(const std::string& path);
+  /// Runs one of the technician's tests on the current (hidden, corrected) action.
+  void run_test(PracticeTest test);
+  /// Gives a diagnosis; returns the judgement (also shown).
+  AnswerJudgement submit_answer(const std::vector<FaultAnswer>& answers);
+  /// The next hint (also shown and kept in the history).
+  QString request_hint();
+  /// Moves an adjuster relative to where it is (as the slider does). Throws InputError.
+  void move_adjuster(const std::string& setting, double delta_mm);
+  /// Measures the correction in the background and scores the session (scored() follows).
+  void finish();
+  /// Writes the report: PDF and CSV. Throws InputError.
+  void export_report(const QString& pdf_path, const QString& csv_path);
+
+  const PracticeSession* session() const { return session_ ? session_.get() : nullptr; }
+  PracticeRunner* runner() const { return runner_; }
+  /// The symptom lines shown, and the status line (tests).
+  QStringList symptom_lines() const;
+  /// The scored sessions remembered between runs of the program (newest first).
+  QStringList past_sessions() const;
+  QString status_text() const;
+
+ signals:
+  /// The action the trainee now works on (hidden + moves): the window shows and plays it.
+  void modelChanged(std::shared_ptr<const pat::ActionModel> model);
+  /// An exercise started (true) or none is running (false): the window hides the regulation
+  /// panel, whose values would give the answer away.
+  void practiceActive(bool active);
+  void scored(double total);
+
+ private:
+  void begin(Exercise exercise, ActionModel regulated);
+  void build_adjusters();
+  void set_busy(bool busy);
+  void show_status(const QString& text);
+  void append_history();
+  void remember_session(const SessionScore& score);
+  void show_past_sessions();
+  double elapsed_s() const;
+  void start_from_form();
+  void open_file_from_dialog();
+  void answer_from_form();
+  void export_from_dialog();
+
+  std::unique_ptr<PracticeSession> session_;
+  std::shared_ptr<const ActionModel> regulated_;
+  PracticeRunner* runner_;
+  QElapsedTimer clock_;
+
+  QComboBox* action_;
+  QSpinBox* seed_;
+  QSpinBox* level_;
+  QLabel* title_;
+  std::vector<QPushButton*> test_buttons_;
+  QPushButton* cancel_;
+  QProgressBar* progress_;
+  QListWidget* symptoms_;
+  QComboBox* answer_setting_;
+  QComboBox* answer_direction_;
+  QComboBox* second_setting_;  ///< level 2: the second fault named
+  QComboBox* second_direction_;
+  QPushButton* answer_button_;
+  QPushButton* hint_button_;
+  QPushButton* finish_button_;
+  QPushButton* export_button_;
+  QWidget* adjusters_box_;
+  std::map<std::string, QSlider*> sliders_;
+  std::map<std::string, QLabel*> moved_labels_;
+  QListWidget* history_;
+  QListWidget* past_sessions_;  ///< scored sessions kept in the settings, newest first
+  QLabel* status_;
+};
+
+}  // namespace pat::ui

@@ -1,0 +1,83 @@
+#include "practice_report.h"
+
+#include <QFile>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QTextDocument>
+
+#include "core/error.h"
+
+namespace pat::ui {
+namespace {
+
+QString cell(const std::string& text) {
+  return QString::fromStdString(text).toHtmlEscaped();
+}
+
+QString number(const std::optional<double>& v) {
+  return v ? QString::number(*v, 'f', 3) : QObject::tr("not measurable");
+}
+
+}  // namespace
+
+QString session_report_html(const PracticeSession& session) {
+  const Exercise& e = session.exercise();
+  QString html = "<h2>" + QObject::tr("Practice session report") + "</h2>";
+  html += "<p><b>" + cell(e.title) + "</b><br>" + QObject::tr("Action: %1").arg(cell(e.kind));
+  if (e.seed) html += "<br>" + QObject::tr("Seed: %1, level %2").arg(*e.seed).arg(e.level);
+  if (!e.source_file.empty())
+    html += "<br>" + QObject::tr("Exercise file: %1").arg(cell(e.source_file));
+  if (!e.notes.empty()) html += "<br>" + cell(e.notes);
+  html += "</p>";
+  const auto& score = session.final_score();
+  if (score) {
+    html += "<h3>" + QObject::tr("Score: %1 / 100").arg(score->total, 0, 'f', 1) + "</h3><ul>";
+    for (const std::string& note : score->notes) html += "<li>" + cell(note) + "</li>";
+    html += "</ul><p>" + QObject::tr("Hidden:") + " ";
+    for (const FaultAnswer& a : exercise_answers(e))
+      html += cell(a.setting) + " (" + cell(a.direction) + ") ";
+    html += "</p><table border='1' cellspacing='0' cellpadding='3'><tr><th>" +
+            QObject::tr("setting") + "</th><th>" + QObject::tr("regulated") + "</th><th>" +
+            QObject::tr("deregulated") + "</th><th>" + QObject::tr("after correction") +
+            "</th></tr>";
+    for (const CorrectionReading& r : score->readings)
+      html += "<tr><td>" + cell(r.setting) + "</td><td>" + number(r.regulated) + "</td><td>" +
+              number(r.hidden) + "</td><td>" + number(r.corrected) + "</td></tr>";
+    html += "</table>";
+  } else {
+    html += "<p>" + QObject::tr("Not scored yet.") + "</p>";
+  }
+  html += "<h3>" + QObject::tr("History") +
+          "</h3><table border='1' cellspacing='0' "
+          "cellpadding='3'><tr><th>t (s)</th><th>" +
+          QObject::tr("what") + "</th><th>" + QObject::tr("detail") + "</th></tr>";
+  for (const SessionEvent& ev : session.history())
+    html += "<tr><td>" + QString::number(ev.t_s, 'f', 1) + "</td><td>" + cell(ev.kind) +
+            "</td><td>" + cell(ev.detail) + "</td></tr>";
+  html += "</table>";
+  return html;
+}
+
+void write_session_pdf(const QString& path, const PracticeSession& session) {
+  // written beside and renamed, so an existing report is never left half-written
+  const QString temporary = path + ".tmp";
+  {
+    QPdfWriter pdf(temporary);
+    pdf.setPageSize(QPageSize(QPageSize::A4));
+    pdf.setResolution(150);
+    pdf.setTitle(QObject::tr("Practice session report"));
+    QTextDocument doc;
+    doc.setHtml(session_report_html(session));
+    doc.print(&pdf);
+  }
+  QFile written(temporary);
+  if (!written.exists() || written.size() == 0)
+    throw InputError(path.toStdString() + ": cannot write the PDF report");
+  QFile::remove(path);
+  if (!written.rename(path)) {
+    written.remove();
+    throw InputError(path.toStdString() + ": cannot write the PDF report (rename failed)");
+  }
+}
+
+}  // namespace pat::ui

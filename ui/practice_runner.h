@@ -1,0 +1,51 @@
+// The practice mode's background work: a technician's test run on the hidden action and on the
+// regulated one (for the comparison), and the measurements the final score needs — both in a
+// worker thread (QtConcurrent), with progress and cancel, so the window never freezes.
+#pragma once
+
+#include <QFuture>
+#include <QObject>
+#include <QString>
+#include <atomic>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "practice/observations.h"
+#include "practice/session.h"
+
+namespace pat::ui {
+
+class PracticeRunner : public QObject {
+  Q_OBJECT
+ public:
+  explicit PracticeRunner(QObject* parent = nullptr);
+  ~PracticeRunner() override;
+
+  /// Runs `test` on `hidden` and (once per exercise, then cached) on `regulated`.
+  void observe(std::shared_ptr<const ActionModel> hidden,
+               std::shared_ptr<const ActionModel> regulated, PracticeTest test);
+  /// Measures the settings the score needs (measure_corrections) on a copy of `session`.
+  void measure(const PracticeSession& session);
+  /// Forgets the regulated action's cached observations (a new exercise).
+  void reset_cache();
+  void cancel() { cancelled_.store(true); }
+  bool running() const { return running_; }
+  void wait() { future_.waitForFinished(); }
+
+ signals:
+  void progress(double fraction, const QString& stage);
+  void observed(int test, const std::vector<pat::Observation>& seen,
+                const std::vector<pat::Observation>& regulated);
+  void measured(const std::vector<pat::CorrectionReading>& readings);
+  /// A failure or a cancel: the reason.
+  void failed(const QString& reason);
+
+ private:
+  std::atomic<bool> cancelled_{false};
+  bool running_ = false;
+  QFuture<void> future_;
+  std::map<int, std::vector<Observation>> regulated_cache_;  ///< used in the window thread only
+};
+
+}  // namespace pat::ui
