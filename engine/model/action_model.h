@@ -161,6 +161,11 @@ struct RegulationSetting {
   double target = 0.0;      ///< in unit
   double tolerance = 0.05;  ///< in unit
   std::string source;       ///< where the target comes from
+  /// Another adjuster the technician moves out of the way when this setting cannot be
+  /// regulated as found (e.g. the grand's drop screw turned down before let-off), and the
+  /// position (m from its regulated position) it is moved to; empty when none.
+  std::string clear_adjuster;
+  double clear_position = 0.0;
 };
 
 struct ActionModel {

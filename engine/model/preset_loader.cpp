@@ -378,6 +378,20 @@ void read_regulation(const PresetReader& r, const json& root, ActionModel& model
     setting.target = r.number(item, path, "target");
     setting.tolerance = r.positive(item, path, "tolerance");
     setting.source = r.text(item, path, "source");
+    if (r.optional(item, "clear_first")) {
+      const json& clear = item.at("clear_first");
+      const std::string cpath = path + ".clear_first";
+      setting.clear_adjuster = r.text(clear, cpath, "adjuster");
+      const int index = model.adjuster_index(setting.clear_adjuster);
+      if (index < 0 || setting.clear_adjuster == setting.name)
+        r.fail(cpath + ".adjuster",
+               "expected another adjuster, got '" + setting.clear_adjuster + "'");
+      setting.clear_position = r.number(clear, cpath, "position_mm") * kMm;
+      if (index >= 0 && (setting.clear_position < model.adjusters[index].min ||
+                         setting.clear_position > model.adjusters[index].max))
+        r.fail(cpath + ".position_mm", "outside the adjuster's physical range");
+      r.text(clear, cpath, "reason");
+    }
     model.regulation.push_back(setting);
   }
 }

@@ -47,6 +47,13 @@ class SettingProbe {
   int evaluations_ = 0;
 };
 
+/// Distances (mm) from the adjuster's position at which an unmeasurable setting is tried, on
+/// either side, nearest first.
+constexpr double kMeasurableSearchMm[] = {0.5, 1.0, 2.0, 3.0, 4.0};
+
+/// Distances (mm) from the start at which a stalled bracket search looks for a change of sign.
+constexpr double kBracketScanMm[] = {0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+
 struct Found {
   bool ok = false;
   double adjuster_m = 0.0;
@@ -109,6 +116,44 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const Regulat
     eb = probe_at(xb);
   }
   if (!bracketed) {
+    // The secant stalled: a flat stretch (another part takes over, e.g. the repetition lever
+    // carries the hammer into the string whatever the drop screw until the screw meets it) or
+    // the edge of the measurable region. Scan outward on both sides of the start for a change
+    // of sign, nearest first, and bracket it with the last point of the start's sign.
+    double same_x[2] = {x0, x0}, same_e[2] = {e0, e0};
+    for (double distance : kBracketScanMm) {
+      for (int side = 0; side < 2 && !bracketed; ++side) {
+        const double x =
+            std::clamp(x0 + (side == 0 ? 1.0 : -1.0) * distance * 1e-3, adjuster.min, adjuster.max);
+        if (x == same_x[side]) continue;
+        const auto e = probe.error_at(x, &why);
+        if (!e) {
+          tried.push_back("unmeasurable at " + format_number(x * 1e3) + " mm (" + why + ")");
+          continue;
+        }
+        tried.push_back(format_number(*e + setting.target) + " " + setting.unit + " at " +
+                        format_number(x * 1e3) + " mm");
+        if (std::abs(*e) <= aim) {
+          found.ok = true;
+          found.adjuster_m = x;
+          found.error = *e;
+          return found;
+        }
+        if ((*e > 0.0) != (e0 > 0.0)) {
+          xa = same_x[side];
+          ea = same_e[side];
+          xb = x;
+          eb = e;
+          bracketed = true;
+        } else {
+          same_x[side] = x;
+          same_e[side] = *e;
+        }
+      }
+      if (bracketed) break;
+    }
+  }
+  if (!bracketed) {
     found.message = "setting '" + setting.name + "': the target " + format_number(setting.target) +
                     " " + setting.unit + " is out of reach within the adjuster's range [" +
                     format_number(adjuster.min * 1e3) + ", " + format_number(adjuster.max * 1e3) +
@@ -159,6 +204,73 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const Regulat
   return found;
 }
 
+/// One setting's turn in a pass: measured where its adjuster is (or, when it cannot be measured
+/// there, at the nearest position where it can), and searched for when out of tolerance.
+/// `model` and `rest` follow the adjuster.
+struct SettingOutcome {
+  RegulationStep step;
+  bool within = true;   ///< it was within tolerance as found
+  std::string failure;  ///< why it could not be regulated in this pass
+};
+
+SettingOutcome regulate_setting(ActionModel& model, const RegulationSetting& setting,
+                                RestState& rest, int pass) {
+  SettingOutcome outcome;
+  const Adjuster adjuster = model.adjusters[model.adjuster_index(setting.name)];
+  SettingProbe probe(model, setting, rest);
+  std::string why;
+  double x0 = adjuster.value;
+  auto e0 = probe.error_at(x0, &why);
+  // Where the setting cannot be measured (a let-off button so high that the jack never
+  // trips, a drop screw so high that the repetition lever carries the hammer to the string),
+  // the technician turns the adjuster until the action shows the setting again: positions
+  // ever farther on either side, within the physical range.
+  for (double distance : kMeasurableSearchMm) {
+    if (e0) break;
+    for (double side : {1.0, -1.0}) {
+      const double x =
+          std::clamp(adjuster.value + side * distance * 1e-3, adjuster.min, adjuster.max);
+      if (x == x0) continue;
+      std::string ignored;
+      if ((e0 = probe.error_at(x, &ignored))) {
+        x0 = x;
+        break;
+      }
+    }
+  }
+  RegulationStep step{
+      pass, setting.name, x0 * 1e3, e0 ? *e0 + setting.target : std::nan(""), setting.target, 1,
+      {}};
+  if (e0 && x0 != adjuster.value) {
+    // measurable only away from where it was: move there before searching on
+    outcome.within = false;
+    model = with_adjuster(model, setting.name, x0);
+  }
+  if (!e0) {
+    // settings interact (e.g. let-off cannot be read while the drop screw lets the
+    // repetition lever carry the hammer): go on, and try again in the next pass
+    outcome.within = false;
+    step.note = "cannot be measured yet: " + why;
+    outcome.failure = ("setting '" + setting.name + "' cannot be measured: " + why);
+  } else if (std::abs(*e0) > setting.tolerance) {
+    outcome.within = false;
+    // aim well inside the tolerance: later settings disturb earlier ones slightly
+    const Found found = find_adjuster(probe, adjuster, setting, x0, *e0, 0.3 * setting.tolerance);
+    if (found.ok) {
+      // `rest` already is the rest state there: the probe's last measurement was taken there
+      model = with_adjuster(model, setting.name, found.adjuster_m);
+      step.adjuster_mm = found.adjuster_m * 1e3;
+      step.measured = found.error + setting.target;
+    } else {
+      step.note = found.message;
+      outcome.failure = (found.message);
+    }
+    step.evaluations = probe.evaluations();
+  }
+  outcome.step = step;
+  return outcome;
+}
+
 }  // namespace
 
 RegulationResult regulate(const ActionModel& model, const RegulationOptions& options) {
@@ -169,42 +281,30 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
   std::vector<std::string> failures;
   for (int pass = 1; pass <= options.max_passes && !result.converged; ++pass) {
     result.passes = pass;
+    // each pass starts from the rest state found afresh, as the final measurement will: the
+    // forte blow (checking) is sensitive enough that a rest state continued through many
+    // adjustments reads a few hundredths of a millimetre differently
+    if (pass > 1) rest = find_rest_state(result.model);
     failures.clear();
     bool all_within = true;
     for (const RegulationSetting& setting : model.regulation) {
-      const Adjuster& adjuster = result.model.adjusters[result.model.adjuster_index(setting.name)];
-      SettingProbe probe(result.model, setting, rest);
-      std::string why;
-      const auto e0 = probe.error_at(adjuster.value, &why);
-      RegulationStep step{pass,
-                          setting.name,
-                          adjuster.value * 1e3,
-                          e0 ? *e0 + setting.target : std::nan(""),
-                          setting.target,
-                          1,
-                          {}};
-      if (!e0) {
-        // settings interact (e.g. let-off cannot be read while the drop screw lets the
-        // repetition lever carry the hammer): go on, and try again in the next pass
-        all_within = false;
-        step.note = "cannot be measured yet: " + why;
-        failures.push_back("setting '" + setting.name + "' cannot be measured: " + why);
-      } else if (std::abs(*e0) > setting.tolerance) {
-        all_within = false;
-        // aim well inside the tolerance: later settings disturb earlier ones slightly
-        const Found found =
-            find_adjuster(probe, adjuster, setting, adjuster.value, *e0, 0.3 * setting.tolerance);
-        if (found.ok) {
-          // `rest` already is the rest state there: the probe's last measurement was taken there
-          result.model = with_adjuster(result.model, setting.name, found.adjuster_m);
-          step.adjuster_mm = found.adjuster_m * 1e3;
-          step.measured = found.error + setting.target;
-        } else {
-          step.note = found.message;
-          failures.push_back(found.message);
-        }
-        step.evaluations = probe.evaluations();
+      SettingOutcome outcome = regulate_setting(result.model, setting, rest, pass);
+      if (!outcome.failure.empty() && !setting.clear_adjuster.empty()) {
+        // the technician's way out of a deadlock between two settings (e.g. the drop screw so
+        // high that the lever carries the hammer whatever the let-off button): move the other
+        // adjuster out of the way and try once more; that setting follows later in the pass
+        result.model = with_adjuster(result.model, setting.clear_adjuster, setting.clear_position);
+        rest = rest_state_near(result.model, rest);
+        const std::string first = outcome.failure;
+        outcome = regulate_setting(result.model, setting, rest, pass);
+        outcome.within = false;
+        outcome.step.note = "first " + first + "; then with '" + setting.clear_adjuster + "' at " +
+                            format_number(setting.clear_position * 1e3) + " mm" +
+                            (outcome.step.note.empty() ? "" : ": " + outcome.step.note);
       }
+      if (!outcome.within) all_within = false;
+      if (!outcome.failure.empty()) failures.push_back(outcome.failure);
+      const RegulationStep& step = outcome.step;
       result.steps.push_back(step);
       if (options.on_step && !options.on_step(step)) {
         result.message = "cancelled";

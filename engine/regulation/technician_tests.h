@@ -13,7 +13,8 @@ namespace pat {
 double contact_gap(const ActionModel& model, int contact, const DofVector& q);
 
 struct SlowPressReading {
-  double let_off_gap = 0.0;           ///< m, hammer–string distance when the jack escapes
+  double let_off_gap = 0.0;           ///< m, hammer–string distance at let-off: the closest
+                                      ///< approach while the jack carries the hammer
   double drop_gap = 0.0;              ///< m, hammer–string distance at the end, key held down
   double damper_lift_fraction = 0.0;  ///< hammer travel fraction when the damper contact starts
   bool checked_at_end = false;        ///< the backcheck holds the hammer at the end

@@ -198,6 +198,24 @@ TEST(PresetErrors, UnknownAdjusterContact) {
   expect_preset_error(preset, {"adjusters[0]", "moves[0]", "contact", "unknown contact"});
 }
 
+// A regulation setting's `clear_first` names another adjuster and a position inside its range.
+TEST(PresetErrors, ClearFirstNamesAnotherAdjusterWithinItsRange) {
+  json preset = preset_json("grand");
+  json* let_off = nullptr;
+  for (json& setting : preset["regulation"])
+    if (setting["name"] == "let_off") let_off = &setting;
+  ASSERT_TRUE(let_off && let_off->contains("clear_first"));
+  json bad_name = preset;
+  for (json& setting : bad_name["regulation"])
+    if (setting["name"] == "let_off") setting["clear_first"]["adjuster"] = "no_such_screw";
+  expect_preset_error(bad_name, {"let_off", "clear_first.adjuster", "no_such_screw"});
+  json out_of_range = preset;
+  for (json& setting : out_of_range["regulation"])
+    if (setting["name"] == "let_off") setting["clear_first"]["position_mm"] = 9.0;
+  expect_preset_error(out_of_range, {"let_off", "clear_first.position_mm",
+                                     "outside the adjuster's physical range"});
+}
+
 TEST(PresetErrors, MissingFileNamesThePath) {
   const std::string path = preset_path("no_such_preset");
   try {
