@@ -11,5 +11,8 @@ int run_simulate(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 int run_regulate(const std::vector<std::string>& args);
 int run_deregulate(const std::vector<std::string>& args);
+int run_synth(const std::vector<std::string>& args);
+int run_diagnose(const std::vector<std::string>& args);
+int run_bench_diagnose(const std::vector<std::string>& args);
 
 }  // namespace pat::app
