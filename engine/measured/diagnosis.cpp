@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -231,10 +232,33 @@ void fit_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std
     w.fit.note = "the model fails to run over the whole range of this effect";
     return;
   }
-  // on every trial: the candidate's value
+  // on every trial: the candidate's value. A second basin of the scan (a point not next to the
+  // best one whose cost is within kSecondBasinRatio of it) gets its own local fit: the cost of
+  // a contact-switching simulation has local minima.
   double all_cost = inf;
   w.all_s = levenberg_marquardt(ev, base, p, parabola_start(w, all, best_k), all, all_cost,
                                 kMaxLmIterations);
+  int second_k = -1;
+  double second = inf;
+  for (int k = 0; k < kScanPoints; ++k) {
+    if (std::abs(k - best_k) < 2) continue;
+    bool local_min = true;
+    double c = 0.0;
+    for (std::size_t j : all) c += w.scan_rss[k][j];
+    for (int nb : {k - 1, k + 1}) {
+      if (nb < 0 || nb >= kScanPoints) continue;
+      double cn = 0.0;
+      for (std::size_t j : all) cn += w.scan_rss[nb][j];
+      local_min = local_min && c <= cn;
+    }
+    if (local_min && c < second) second = c, second_k = k;
+  }
+  if (second_k >= 0 && second < kSecondBasinRatio * best) {
+    double other_cost = inf;
+    const double other = levenberg_marquardt(ev, base, p, parabola_start(w, all, second_k), all,
+                                             other_cost, kMaxLmIterations);
+    if (other_cost < all_cost) w.all_s = other, all_cost = other_cost;
+  }
   w.fit.value = p.value(w.all_s);
   double training_cost = 0.0;
   std::size_t training_samples = 0;

@@ -34,8 +34,9 @@
 namespace pat {
 
 inline constexpr int kScanPoints = 9;
-inline constexpr int kMaxLmIterations = 4;   // the fit on every trial
-inline constexpr int kFoldLmIterations = 2;  // each leave-one-out refit, from that fit
+inline constexpr int kMaxLmIterations = 4;        // the fit on every trial
+inline constexpr int kFoldLmIterations = 2;       // each leave-one-out refit, from that fit
+inline constexpr double kSecondBasinRatio = 2.0;  // a second scan minimum this close is fitted too
 inline constexpr double kMaxExplainedRatio = 0.7;
 inline constexpr double kMinBicGain = 10.0;  // "very strong" evidence (Kass & Raftery)
 inline constexpr double kCorrelationTimeS = 5e-3;

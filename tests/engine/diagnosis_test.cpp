@@ -142,14 +142,14 @@ TEST(Diagnosis, MissingInputWithoutAStrikeIsNamed) {
   }
 }
 
-// The null test: nothing hidden → no cause, for several seeds (a reduced library of the
-// candidates most able to fit noise: one per family).
+// The null test: nothing hidden → no cause, for several seeds (a reduced library here: a factor
+// and a geometric offset; the whole library runs in bench-diagnose).
 class NullDiagnosis : public ::testing::TestWithParam<int> {};
 TEST_P(NullDiagnosis, NamesNoCause) {
   const ActionModel grand = test::shipped("grand");
-  const HiddenEffectOutcome o = run_hidden_effect_case(
-      grand, std::nullopt, static_cast<unsigned long long>(GetParam()),
-      {"joint_friction.hammer", "repetition_spring", "regulation_offset.let_off"});
+  const HiddenEffectOutcome o =
+      run_hidden_effect_case(grand, std::nullopt, static_cast<unsigned long long>(GetParam()),
+                             {"joint_friction.hammer", "regulation_offset.let_off"});
   EXPECT_FALSE(o.diagnosis.cause.has_value())
       << "false discovery: " << o.diagnosis.cause->name << " = " << o.diagnosis.cause->value;
   // the baseline error is the noise (0.3°) up to its sampling spread
@@ -157,8 +157,9 @@ TEST_P(NullDiagnosis, NamesNoCause) {
 }
 INSTANTIATE_TEST_SUITE_P(Seeds, NullDiagnosis, ::testing::Values(101, 102, 103));
 
-// Hidden effects: one seed per family here, with the hidden family and two rivals as
-// candidates; the full library and several seeds per family run in bench-diagnose.
+// Hidden effects: one seed per family here, with the hidden family and its closest rival as
+// candidates (to keep the suite's time reasonable); the full library and several seeds per
+// family run in `pianoaction bench-diagnose`.
 struct HiddenCase {
   std::string effect;
   std::vector<std::string> rivals;
@@ -185,16 +186,12 @@ TEST_P(HiddenEffect, IsNamedEstimatedAndGains) {
 INSTANTIATE_TEST_SUITE_P(
     Families, HiddenEffect,
     ::testing::Values(
-        HiddenCase{"shank_flex", {"felt_stiffness.hammer_head_string", "backcheck_compliance"}, 1},
-        HiddenCase{"backcheck_compliance", {"regulation_offset.checking", "shank_flex"}, 1},
-        HiddenCase{"joint_friction.hammer", {"joint_friction.key", "repetition_spring"}, 1},
-        HiddenCase{"repetition_spring", {"joint_friction.hammer", "regulation_offset.drop"}, 1},
-        HiddenCase{"felt_stiffness.hammer_head_string",
-                   {"shank_flex", "regulation_offset.hammer_blow"},
-                   1},
-        HiddenCase{"regulation_offset.let_off",
-                   {"regulation_offset.drop", "felt_stiffness.hammer_knuckle_jack"},
-                   1}),
+        HiddenCase{"shank_flex", {"felt_stiffness.hammer_head_string"}, 1},
+        HiddenCase{"backcheck_compliance", {"regulation_offset.checking"}, 1},
+        HiddenCase{"joint_friction.hammer", {"joint_friction.key"}, 1},
+        HiddenCase{"repetition_spring", {"joint_friction.hammer"}, 1},
+        HiddenCase{"felt_stiffness.hammer_head_string", {"regulation_offset.hammer_blow"}, 1},
+        HiddenCase{"regulation_offset.let_off", {"regulation_offset.drop"}, 1}),
     [](const ::testing::TestParamInfo<HiddenCase>& info) {
       std::string name = info.param.effect;
       std::replace(name.begin(), name.end(), '.', '_');

@@ -173,7 +173,7 @@ TEST(Effects, EveryCandidateRunsAStrikeAtItsTestValue) {
                                ? (info.unit == "mm" ? info.neutral + 0.3 : info.neutral * 1.5)
                                : std::sqrt(info.min * info.max);
       const ActionModel m = with_effect(model, {info.name, value});
-      const SimulationResult r = test::run(m, "force:pulse:20:60", 0.15);
+      const SimulationResult r = test::run(m, "force:pulse:20:60", 0.06);  // impact ≈ 25 ms
       EXPECT_EQ(r.status, "ok") << kind << " " << info.name << ": " << r.stop_cause;
       EXPECT_FALSE(test::events_of(r, "impact").empty()) << kind << " " << info.name;
     }
