@@ -173,7 +173,9 @@ struct CandidateWork {
   std::vector<double> held_out_rss;           // per trial
   std::vector<std::vector<double>> scan_rss;  // [scan point][trial], inf when failed
   std::vector<double> scan_s;
-  double all_s = 0.0;  // fitted on every trial
+  double all_s = 0.0;          // fitted on every trial
+  double scan_best_rss = 0.0;  // lowest scan cost over every trial
+  bool refined = false;
 };
 
 /// Start of the local fit: the vertex of the parabola through the best scan point and its two
@@ -192,8 +194,9 @@ double parabola_start(const CandidateWork& w, const std::vector<std::size_t>& se
   return w.scan_s[k] + std::clamp(offset, -h, h);
 }
 
-void fit_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std::size_t>& samples,
-                   CandidateWork& w) {
+/// The scan of a candidate over its physical range (every trial at every scan point).
+void scan_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std::size_t>& samples,
+                    CandidateWork& w) {
   const std::size_t trial_count = samples.size();
   const Parameter& p = w.param;
   const double inf = std::numeric_limits<double>::infinity();
@@ -216,6 +219,20 @@ void fit_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std
       }
     w.scan_rss.push_back(rss);
   }
+  w.scan_best_rss = inf;
+  for (const auto& rss : w.scan_rss) {
+    double c = 0.0;
+    for (double r : rss) c += r;
+    w.scan_best_rss = std::min(w.scan_best_rss, c);
+  }
+}
+
+/// The local fits and the leave-one-out validation of a scanned candidate.
+void refine_candidate(Evaluator& ev, const ActionModel& base,
+                      const std::vector<std::size_t>& samples, CandidateWork& w) {
+  const std::size_t trial_count = samples.size();
+  const Parameter& p = w.param;
+  const double inf = std::numeric_limits<double>::infinity();
   const bool held_out = trial_count > 1;
   w.held_out_rss.assign(trial_count, inf);
   std::vector<std::size_t> all(trial_count);
@@ -360,9 +377,26 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   }
   std::vector<std::size_t> samples;
   for (const PreparedTrial& p : prepared) samples.push_back(p.data.t.size());
+  // screening: every candidate is scanned; the kRefinedCandidates with the lowest scan cost are
+  // fitted locally and validated (the others cannot win: their best scan point is already
+  // worse than the refined ones' starting points)
   run_parallel(
-      work.size(), [&](std::size_t c) { fit_candidate(ev, model, samples, work[c]); },
+      work.size(), [&](std::size_t c) { scan_candidate(ev, model, samples, work[c]); },
       options.progress, options.threads);
+  std::vector<std::size_t> order(work.size());
+  for (std::size_t c = 0; c < work.size(); ++c) order[c] = c;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return work[a].scan_best_rss < work[b].scan_best_rss;
+  });
+  const std::size_t refined_count = std::min<std::size_t>(kRefinedCandidates, work.size());
+  run_parallel(
+      refined_count,
+      [&](std::size_t i) {
+        CandidateWork& w = work[order[i]];
+        w.refined = true;
+        refine_candidate(ev, model, samples, w);
+      },
+      nullptr, options.threads);
 
   // compare on held-out trials
   double sample_interval = 0.0;
@@ -374,6 +408,23 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     CandidateFit& f = w.fit;
     f.effect = w.param.info.name;
     f.unit = w.param.info.unit;
+    if (!w.refined) {
+      f.completed = std::isfinite(w.scan_best_rss);
+      f.validated_rms_deg = std::numeric_limits<double>::infinity();
+      f.training_rms_deg = std::sqrt(w.scan_best_rss / n);
+      f.note = "screened out: its best scan point (rms " + fixed(f.training_rms_deg) +
+               " deg) is worse than the " + std::to_string(kRefinedCandidates) +
+               " candidates fitted and validated";
+      f.delta_bic = std::numeric_limits<double>::quiet_NaN();
+      int k = 0;
+      for (int i = 0; i < kScanPoints; ++i) {
+        double c = 0.0;
+        for (double r : w.scan_rss[i]) c += r;
+        if (c <= w.scan_best_rss) k = i;
+      }
+      f.value = w.param.value(w.scan_s[k]);
+      continue;
+    }
     double held = 0.0;
     for (double r : w.held_out_rss) held += r;
     if (!f.completed || !std::isfinite(held)) {
@@ -387,7 +438,9 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     f.delta_bic = n_eff * std::log(base_ms / ms) - std::log(n_eff);
   }
   std::sort(work.begin(), work.end(), [](const CandidateWork& a, const CandidateWork& b) {
-    return a.fit.validated_rms_deg < b.fit.validated_rms_deg;
+    if (a.refined != b.refined) return a.refined;
+    if (a.refined) return a.fit.validated_rms_deg < b.fit.validated_rms_deg;
+    return a.scan_best_rss < b.scan_best_rss;
   });
   for (const CandidateWork& w : work) d.ranking.push_back(w.fit);
 

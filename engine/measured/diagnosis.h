@@ -10,6 +10,9 @@
 // (forward-difference Jacobian of the residual vector) refines it from the vertex of the
 // parabola through the best scan point and its neighbours.
 //
+// Screening: every candidate is scanned; only the kRefinedCandidates with the lowest scan cost
+// are fitted locally and validated (the others are listed with their best scan point).
+//
 // Validation: leave one trial out (refit on the others, starting from the fit on every trial,
 // and evaluate the held-out one) for every trial; the validated error is the RMS of the held-out
 // residuals. With one trial there is no held-out data and the training error is used (said so in
@@ -34,8 +37,9 @@
 namespace pat {
 
 inline constexpr int kScanPoints = 9;
-inline constexpr int kMaxLmIterations = 4;        // the fit on every trial
-inline constexpr int kFoldLmIterations = 2;       // each leave-one-out refit, from that fit
+inline constexpr std::size_t kRefinedCandidates = 4;  // fitted and validated after the scan
+inline constexpr int kMaxLmIterations = 4;            // the fit on every trial
+inline constexpr int kFoldLmIterations = 2;           // each leave-one-out refit, from that fit
 inline constexpr double kSecondBasinRatio = 2.0;  // a second scan minimum this close is fitted too
 inline constexpr double kMaxExplainedRatio = 0.7;
 inline constexpr double kMinBicGain = 10.0;  // "very strong" evidence (Kass & Raftery)
@@ -44,7 +48,7 @@ inline constexpr double kCorrelationTimeS = 5e-3;
 struct DiagnoseOptions {
   std::vector<std::string> candidates;   ///< effect names; empty: candidate_effects(model)
   unsigned threads = 0;                  ///< 0: every core
-  ProgressReporter* progress = nullptr;  ///< one item per candidate (candidate_effects size)
+  ProgressReporter* progress = nullptr;  ///< one item per candidate scanned
 };
 
 struct CandidateFit {
