@@ -446,10 +446,17 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
 
   d.extended_rms_deg = d.baseline_rms_deg;
   const CandidateWork& best = work.front();
+  // (3) a value pinned at a limit of the physical range is not identified: the family may point
+  //     the right way, but the effect as modelled does not explain the data
+  const double margin = 0.01 * (best.param.hi - best.param.lo);
+  const bool at_limit =
+      best.all_s <= best.param.lo + margin || best.all_s >= best.param.hi - margin;
   const bool explains =
-      best.fit.completed &&
+      best.fit.completed && !at_limit &&
       best.fit.validated_rms_deg * best.fit.validated_rms_deg < kMaxExplainedRatio * base_ms &&
       best.fit.delta_bic > kMinBicGain;
+  if (at_limit && best.fit.completed)
+    d.ranking.front().note = "its fitted value is at a limit of the physical range: not named";
   if (explains) {
     const double s = best.all_s;
     d.cause = Effect{best.param.info.name, best.param.value(s)};

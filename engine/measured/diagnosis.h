@@ -22,7 +22,8 @@
 //   (1) its validated mean square is below kMaxExplainedRatio × the baseline's, and
 //   (2) ΔBIC = N_eff ln(MS_base / MS_cand) − ln N_eff > kMinBicGain, with N_eff the samples
 //       divided by the residual correlation length (kCorrelationTimeS): residuals of sampled
-//       trajectories are autocorrelated, which makes the raw N too optimistic.
+//       trajectories are autocorrelated, which makes the raw N too optimistic, and
+//   (3) its fitted value is not at a limit of its physical range (then it is not identified).
 #pragma once
 
 #include <optional>
