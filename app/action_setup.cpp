@@ -1,5 +1,6 @@
 #include "action_setup.h"
 
+#include "model/effects.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
 
@@ -9,6 +10,8 @@ ActionModel load_configured_action(const CommandLine& cl) {
   ActionModel model = load_action(cl.value("--action"));
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
   for (const std::string& part : cl.values("--without")) model = without_part(model, part);
+  for (const std::string& effect : cl.values("--effect"))
+    model = with_effect(model, parse_effect(effect));
   return model;
 }
 

@@ -7,7 +7,8 @@
 namespace pat::app {
 
 /// Loads --action (grand, upright or a preset file) and applies --set NAME=MM and
-/// --without PART. Throws InputError naming the option or the file.
+/// --without PART, then every --effect NAME=VALUE (model/effects.h). Throws InputError naming the
+/// option or the file.
 ActionModel load_configured_action(const CommandLine& cl);
 
 }  // namespace pat::app

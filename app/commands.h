@@ -23,5 +23,8 @@ int run_sweep(const std::vector<std::string>& args);
 int run_study(const std::vector<std::string>& args);
 int run_study_compare(const std::vector<std::string>& args);
 int run_practice(const std::vector<std::string>& args);
+int run_synth(const std::vector<std::string>& args);
+int run_diagnose(const std::vector<std::string>& args);
+int run_bench_diagnose(const std::vector<std::string>& args);
 
 }  // namespace pat::app

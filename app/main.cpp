@@ -19,8 +19,8 @@ usage:
   pianoaction [--action grand|upright|FILE] [--screenshot PNG]     the trainer window
   pianoaction simulate  --action grand|upright|FILE --input SPEC --duration S
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
-                        [--without PART]... [--out CSV] [--plot FILE] [--sample-interval S]
-                        [--json]
+                        [--without PART]... [--effect NAME=VALUE]... [--out CSV] [--plot FILE]
+                        [--sample-interval S] [--json]
   pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--json]
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
@@ -42,10 +42,20 @@ usage:
                         [--json]
   pianoaction practice check (--action A --seed N [--level 1|2] | --exercise FILE)
                         --answer SETTING:more|less[,SETTING:more|less] [--reveal] [--json]
+  pianoaction synth     --action A --input SPEC --duration S [--effect NAME=VALUE]...
+                        [--noise-deg X] [--fps N] [--time-offset-ms X] [--angle-offset-deg X]
+                        [--seed N] --out CSV
+  pianoaction diagnose  --action A --measured CSV... [--candidate NAME]... [--threads N]
+                        [--report DIR] [--json]
+  pianoaction bench-diagnose [--action A] [--seeds N] [--null-seeds N] [--family NAME]... [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
   motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  csv:PATH
+
+effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
+  joint_friction.JOINT=FACTOR  repetition_spring=FACTOR (grand)  butt_spring=FACTOR (upright)
+  felt_stiffness.CONTACT=FACTOR  regulation_offset.SETTING=MM
 
 --plot FILE writes the plots (key and hammer angles, hammer-string gap, finger force); the
 format comes from the extension: .png .pdf .svg, or .csv for the plotted columns.
@@ -103,6 +113,9 @@ int main(int argc, char** argv) {
     if (command == "touchweight") return pat::app::run_touchweight(args);
     if (command == "study") return pat::app::run_study(args);
     if (command == "practice") return pat::app::run_practice(args);
+    if (command == "synth") return pat::app::run_synth(args);
+    if (command == "diagnose") return pat::app::run_diagnose(args);
+    if (command == "bench-diagnose") return pat::app::run_bench_diagnose(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

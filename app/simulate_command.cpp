@@ -25,7 +25,7 @@ nlohmann::json events_json(const std::vector<SimEvent>& events) {
 int run_simulate(const std::vector<std::string>& args) {
   const CommandLine cl(args,
                        {"--action", "--input", "--duration", "--integrator", "--step", "--set",
-                        "--without", "--out", "--plot", "--sample-interval"},
+                        "--without", "--effect", "--out", "--plot", "--sample-interval"},
                        {"--json"});
   const ActionModel model = load_configured_action(cl);
   SimulationOptions options;

@@ -1,0 +1,506 @@
+#include "measured/diagnosis.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "analysis/parallel_runs.h"
+#include "core/error.h"
+#include "measured/alignment.h"
+#include "measured/input_estimate.h"
+#include "measured/model_trace.h"
+
+namespace pat {
+namespace {
+
+constexpr double kMaxShiftS = 10e-3;  // nuisance time offset searched within ±10 ms
+
+struct PreparedTrial {
+  MeasuredTrial data;
+  std::string spec;
+  bool estimated = false;
+  double model_duration_s = 0.0;
+};
+
+struct Evaluation {
+  bool ok = false;
+  double rss = 0.0;
+  std::vector<double> residual;
+};
+
+/// The rest state of a candidate model, or nothing when it cannot rest (a value that breaks
+/// the action).
+std::optional<RestState> try_rest(const ActionModel& model) {
+  try {
+    return find_rest_state(model);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+class Evaluator {
+ public:
+  explicit Evaluator(const std::vector<PreparedTrial>& trials) : trials_(trials) {}
+
+  /// Runs trial j; `rest` is the model's rest state (null: the model cannot rest).
+  Evaluation run(const ActionModel& model, const RestState* rest, std::size_t j) {
+    ++simulations;
+    Evaluation e;
+    if (!rest) return e;
+    ModelTrace trace;
+    try {
+      trace = simulate_trace(model, trials_[j].spec, trials_[j].model_duration_s, 1e-4, rest);
+    } catch (const std::exception&) {
+      return e;  // the model cannot rest or run with this value: a failed evaluation
+    }
+    if (!trace.completed) return e;
+    Alignment al = align(trials_[j].data, trace, kMaxShiftS);
+    e.ok = true;
+    e.rss = al.rss;
+    e.residual = std::move(al.residual);
+    return e;
+  }
+
+  std::atomic<int> simulations{0};
+
+ private:
+  const std::vector<PreparedTrial>& trials_;
+};
+
+/// One candidate's parameter s and its value.
+struct Parameter {
+  EffectInfo info;
+  double lo = 0.0, hi = 0.0;  // range of s
+  double value(double s) const { return info.log_scale ? std::exp(s) : s; }
+  double s_of(double v) const { return info.log_scale ? std::log(v) : v; }
+};
+
+Parameter parameter_for(const EffectInfo& info) {
+  Parameter p;
+  p.info = info;
+  p.lo = p.s_of(info.min);
+  p.hi = p.s_of(info.max);
+  return p;
+}
+
+struct SetResult {
+  bool ok = false;
+  double cost = std::numeric_limits<double>::infinity();
+  std::vector<double> residual;  // concatenated over the set
+};
+
+SetResult evaluate_set(Evaluator& ev, const ActionModel& base, const Parameter& p, double s,
+                       const std::vector<std::size_t>& set) {
+  SetResult out;
+  ActionModel model;
+  try {
+    model = with_effect(base, {p.info.name, p.value(s)});
+  } catch (const InputError&) {
+    return out;
+  }
+  const auto rest = try_rest(model);
+  out.cost = 0.0;
+  for (std::size_t j : set) {
+    Evaluation e = ev.run(model, rest ? &*rest : nullptr, j);
+    if (!e.ok) {
+      out.cost = std::numeric_limits<double>::infinity();
+      return out;
+    }
+    out.cost += e.rss;
+    out.residual.insert(out.residual.end(), e.residual.begin(), e.residual.end());
+  }
+  out.ok = true;
+  return out;
+}
+
+/// Levenberg–Marquardt on one parameter with a forward-difference Jacobian of the residual
+/// vector (a small LM of our own: for p = 1 the normal equations are scalars).
+double levenberg_marquardt(Evaluator& ev, const ActionModel& base, const Parameter& p, double s0,
+                           const std::vector<std::size_t>& set, double& cost_out,
+                           int max_iterations) {
+  const double range = p.hi - p.lo;
+  const double spacing = range / (kScanPoints - 1);  // the scan found the basin to this
+  double s = s0;
+  SetResult at = evaluate_set(ev, base, p, s, set);
+  if (!at.ok) {
+    cost_out = at.cost;
+    return s;
+  }
+  double lambda = 1e-2;
+  double h = 0.05 * spacing;
+  for (int it = 0; it < max_iterations; ++it) {
+    const double hs = s + h <= p.hi ? h : -h;
+    const SetResult shifted = evaluate_set(ev, base, p, s + hs, set);
+    if (!shifted.ok) break;
+    double g = 0.0, hess = 0.0;
+    for (std::size_t i = 0; i < at.residual.size(); ++i) {
+      const double jac = (shifted.residual[i] - at.residual[i]) / hs;
+      g += jac * at.residual[i];
+      hess += jac * jac;
+    }
+    if (hess <= 0.0) break;
+    bool improved = false;
+    double step = 0.0;
+    for (int tries = 0; tries < 3 && !improved; ++tries) {
+      step = -g / (hess * (1.0 + lambda));
+      step = std::clamp(step, -spacing, spacing);  // a trust region: the scan's spacing
+      const double s_new = std::clamp(s + step, p.lo, p.hi);
+      SetResult trial = evaluate_set(ev, base, p, s_new, set);
+      if (trial.ok && trial.cost < at.cost) {
+        s = s_new;
+        at = std::move(trial);
+        lambda = std::max(lambda / 10.0, 1e-6);
+        improved = true;
+      } else {
+        lambda *= 10.0;
+      }
+    }
+    if (!improved || std::abs(step) < 1e-3 * range) break;
+    h = std::clamp(0.5 * std::abs(step), 0.01 * spacing, 0.05 * spacing);
+  }
+  cost_out = at.cost;
+  return s;
+}
+
+struct CandidateWork {
+  Parameter param;
+  CandidateFit fit;
+  std::vector<double> held_out_rss;           // per trial
+  std::vector<std::vector<double>> scan_rss;  // [scan point][trial], inf when failed
+  std::vector<double> scan_s;
+  double all_s = 0.0;          // fitted on every trial
+  double scan_best_rss = 0.0;  // lowest scan cost over every trial
+  bool refined = false;
+};
+
+/// Start of the local fit: the vertex of the parabola through the best scan point and its two
+/// neighbours (costs summed over `set`), kept within the neighbours; the best point itself at
+/// the ends of the range or when a neighbour failed.
+double parabola_start(const CandidateWork& w, const std::vector<std::size_t>& set, int k) {
+  if (k <= 0 || k + 1 >= static_cast<int>(w.scan_s.size())) return w.scan_s[k];
+  double c[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i)
+    for (std::size_t j : set) c[i] += w.scan_rss[k - 1 + i][j];
+  if (!std::isfinite(c[0]) || !std::isfinite(c[2])) return w.scan_s[k];
+  const double h = w.scan_s[k + 1] - w.scan_s[k];
+  const double curvature = c[0] - 2.0 * c[1] + c[2];
+  if (curvature <= 0.0) return w.scan_s[k];
+  const double offset = 0.5 * h * (c[0] - c[2]) / curvature;
+  return w.scan_s[k] + std::clamp(offset, -h, h);
+}
+
+/// The scan of a candidate over its physical range (every trial at every scan point).
+void scan_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std::size_t>& samples,
+                    CandidateWork& w) {
+  const std::size_t trial_count = samples.size();
+  const Parameter& p = w.param;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < kScanPoints; ++k) {
+    const double s = p.lo + (p.hi - p.lo) * k / (kScanPoints - 1);
+    w.scan_s.push_back(s);
+    std::vector<double> rss(trial_count, inf);
+    ActionModel model;
+    bool built = true;
+    try {
+      model = with_effect(base, {p.info.name, p.value(s)});
+    } catch (const InputError&) {
+      built = false;
+    }
+    const auto rest = built ? try_rest(model) : std::nullopt;
+    if (rest)
+      for (std::size_t j = 0; j < trial_count; ++j) {
+        const Evaluation e = ev.run(model, &*rest, j);
+        if (e.ok) rss[j] = e.rss;
+      }
+    w.scan_rss.push_back(rss);
+  }
+  w.scan_best_rss = inf;
+  for (const auto& rss : w.scan_rss) {
+    double c = 0.0;
+    for (double r : rss) c += r;
+    w.scan_best_rss = std::min(w.scan_best_rss, c);
+  }
+}
+
+/// The local fits and the leave-one-out validation of a scanned candidate.
+void refine_candidate(Evaluator& ev, const ActionModel& base,
+                      const std::vector<std::size_t>& samples, CandidateWork& w) {
+  const std::size_t trial_count = samples.size();
+  const Parameter& p = w.param;
+  const double inf = std::numeric_limits<double>::infinity();
+  const bool held_out = trial_count > 1;
+  w.held_out_rss.assign(trial_count, inf);
+  std::vector<std::size_t> all(trial_count);
+  for (std::size_t j = 0; j < trial_count; ++j) all[j] = j;
+  int best_k = -1;
+  double best = inf;
+  for (int k = 0; k < kScanPoints; ++k) {
+    double c = 0.0;
+    for (std::size_t j : all) c += w.scan_rss[k][j];
+    if (c < best) best = c, best_k = k;
+  }
+  if (best_k < 0) {
+    w.fit.completed = false;
+    w.fit.note = "the model fails to run over the whole range of this effect";
+    return;
+  }
+  // on every trial: the candidate's value. A second basin of the scan (a point not next to the
+  // best one whose cost is within kSecondBasinRatio of it) gets its own local fit: the cost of
+  // a contact-switching simulation has local minima.
+  double all_cost = inf;
+  w.all_s = levenberg_marquardt(ev, base, p, parabola_start(w, all, best_k), all, all_cost,
+                                kMaxLmIterations);
+  int second_k = -1;
+  double second = inf;
+  for (int k = 0; k < kScanPoints; ++k) {
+    if (std::abs(k - best_k) < 2) continue;
+    bool local_min = true;
+    double c = 0.0;
+    for (std::size_t j : all) c += w.scan_rss[k][j];
+    for (int nb : {k - 1, k + 1}) {
+      if (nb < 0 || nb >= kScanPoints) continue;
+      double cn = 0.0;
+      for (std::size_t j : all) cn += w.scan_rss[nb][j];
+      local_min = local_min && c <= cn;
+    }
+    if (local_min && c < second) second = c, second_k = k;
+  }
+  if (second_k >= 0 && second < kSecondBasinRatio * best) {
+    double other_cost = inf;
+    const double other = levenberg_marquardt(ev, base, p, parabola_start(w, all, second_k), all,
+                                             other_cost, kMaxLmIterations);
+    if (other_cost < all_cost) w.all_s = other, all_cost = other_cost;
+  }
+  w.fit.value = p.value(w.all_s);
+  double training_cost = 0.0;
+  std::size_t training_samples = 0;
+  for (std::size_t f = 0; f < (held_out ? trial_count : 1); ++f) {
+    // leave trial f out: refit on the others from the all-trial value
+    std::vector<std::size_t> set;
+    for (std::size_t j = 0; j < trial_count; ++j)
+      if (!held_out || j != f) set.push_back(j);
+    double cost = inf;
+    const double s = held_out
+                         ? levenberg_marquardt(ev, base, p, w.all_s, set, cost, kFoldLmIterations)
+                         : w.all_s;
+    if (!held_out) cost = all_cost;
+    w.fit.fold_values.push_back(p.value(s));
+    training_cost += cost;
+    for (std::size_t j : set) training_samples += samples[j];
+    const SetResult validation = held_out ? evaluate_set(ev, base, p, s, {f}) : SetResult{};
+    w.held_out_rss[f] = held_out ? (validation.ok ? validation.cost : inf) : all_cost;
+  }
+  w.fit.training_rms_deg = std::sqrt(training_cost / static_cast<double>(training_samples));
+}
+std::string fixed(double x, int digits = 2) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(digits);
+  out << x;
+  return out.str();
+}
+
+PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
+  PreparedTrial p;
+  p.data = trial;
+  if (!trial.input_spec.empty()) {
+    p.spec = trial.input_spec;
+  } else if (!trial.key_deg.empty()) {
+    p.spec = "csv:" + trial.path;  // the measured key motion drives the model
+  } else {
+    const EstimatedInput est = estimate_key_input(model, trial);
+    p.data = est.trial;
+    p.spec = est.spec;
+    p.estimated = true;
+  }
+  p.model_duration_s = p.data.t.back() + kMaxShiftS + 2e-3;
+  return p;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& trials,
+                   const DiagnoseOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (trials.empty()) throw InputError("diagnose needs at least one measured file");
+  Diagnosis d;
+  d.action = model.kind;
+  std::vector<PreparedTrial> prepared;
+  for (const MeasuredTrial& t : trials) prepared.push_back(prepare(model, t));
+  const std::size_t n_trials = prepared.size();
+  d.held_out = n_trials > 1;
+  Evaluator ev(prepared);
+
+  // baseline: the model as it is
+  std::size_t total_samples = 0;
+  double base_rss = 0.0, noise2 = 0.0;
+  std::vector<double> base_trial_rss(n_trials);
+  const RestState base_rest = find_rest_state(model);
+  for (std::size_t j = 0; j < n_trials; ++j) {
+    TrialReport r;
+    r.path = prepared[j].data.path;
+    r.data = prepared[j].data;
+    r.input_spec = prepared[j].spec;
+    r.input_estimated = prepared[j].estimated;
+    r.baseline =
+        simulate_trace(model, prepared[j].spec, prepared[j].model_duration_s, 1e-4, &base_rest);
+    if (!r.baseline.completed)
+      throw InputError(r.path + ": the model stops under the input '" + r.input_spec +
+                       "': " + r.baseline.stop_cause);
+    r.baseline_alignment = align(prepared[j].data, r.baseline, kMaxShiftS);
+    r.noise_deg = estimate_noise(prepared[j].data.hammer_deg);
+    r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
+    r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
+                                         r.measured_events, r.noise_deg);
+    base_trial_rss[j] = r.baseline_alignment.rss;
+    base_rss += r.baseline_alignment.rss;
+    total_samples += prepared[j].data.t.size();
+    noise2 += r.noise_deg * r.noise_deg;
+    d.trials.push_back(std::move(r));
+  }
+  d.noise_deg = std::sqrt(noise2 / static_cast<double>(n_trials));
+  const double n = static_cast<double>(total_samples);
+  d.baseline_rms_deg = std::sqrt(base_rss / n);
+
+  // candidates, fitted in parallel
+  std::vector<CandidateWork> work;
+  if (options.candidates.empty()) {
+    for (const EffectInfo& info : candidate_effects(model)) work.push_back({parameter_for(info)});
+  } else {
+    for (const std::string& name : options.candidates)
+      work.push_back({parameter_for(describe_effect(model, name))});
+  }
+  std::vector<std::size_t> samples;
+  for (const PreparedTrial& p : prepared) samples.push_back(p.data.t.size());
+  // screening: every candidate is scanned; the kRefinedCandidates with the lowest scan cost are
+  // fitted locally and validated (the others cannot win: their best scan point is already
+  // worse than the refined ones' starting points)
+  run_parallel(
+      work.size(), [&](std::size_t c) { scan_candidate(ev, model, samples, work[c]); },
+      options.progress, options.threads);
+  std::vector<std::size_t> order(work.size());
+  for (std::size_t c = 0; c < work.size(); ++c) order[c] = c;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return work[a].scan_best_rss < work[b].scan_best_rss;
+  });
+  const std::size_t refined_count = std::min<std::size_t>(kRefinedCandidates, work.size());
+  run_parallel(
+      refined_count,
+      [&](std::size_t i) {
+        CandidateWork& w = work[order[i]];
+        w.refined = true;
+        refine_candidate(ev, model, samples, w);
+      },
+      nullptr, options.threads);
+
+  // compare on held-out trials
+  double sample_interval = 0.0;
+  for (const PreparedTrial& p : prepared) sample_interval += p.data.sample_interval_s();
+  sample_interval /= static_cast<double>(n_trials);
+  const double n_eff = std::max(2.0, n * sample_interval / kCorrelationTimeS);
+  const double base_ms = base_rss / n;
+  for (CandidateWork& w : work) {
+    CandidateFit& f = w.fit;
+    f.effect = w.param.info.name;
+    f.unit = w.param.info.unit;
+    if (!w.refined) {
+      f.completed = std::isfinite(w.scan_best_rss);
+      f.validated_rms_deg = std::numeric_limits<double>::infinity();
+      f.training_rms_deg = std::sqrt(w.scan_best_rss / n);
+      f.note = "screened out: its best scan point (rms " + fixed(f.training_rms_deg) +
+               " deg) is worse than the " + std::to_string(kRefinedCandidates) +
+               " candidates fitted and validated";
+      f.delta_bic = std::numeric_limits<double>::quiet_NaN();
+      int k = 0;
+      for (int i = 0; i < kScanPoints; ++i) {
+        double c = 0.0;
+        for (double r : w.scan_rss[i]) c += r;
+        if (c <= w.scan_best_rss) k = i;
+      }
+      f.value = w.param.value(w.scan_s[k]);
+      continue;
+    }
+    double held = 0.0;
+    for (double r : w.held_out_rss) held += r;
+    if (!f.completed || !std::isfinite(held)) {
+      f.completed = false;
+      if (f.note.empty()) f.note = "the model failed on a held-out trial at the fitted value";
+      f.validated_rms_deg = std::numeric_limits<double>::infinity();
+      continue;
+    }
+    const double ms = held / n;
+    f.validated_rms_deg = std::sqrt(ms);
+    f.delta_bic = n_eff * std::log(base_ms / ms) - std::log(n_eff);
+  }
+  std::sort(work.begin(), work.end(), [](const CandidateWork& a, const CandidateWork& b) {
+    if (a.refined != b.refined) return a.refined;
+    if (a.refined) return a.fit.validated_rms_deg < b.fit.validated_rms_deg;
+    return a.scan_best_rss < b.scan_best_rss;
+  });
+  for (const CandidateWork& w : work) d.ranking.push_back(w.fit);
+
+  d.extended_rms_deg = d.baseline_rms_deg;
+  const CandidateWork& best = work.front();
+  // (3) a value pinned at a limit of the physical range is not identified: the family may point
+  //     the right way, but the effect as modelled does not explain the data
+  const double margin = 0.01 * (best.param.hi - best.param.lo);
+  const bool at_limit =
+      best.all_s <= best.param.lo + margin || best.all_s >= best.param.hi - margin;
+  const bool explains =
+      best.fit.completed && !at_limit &&
+      best.fit.validated_rms_deg * best.fit.validated_rms_deg < kMaxExplainedRatio * base_ms &&
+      best.fit.delta_bic > kMinBicGain;
+  if (at_limit && best.fit.completed)
+    d.ranking.front().note = "its fitted value is at a limit of the physical range: not named";
+  if (explains) {
+    const double s = best.all_s;
+    d.cause = Effect{best.param.info.name, best.param.value(s)};
+    d.cause_unit = best.param.info.unit;
+    d.ranking.front().value = d.cause->value;
+    d.extended_rms_deg = best.fit.validated_rms_deg;
+    const ActionModel extended = with_effect(model, *d.cause);
+    const RestState extended_rest = find_rest_state(extended);
+    for (std::size_t j = 0; j < n_trials; ++j) {
+      d.trials[j].extended = simulate_trace(extended, prepared[j].spec,
+                                            prepared[j].model_duration_s, 1e-4, &extended_rest);
+      d.trials[j].extended_alignment = align(prepared[j].data, d.trials[j].extended, kMaxShiftS);
+    }
+  }
+  d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;
+
+  // in words: the worst phases first, then the features
+  struct Line {
+    double weight;
+    std::string text;
+  };
+  std::vector<Line> lines;
+  for (const TrialReport& r : d.trials) {
+    for (const PhaseResidual& p : r.discrepancies.phases) {
+      std::string text = r.path + ": " + p.phase + ": residual rms " + fixed(p.rms_deg) +
+                         " deg over " + std::to_string(p.samples) + " samples (noise " +
+                         fixed(r.noise_deg) + " deg)";
+      if (p.rms_deg > 2.0 * r.noise_deg)
+        text += std::string(", the measured hammer is on average ") +
+                (p.mean_deg > 0 ? "higher" : "lower") + " than the model by " +
+                fixed(std::abs(p.mean_deg)) + " deg";
+      else
+        text += ", within the noise";
+      lines.push_back({p.rms_deg, text});
+    }
+    for (const FeatureDiscrepancy& f : r.discrepancies.features)
+      lines.push_back({0.0, r.path + ": " + f.text});
+  }
+  std::stable_sort(lines.begin(), lines.end(),
+                   [](const Line& a, const Line& b) { return a.weight > b.weight; });
+  for (const Line& l : lines) d.discrepancies.push_back(l.text);
+  d.simulations = ev.simulations.load() + static_cast<int>(n_trials);
+  d.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return d;
+}
+
+}  // namespace pat

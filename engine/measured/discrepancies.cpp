@@ -1,0 +1,174 @@
+#include "measured/discrepancies.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include "core/types.h"
+
+namespace pat {
+namespace {
+
+std::string label(const ModelTrace& m, double t) {
+  constexpr double kNearRestDeg = 0.3;
+  const double angle = m.hammer_at(t);
+  const double rate = (m.hammer_at(t + 5e-4) - m.hammer_at(t - 5e-4)) / 1e-3;  // deg/s
+  double last_impact = -1.0, last_check = -1.0, next_escapement = 1e9;
+  for (double x : m.impact_t)
+    if (x <= t + 1e-3) last_impact = std::max(last_impact, x);
+  for (double x : m.check_t)
+    if (x <= t) last_check = std::max(last_check, x);
+  for (double x : m.escapement_t)
+    if (x > t) next_escapement = std::min(next_escapement, x);
+  if (last_impact >= 0 && t >= last_impact - 1e-3 && t <= last_impact + 2e-3) return "impact";
+  if (last_impact >= 0 && t > last_impact) {
+    const bool caught_after = last_check > last_impact;
+    if ((caught_after && t <= last_check + 10e-3) || (!caught_after && t <= last_impact + 60e-3))
+      return "rebound_and_check";
+  }
+  if (angle < kNearRestDeg) return last_impact < 0 && rate < 10.0 ? "rest" : "return";
+  if (rate > 5.0) {
+    double prev_escapement = -1.0;
+    for (double x : m.escapement_t)
+      if (x <= t) prev_escapement = std::max(prev_escapement, x);
+    return prev_escapement > last_impact && next_escapement > t ? "free_flight" : "acceleration";
+  }
+  if (rate < -5.0) return "release";
+  return last_check > last_impact && last_impact >= 0 ? "rebound_and_check" : "acceleration";
+}
+
+std::string fixed(double x, int digits = 2) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(digits);
+  out << x;
+  return out.str();
+}
+
+/// Hammer angular rate just before the peak at tp: slope over [tp − 2.5 ms, tp − 0.5 ms].
+template <typename F>
+double approach_rate(F angle_at, double tp) {
+  return (angle_at(tp - 0.5e-3) - angle_at(tp - 2.5e-3)) / 2e-3;
+}
+
+double measured_at(const MeasuredTrial& trial, double t) {
+  const auto it = std::lower_bound(trial.t.begin(), trial.t.end(), t);
+  if (it == trial.t.begin()) return trial.hammer_deg.front();
+  if (it == trial.t.end()) return trial.hammer_deg.back();
+  const std::size_t i = static_cast<std::size_t>(it - trial.t.begin());
+  const double f = (t - trial.t[i - 1]) / (trial.t[i] - trial.t[i - 1]);
+  return trial.hammer_deg[i - 1] + f * (trial.hammer_deg[i] - trial.hammer_deg[i - 1]);
+}
+
+}  // namespace
+
+TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTrace& model,
+                                      const Alignment& al, const std::vector<MeasuredEvent>& events,
+                                      double noise_deg) {
+  TrialDiscrepancies out;
+  const double dt_shift = al.time_offset_s;
+  std::map<std::string, std::pair<double, double>> sums;  // Σr, Σr²
+  std::map<std::string, int> counts;
+  for (std::size_t i = 0; i < trial.t.size(); ++i) {
+    const std::string p = label(model, trial.t[i] - dt_shift);
+    out.phase_of_sample.push_back(p);
+    sums[p].first += al.residual[i];
+    sums[p].second += al.residual[i] * al.residual[i];
+    ++counts[p];
+  }
+  for (const std::string& p : phase_names()) {
+    if (!counts.count(p)) continue;
+    PhaseResidual r;
+    r.phase = p;
+    r.samples = counts[p];
+    r.rms_deg = std::sqrt(sums[p].second / r.samples);
+    r.mean_deg = sums[p].first / r.samples;
+    out.phases.push_back(r);
+  }
+
+  auto model_at = [&](double t) { return model.hammer_at(t - dt_shift) + al.angle_offset_deg; };
+  auto add = [&](std::string feature, std::string unit, double measured, double modelled,
+                 std::string what) {
+    FeatureDiscrepancy f{feature, unit, measured, modelled, measured - modelled, true, ""};
+    std::ostringstream text;
+    text << what << ": measured " << fixed(measured) << " " << unit << ", model " << fixed(modelled)
+         << " " << unit << " (difference " << fixed(measured - modelled) << " " << unit << ")";
+    f.text = text.str();
+    out.features.push_back(f);
+  };
+  const MeasuredEvent* impact = nullptr;
+  const MeasuredEvent* check = nullptr;
+  for (const MeasuredEvent& e : events) {
+    if (e.type == "impact" && !impact) impact = &e;
+    if (e.type == "check" && !check) check = &e;
+  }
+  if (impact && !model.impact_t.empty()) {
+    const double model_impact = model.impact_t.front() + dt_shift;
+    add("impact_time", "ms", impact->t * 1e3, model_impact * 1e3, "first impact time");
+    add("impact_velocity", "deg/s",
+        approach_rate([&](double t) { return measured_at(trial, t); }, impact->t),
+        approach_rate(model_at, model_impact), "hammer rate just before the first impact");
+  } else if (impact) {
+    out.features.push_back({"impact_time", "ms", impact->t * 1e3, 0.0, 0.0, true,
+                            "the measured hammer strikes the string at " + fixed(impact->t * 1e3) +
+                                " ms but the model never does"});
+  } else if (!model.impact_t.empty()) {
+    out.features.push_back({"impact_time", "ms", 0.0, (model.impact_t.front() + dt_shift) * 1e3,
+                            0.0, false,
+                            "the model strikes the string but no impact is seen in the data"});
+  }
+  if (!model.escapement_t.empty()) {
+    FeatureDiscrepancy f{
+        "let_off_time", "ms", 0.0, (model.escapement_t.front() + dt_shift) * 1e3, 0.0, false, ""};
+    f.text = "model let-off (escapement) at " + fixed(f.model) +
+             " ms; a hammer trace does not show let-off directly";
+    out.features.push_back(f);
+  }
+  if (check && !model.check_t.empty())
+    add("check_angle", "deg", check->angle_deg, model_at(model.check_t.front() + dt_shift),
+        "hammer angle when caught by the backcheck");
+  // settling level: the last 20 ms
+  {
+    double sm = 0, sn = 0;
+    int n = 0;
+    for (std::size_t i = 0; i < trial.t.size(); ++i)
+      if (trial.t[i] >= trial.t.back() - 20e-3) {
+        sm += trial.hammer_deg[i];
+        sn += model_at(trial.t[i]);
+        ++n;
+      }
+    if (n > 0) add("settling_level", "deg", sm / n, sn / n, "hammer level over the last 20 ms");
+  }
+  // oscillation in the residual after the impacts (rebound and check phases): a DFT scan
+  {
+    std::vector<double> t, r;
+    for (std::size_t i = 0; i < trial.t.size(); ++i)
+      if (out.phase_of_sample[i] == "rebound_and_check" || out.phase_of_sample[i] == "impact") {
+        t.push_back(trial.t[i]);
+        r.push_back(al.residual[i]);
+      }
+    if (t.size() > 20) {
+      double best = 0, best_f = 0;
+      for (double f = 10.0; f <= 500.0; f += 2.0) {
+        double c = 0, s = 0;
+        for (std::size_t i = 0; i < t.size(); ++i) {
+          c += r[i] * std::cos(2 * kPi * f * t[i]);
+          s += r[i] * std::sin(2 * kPi * f * t[i]);
+        }
+        const double amp = 2.0 * std::hypot(c, s) / static_cast<double>(t.size());
+        if (amp > best) best = amp, best_f = f;
+      }
+      out.residual_oscillation_hz = best_f;
+      out.residual_oscillation_deg = best;
+      FeatureDiscrepancy f{"residual_oscillation", "Hz", best_f, 0.0, best_f, true, ""};
+      f.text = "strongest oscillation in the residual after the impact: " + fixed(best_f, 0) +
+               " Hz, amplitude " + fixed(best) + " deg" +
+               (best > 3.0 * noise_deg ? " (above the noise)" : " (within the noise)");
+      out.features.push_back(f);
+    }
+  }
+  return out;
+}
+
+}  // namespace pat

@@ -1,0 +1,56 @@
+// What the model gets wrong on one measured trial (DESIGN.md section 4, item 1): the residual
+// of the aligned model by phase of the stroke and by feature, in numbers and in words.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "measured/alignment.h"
+#include "measured/measured_data.h"
+#include "measured/model_trace.h"
+
+namespace pat {
+
+/// The phases of a stroke, in order.
+inline const std::vector<std::string>& phase_names() {
+  static const std::vector<std::string> names{
+      "rest", "acceleration", "free_flight", "impact", "rebound_and_check", "release", "return"};
+  return names;
+}
+
+struct PhaseResidual {
+  std::string phase;
+  int samples = 0;
+  double rms_deg = 0.0;   ///< root mean square of the residual in the phase
+  double mean_deg = 0.0;  ///< its mean (measured − model): > 0 the hammer is higher than modelled
+};
+
+struct FeatureDiscrepancy {
+  std::string feature;  ///< impact_time, impact_velocity, let_off_time, check_angle, ...
+  std::string unit;
+  double measured = 0.0;
+  double model = 0.0;
+  double difference = 0.0;  ///< measured − model
+  bool measured_known = true;
+  std::string text;  ///< in words
+};
+
+struct TrialDiscrepancies {
+  std::vector<std::string> phase_of_sample;  ///< one per measured sample
+  std::vector<PhaseResidual> phases;         ///< every phase that has samples, in order
+  std::vector<FeatureDiscrepancy> features;
+  double residual_oscillation_hz = 0.0;   ///< dominant frequency of the residual after impacts
+  double residual_oscillation_deg = 0.0;  ///< its amplitude
+};
+
+/// Phases come from the aligned model (its events and motion): rest before the first motion,
+/// acceleration while the hammer rises before escapement, free flight from escapement to 1 ms
+/// before the impact, impact (−1 ms … +2 ms), rebound and check (until 10 ms after the check, or
+/// 60 ms after the impact), release while the hammer falls, return once it is within 0.3° of
+/// rest. Features compare the measured events (detect_events) with the model's.
+TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTrace& model,
+                                      const Alignment& alignment,
+                                      const std::vector<MeasuredEvent>& measured_events,
+                                      double noise_deg);
+
+}  // namespace pat
