@@ -1,6 +1,5 @@
 #include "analysis/touchweight.h"
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -11,6 +10,7 @@
 #include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "sim/simulation.h"
+#include "sim/static_equilibrium.h"
 
 namespace pat {
 namespace {
@@ -43,38 +43,7 @@ class HeldKeyBalance {
   /// row removed). Returns false when it does not converge.
   bool solve(DofVector& q) {
     q[key_] = key_angle_;
-    const int n = model_.dofs();
-    DofVector r = residual(q);
-    // 1e-7 rad: far below felt deformations (~0.1 mm on 0.1 m arms), above rounding
-    const double h = 1e-7;
-    for (int iteration = 0; iteration < 60; ++iteration) {
-      DofMatrix jacobian = DofMatrix::Identity(n, n);  // the key row stays fixed
-      for (int j = 0; j < n; ++j) {
-        if (j == key_) continue;
-        DofVector qj = q;
-        qj[j] += h;
-        jacobian.col(j) = (residual(qj) - r) / h;
-        jacobian(key_, j) = 0.0;
-      }
-      DofVector step = -Eigen::PartialPivLU<DofMatrix>(jacobian).solve(r);
-      step[key_] = 0.0;
-      if (!step.allFinite()) return false;
-      // larger Newton steps than 0.02 rad leave the region where the felt laws are smooth
-      const double largest = step.cwiseAbs().maxCoeff();
-      if (largest > 0.02) step *= 0.02 / largest;
-      double scale = 1.0;
-      DofVector q_next, r_next;
-      for (int halving = 0; halving < 30; ++halving) {
-        q_next = q + scale * step;
-        r_next = residual(q_next);
-        if (r_next.norm() < r.norm() || r_next.norm() < 1e-9) break;
-        scale *= 0.5;
-      }
-      q = q_next;
-      r = r_next;
-      if (scale * largest < 1e-11) return r.norm() < 1e-3;
-    }
-    return false;
+    return damped_newton([this](const DofVector& x) { return residual(x); }, q, key_, 60, 1e-11);
   }
 
   /// Finger force (N, downward) that holds the key at q with everything at rest.

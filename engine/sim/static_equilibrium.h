@@ -5,10 +5,20 @@
 // after every small adjuster move (continuation from the previous rest state).
 #pragma once
 
+#include <functional>
+
 #include "model/action_model.h"
 #include "sim/simulation.h"
 
 namespace pat {
+
+/// Damped Newton on residual(q) = 0 from the q given: finite-difference Jacobian (1e-7 rad),
+/// steps clipped to 0.02 rad and halved until the residual decreases. Joint `held` (−1: none)
+/// keeps its value (its Jacobian row and column are the identity, its step zero). Returns true
+/// when a step falls below `step_tolerance` (rad) with |residual| < 1e-3, false when it does not
+/// converge within `max_iterations`.
+bool damped_newton(const std::function<DofVector(const DofVector&)>& residual, DofVector& q,
+                   int held, int max_iterations, double step_tolerance);
 
 /// Newton iterations from `guess` (q̈ residual, finite-difference Jacobian, step halving).
 /// Returns true and the equilibrium in `q` when the step falls below 1e-10 rad; false when
