@@ -238,6 +238,12 @@ AnalysisEntry regulation_sensitivity() {
   return e;
 }
 
+/// A plot over time (s) of these series.
+AnalysisPlot time_plot(const QString& title, const QString& y_title,
+                       std::vector<AnalysisSeries> series) {
+  return {title, QObject::tr("time (s)"), "time_s", "s", y_title, std::move(series)};
+}
+
 /// A trace column as a plotted series (x: its time_s column).
 AnalysisSeries trace_series(const CsvTable& trace, const std::string& column, const QString& label,
                             bool points = false) {
@@ -270,12 +276,9 @@ AnalysisEntry swing() {
                       {QObject::tr("sticking angle"), number(r.stick_angle_deg), "deg"},
                       {QObject::tr("first half period"), number(r.first_half_period_s * 1e3), "ms"},
                       {QObject::tr("pin to centre of mass"), number(r.pin_to_com_m * 1e3), "mm"}};
-      result.plots.push_back({QObject::tr("Hammer swing"),
-                              QObject::tr("time (s)"),
-                              "time_s",
-                              "s",
-                              QObject::tr("angle from hanging (deg)"),
-                              {trace_series(r.trace, "swing_angle_deg", QObject::tr("angle"))}});
+      result.plots.push_back(
+          time_plot(QObject::tr("Hammer swing"), QObject::tr("angle from hanging (deg)"),
+                    {trace_series(r.trace, "swing_angle_deg", QObject::tr("angle"))}));
       return result;
     };
   };
@@ -306,19 +309,12 @@ AnalysisEntry key_fall_test() {
                       {QObject::tr("bounces"), QString::number(r.bounces), ""},
                       {QObject::tr("first rebound"), number(r.first_rebound_mm), "mm"},
                       {QObject::tr("final dip"), number(r.final_dip_mm), "mm"}};
-      result.plots.push_back({QObject::tr("Key front"),
-                              QObject::tr("time (s)"),
-                              "time_s",
-                              "s",
-                              QObject::tr("key-front dip (mm)"),
-                              {trace_series(r.trace, "key_front_dip_mm", QObject::tr("dip"))}});
       result.plots.push_back(
-          {QObject::tr("Punching force"),
-           QObject::tr("time (s)"),
-           "time_s",
-           "s",
-           QObject::tr("force (N)"),
-           {trace_series(r.trace, "punching_force_n", QObject::tr("front-rail punching"))}});
+          time_plot(QObject::tr("Key front"), QObject::tr("key-front dip (mm)"),
+                    {trace_series(r.trace, "key_front_dip_mm", QObject::tr("dip"))}));
+      result.plots.push_back(time_plot(
+          QObject::tr("Punching force"), QObject::tr("force (N)"),
+          {trace_series(r.trace, "punching_force_n", QObject::tr("front-rail punching"))}));
       return result;
     };
   };
@@ -387,12 +383,8 @@ AnalysisEntry double_blow() {
     return [model](const ProgressCallback& progress) {
       const DoubleBlowStudy r = double_blow_study(*model, DoubleBlowOptions{}, progress);
       AnalysisResult result;
-      AnalysisPlot plot{QObject::tr("Hammer angle, double blow"),
-                        QObject::tr("time (s)"),
-                        "time_s",
-                        "s",
-                        QObject::tr("hammer angle (deg)"),
-                        {}};
+      AnalysisPlot plot = time_plot(QObject::tr("Hammer angle, double blow"),
+                                    QObject::tr("hammer angle (deg)"), {});
       for (const DoubleBlowVariant& v : r.variants) {
         const QString name = QString::fromStdString(v.name);
         result.table.push_back({name + QObject::tr(": return to rest"),
