@@ -101,9 +101,9 @@ void ActionDynamics::update_positions(const DofVector& q) {
     kk.sin = std::sin(kk.angle);
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    distances_[c] = contact_distance(contacts_[c]);
-    touching_[c] = patch_at(distances_[c], place(contacts_[c].body_a, contacts_[c].center_a),
-                            contacts_[c].radius_a, patches_[c]);
+    Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
+    distances_[c] = contact_distance(contacts_[c], center_a);
+    touching_[c] = patch_at(distances_[c], center_a, contacts_[c].radius_a, patches_[c]);
   }
   positions_q_ = q;
   positions_valid_ = true;
@@ -134,8 +134,8 @@ Vec2 ActionDynamics::transform(int body, const Vec2& rest_point) const {
   return place(body, rest_point - bodies_[body].pivot);
 }
 
-ContactDistance ActionDynamics::contact_distance(const ContactConstants& c) const {
-  const Vec2 center_a = place(c.body_a, c.center_a);
+ContactDistance ActionDynamics::contact_distance(const ContactConstants& c, Vec2& center_a) const {
+  center_a = place(c.body_a, c.center_a);
   if (!c.segment)
     return circle_circle_distance(center_a, c.radius_a, place(c.body_b, c.center_b), c.radius_b);
   if (c.body_b < 0)

@@ -161,8 +161,9 @@ class ActionDynamics : public OdeSystem {
                 std::vector<ContactReading>* readings, std::vector<double>* tensions);
   /// q̈ of every joint from mass_ and forces_ (prescribed key included).
   void solve_accelerations(double t, DofVector& acceleration);
-  /// Signed distance and normal of a contact at the current positions.
-  ContactDistance contact_distance(const ContactConstants& contact) const;
+  /// Signed distance and normal of a contact at the current positions; `center_a` receives the
+  /// world position of A's circle (the patch needs it too).
+  ContactDistance contact_distance(const ContactConstants& contact, Vec2& center_a) const;
   DofMatrix assembled_mass() const;
   /// M_ij of the assembled (lower-triangle) mass matrix.
   double mass_entry(int i, int j) const { return i >= j ? mass_(i, j) : mass_(j, i); }
