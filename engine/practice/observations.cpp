@@ -117,15 +117,11 @@ std::vector<Observation> slow_press_test(const ActionModel& model, const RestSta
   return out;
 }
 
-/// Duration of the forte blow with the key held (s): strike, rebound and check settle in it.
-constexpr double kForteHoldSeconds = 0.3;
-
 std::vector<Observation> forte_blow_test(const ActionModel& model, const RestState& rest,
                                          ProgressReporter* progress) {
   const ActionLandmarks& marks = model.landmarks;
-  SimulationOptions options;
-  options.integrator = "w2";
-  options.sample_interval_s = 0.0;
+  // the technician's forte blow (technician_tests.h): the same steps read the same catch
+  const SimulationOptions options = forte_blow_options();
   std::shared_ptr<const KeyInput> input = parse_input_spec(
       "force:const:" + std::to_string(kForteBlowNewtons), input_context(model, rest));
   Simulator sim(borrow(model), input, options, &rest);

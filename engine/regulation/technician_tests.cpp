@@ -42,6 +42,17 @@ double at_crossing(double before, double after, double gap_before, double gap_af
   return before + s * (after - before);
 }
 
+/// How far below its closest carried approach to the string the hammer must rest at the end of
+/// the slow press, the let-off button having touched the jack toe, to count as escaped (m): four
+/// times the 0.05 mm regulation tolerance, and well inside the 1.5 mm the hammer falls from
+/// let-off to drop.
+constexpr double kFallBack = 0.2e-3;
+/// How far the hammer must have fallen from its closest carried approach for a let-off-only
+/// press to stop early (m): two thirds of the 1.5 mm fall from let-off to drop, five times the
+/// knuckle's bounce as the jack takes over from a repetition lever stopped by its drop screw
+/// (0.2 mm, measured on the shipped grand).
+constexpr double kClearFall = 1.0e-3;
+
 }  // namespace
 
 double contact_gap(const ActionModel& model, int contact_index, const DofVector& q) {
@@ -68,14 +79,13 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
 
   SlowPressReading reading;
-  bool escaped = false, damper_lifted = damper_contact < 0;
+  bool damper_lifted = damper_contact < 0;
   bool letoff_touched = false, jack_carried = false;
   // closest approach of the hammer to the string while the jack still touches the knuckle: the
   // point where the hammer stops rising and falls back (what the technician sees as let-off;
   // the contact itself opens a little later, once the knuckle has slid off the jack's corner)
   double closest_carried_gap = std::numeric_limits<double>::infinity();
   double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_escapement = gap_of(marks.escapement_contact);
   double previous_damper = damper_contact >= 0 ? gap_of(damper_contact) : 0.0;
   if (!damper_lifted && previous_damper <= 0.0)
     throw std::runtime_error("the damper already rests on its lifter at rest");
@@ -87,13 +97,9 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     const double gap = sim.hammer_string_gap(sim.q());
     const double escapement = gap_of(marks.escapement_contact);
     if (gap_of(marks.letoff_contact) <= 0.0) letoff_touched = true;
-    if (escapement <= 0.0) jack_carried = true;
-    if (!escaped && escapement <= 0.0) closest_carried_gap = std::min(closest_carried_gap, gap);
-    // escapement: the jack leaves the knuckle (butt) once the let-off button has tipped it
-    if (!escaped && letoff_touched && previous_escapement <= 0.0 && escapement > 0.0) {
-      const double at_opening = at_crossing(previous_gap, gap, previous_escapement, escapement);
-      reading.let_off_gap = std::min(closest_carried_gap, at_opening);
-      escaped = true;
+    if (escapement <= 0.0) {
+      jack_carried = true;
+      closest_carried_gap = std::min(closest_carried_gap, gap);
     }
     if (!damper_lifted) {
       const double damper = gap_of(damper_contact);
@@ -105,9 +111,23 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
       previous_damper = damper;
     }
     previous_gap = gap;
-    previous_escapement = escapement;
-    if (escaped && damper_lifted && until_escapement) return reading;
+    // the hammer has fallen well away from the jack top that carried it: the jack has escaped
+    // and a press for the let-off alone may end here
+    if (until_escapement && damper_lifted && letoff_touched && jack_carried &&
+        gap > closest_carried_gap + kClearFall) {
+      reading.let_off_gap = closest_carried_gap;
+      return reading;
+    }
   }
+  // Escapement, as the technician sees it: the hammer, held at the bottom of the press, rests
+  // clearly below its closest carried approach to the string (it fell onto the repetition lever
+  // or the backcheck). Whether the jack-knuckle (butt) contact opens is no criterion: it opens
+  // for an instant when the knuckle bounces as the jack takes over from a repetition lever
+  // stopped by its drop screw, and it may stay closed after escapement with the knuckle resting
+  // against the side of the tipped jack (as on a real grand with the key held down).
+  const double held_gap = sim.hammer_string_gap(sim.q());
+  const bool escaped = letoff_touched && jack_carried && held_gap > closest_carried_gap + kFallBack;
+  if (escaped) reading.let_off_gap = closest_carried_gap;
   if (!escaped && !jack_carried)
     throw std::runtime_error(
         "in a slow key press the jack never lifts the hammer (it is carried by another part, "
@@ -117,13 +137,12 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "
         "button before the key bottoms)");
   if (!damper_lifted) throw std::runtime_error("in a slow key press the damper never lifts");
-  reading.drop_gap = sim.hammer_string_gap(sim.q());
+  reading.drop_gap = held_gap;
   reading.checked_at_end = gap_of(marks.check_contact) <= 0.0;
   return reading;
 }
 
-ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
-  const ActionLandmarks& marks = model.landmarks;
+SimulationOptions forte_blow_options() {
   SimulationOptions options;
   // the error-controlled CVODE rather than the fixed-step W-method: at 1e-5 s the W-method's
   // hammer position wanders by a few hundredths of a millimetre with the moment its frozen
@@ -134,6 +153,12 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   options.integrator_options.absolute_tolerance = 1e-10;
   options.integrator_options.max_step_s = 1e-3;
   options.sample_interval_s = 0.0;
+  return options;
+}
+
+ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
+  const ActionLandmarks& marks = model.landmarks;
+  const SimulationOptions options = forte_blow_options();
   const InputContext context = input_context(model, rest);
   std::shared_ptr<const KeyInput> input =
       parse_input_spec("force:const:" + std::to_string(kForteBlowNewtons), context);
@@ -143,9 +168,8 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   bool struck = false;
   double previous_gap = sim.hammer_string_gap(sim.q());
   double previous_check = gap_of(marks.check_contact);
-  const double limit = 0.3;
-  while (sim.time() < limit) {
-    if (!sim.step(limit))
+  while (sim.time() < kForteHoldSeconds) {
+    if (!sim.step(kForteHoldSeconds))
       throw std::runtime_error("the forte blow stopped at t = " + std::to_string(sim.time()) +
                                " s: " + sim.stop_cause());
     const double gap = sim.hammer_string_gap(sim.q());

@@ -40,6 +40,12 @@ struct ForteBlowReading {
 
 /// Force of the forte blow (N at the key front, held so that the key stays down).
 inline constexpr double kForteBlowNewtons = 40.0;
+/// How long the forte blow is followed, key held (s): strike, rebound and check settle in it.
+inline constexpr double kForteHoldSeconds = 0.3;
+
+/// The simulation options of the forte blow (also for other procedures that must read the same
+/// catch, e.g. the practice mode's observations).
+SimulationOptions forte_blow_options();
 
 /// A forte blow with the key held down: the hammer strikes, falls back and is caught by the
 /// backcheck; the distance is read where the catcher first meets the backcheck. Throws

@@ -70,10 +70,6 @@ void RegulationPanelTest::rows_follow_the_settings_with_their_ranges() {
 }
 
 void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
-  QSKIP(
-      "Known model limit (README, Limits): on the shipped grand the slow press cannot measure "
-      "let-off and drop (the repetition lever carries the hammer), so not every row gets a "
-      "measured value and the live measurements keep the worker busy");
   MainWindow window;
   window.show();
   window.open_action("grand");
@@ -128,9 +124,6 @@ void RegulationPanelTest::regulate_automatically_shows_steps_and_can_be_cancelle
 }
 
 void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
-  QSKIP(
-      "Known model limit (README, Limits): on the shipped grand the let-off deregulation demo "
-      "ends on its own before it can be cancelled (let-off cannot be measured there)");
   MainWindow window;
   window.show();
   window.open_action("grand");
