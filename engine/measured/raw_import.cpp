@@ -189,7 +189,7 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
                      << ", normalized = (reading - " << c.offset << ") / " << c.gain
                      << ", position by monotone cubic interpolation; position " << p_first
                      << " in (rest) = 0 deg, " << p_last
-                     << " in (string) = " << number_text(o.contact_angle_deg, 4)
+                     << " in (string) = " << number_text(o.contact_angle_deg, 5)
                      << " deg (the model's hammer rotation from rest to string contact), linear "
                         "between";
   } else {
@@ -200,7 +200,7 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
                      << number_text(rest) << " (rest, median of the first 50 ms) = 0 deg, "
                      << number_text(s.peak_reading) << " (string-contact peak at "
                      << number_text(static_cast<double>(s.peak_index) / o.rate_hz)
-                     << " s) = " << number_text(o.contact_angle_deg, 4)
+                     << " s) = " << number_text(o.contact_angle_deg, 5)
                      << " deg (the model's hammer rotation from rest to string contact)"
                      << (s.reversed ? "; reversed sensor (readings fall as the hammer rises)" : "");
   }
@@ -221,7 +221,7 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
   table.rows.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     // 1e-4 deg: far below the sensor's noise (about 0.05 deg at rest on the real files)
-    const double angle = std::round(o.contact_angle_deg * travel(r[i]) * 1e4) * 1e-4;
+    const double angle = std::round(o.contact_angle_deg * travel(r[i]) * 1e4) / 1e4;
     table.rows.push_back({static_cast<double>(i) / o.rate_hz, angle, r[i]});
   }
   if (result.strike) {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -264,6 +265,18 @@ TEST(RawImport, ContactAngleIsTheClosedFormRotationOfTheStrikePoint) {
   // a blow of 45 mm at a strike radius of about 140 mm: roughly 19 degrees
   EXPECT_GT(theta_c, 15.0);
   EXPECT_LT(theta_c, 25.0);
+}
+
+TEST(RawImport, ShippedStrikeAgreesWithThePreset) {
+  // assets/measured maps the calibration's last point (string contact) to the grand's contact
+  // angle; the strike peaks at normalized reading 1.006, 0.4 % of the travel beyond that point
+  // (felt compression), so its peak lies within 1 % of θ_c unless the preset's geometry has
+  // changed since the file was made (then run the import-raw command of its README again)
+  const MeasuredTrial trial = read_measured(
+      std::string(PAT_ASSET_DIR) + "/measured/kawai_kg3c_e4_fast_strike.csv", "grand");
+  const double theta_c = hammer_contact_angle_deg(test::shipped("grand"));
+  const double peak = *std::max_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
+  EXPECT_NEAR(peak, theta_c, 0.01 * theta_c);
 }
 
 // ---- bad input -------------------------------------------------------------------------------
