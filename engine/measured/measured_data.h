@@ -32,7 +32,8 @@ inline constexpr std::size_t kMinMeasuredSamples = 20;
 /// Reads and checks a measured file. `expected_action` ("grand"/"upright"; empty: any) must
 /// match its "# action:" line when it has one. Throws InputError naming the file and the
 /// problem: missing column, non-monotone time (with the line), non-finite value, action
-/// mismatch, fewer than kMinMeasuredSamples samples, or a sample interval too long to resolve the impact.
+/// mismatch, fewer than kMinMeasuredSamples samples, or a sample interval too long to resolve the
+/// impact.
 MeasuredTrial read_measured(const std::string& path, const std::string& expected_action);
 
 struct CsvTable;
