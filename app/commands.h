@@ -26,5 +26,6 @@ int run_practice(const std::vector<std::string>& args);
 int run_synth(const std::vector<std::string>& args);
 int run_diagnose(const std::vector<std::string>& args);
 int run_bench_diagnose(const std::vector<std::string>& args);
+int run_import_raw(const std::vector<std::string>& args);
 
 }  // namespace pat::app

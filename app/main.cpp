@@ -48,6 +48,8 @@ usage:
   pianoaction diagnose  --action A --measured CSV... [--candidate NAME]... [--threads N]
                         [--report DIR] [--json]
   pianoaction bench-diagnose [--action A] [--seeds N] [--null-seeds N] [--family NAME]... [--json]
+  pianoaction import-raw RAW --rate HZ [--column N] [--calibration CSV] [--action grand|upright]
+                        [--from S] [--to S] [--bits N] --out CSV [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -116,6 +118,7 @@ int main(int argc, char** argv) {
     if (command == "synth") return pat::app::run_synth(args);
     if (command == "diagnose") return pat::app::run_diagnose(args);
     if (command == "bench-diagnose") return pat::app::run_bench_diagnose(args);
+    if (command == "import-raw") return pat::app::run_import_raw(args);
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {

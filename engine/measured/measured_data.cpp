@@ -43,9 +43,9 @@ MeasuredTrial measured_from_table(const CsvTable& table, const std::string& path
   trial.t = table.column("time_s");
   trial.hammer_deg = table.column("hammer_angle_deg");
   if (table.column_index("key_angle_deg") >= 0) trial.key_deg = table.column("key_angle_deg");
-  if (trial.t.size() < 20)
-    throw InputError(path + ": only " + std::to_string(trial.t.size()) +
-                     " samples (at least 20 are needed)");
+  if (trial.t.size() < kMinMeasuredSamples)
+    throw InputError(path + ": only " + std::to_string(trial.t.size()) + " samples (at least " +
+                     std::to_string(kMinMeasuredSamples) + " are needed)");
   for (std::size_t i = 1; i < trial.t.size(); ++i)
     if (!(trial.t[i] > trial.t[i - 1])) {
       std::ostringstream out;

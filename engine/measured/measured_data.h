@@ -26,11 +26,14 @@ struct MeasuredTrial {
 /// The hammer–string contact lasts 1–4 ms (paper section 6; Askenfelt & Jansson): a trace must
 /// be sampled at least every 1 ms to see the impact at all.
 inline constexpr double kMaxSampleIntervalS = 1e-3;
+/// Fewest samples a measured trace may have.
+inline constexpr std::size_t kMinMeasuredSamples = 20;
 
 /// Reads and checks a measured file. `expected_action` ("grand"/"upright"; empty: any) must
 /// match its "# action:" line when it has one. Throws InputError naming the file and the
 /// problem: missing column, non-monotone time (with the line), non-finite value, action
-/// mismatch, fewer than 20 samples, or a sample interval too long to resolve the impact.
+/// mismatch, fewer than kMinMeasuredSamples samples, or a sample interval too long to resolve the
+/// impact.
 MeasuredTrial read_measured(const std::string& path, const std::string& expected_action);
 
 struct CsvTable;

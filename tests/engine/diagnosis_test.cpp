@@ -93,8 +93,8 @@ TEST(MeasuredData, SynthWritesTheMeasuredFormatWithItsOffsets) {
 }
 
 TEST(MeasuredData, RealStrikeIsFoundWithin2msOfThePeak) {
-  const MeasuredTrial trial =
-      read_measured(std::string(PAT_TEST_DATA_DIR) + "/kawai_kg3c_a4_fast_strike.csv", "grand");
+  const MeasuredTrial trial = read_measured(
+      std::string(PAT_ASSET_DIR) + "/measured/kawai_kg3c_e4_fast_strike.csv", "grand");
   const auto peak = std::max_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
   const double t_peak = trial.t[static_cast<std::size_t>(peak - trial.hammer_deg.begin())];
   const auto events = detect_events(trial.t, trial.hammer_deg, estimate_noise(trial.hammer_deg));
@@ -110,8 +110,8 @@ TEST(MeasuredData, RealStrikeIsFoundWithin2msOfThePeak) {
 
 TEST(Diagnosis, RealStrikeRunsEndToEnd) {
   const ActionModel grand = test::shipped("grand");
-  const MeasuredTrial trial =
-      read_measured(std::string(PAT_TEST_DATA_DIR) + "/kawai_kg3c_a4_fast_strike.csv", "grand");
+  const MeasuredTrial trial = read_measured(
+      std::string(PAT_ASSET_DIR) + "/measured/kawai_kg3c_e4_fast_strike.csv", "grand");
   DiagnoseOptions options;
   options.candidates = {"shank_flex", "felt_stiffness.hammer_head_string"};
   const Diagnosis d = diagnose(grand, {trial}, options);

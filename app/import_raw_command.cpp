@@ -1,0 +1,96 @@
+// pianoaction import-raw: a raw hammer-shank sensor trace (the uncalibrated recordings of
+// shared/data/kawai-kg3c) turned into the measured-data format (DESIGN.md sections 4 and 5;
+// the calibration is described in engine/measured/raw_import.h).
+#include <cmath>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "command_line.h"
+#include "commands.h"
+#include "core/error.h"
+#include "io/csv.h"
+#include "measured/raw_import.h"
+#include "model/preset_loader.h"
+
+namespace pat::app {
+
+namespace {
+
+const std::set<std::string> kValueOptions = {"--rate", "--column", "--calibration", "--action",
+                                             "--from", "--to",     "--bits",        "--out"};
+
+/// A whole number ≥ `minimum`; names the option.
+int whole_number(const CommandLine& cl, const std::string& option, int fallback, int minimum) {
+  if (!cl.has(option)) return fallback;
+  const double x = parse_number(cl.value(option), option);
+  if (x != std::floor(x) || x < minimum || x > 1e9)
+    throw InputError(option + ": must be a whole number ≥ " + std::to_string(minimum) + " (got " +
+                     cl.value(option) + ")");
+  return static_cast<int>(x);
+}
+
+}  // namespace
+
+int run_import_raw(const std::vector<std::string>& args) {
+  // the one positional argument: the raw file
+  std::vector<std::string> options;
+  std::string raw_path;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const bool takes_value = kValueOptions.count(args[i]) > 0;
+    if (args[i].rfind("--", 0) != 0) {
+      if (!raw_path.empty())
+        throw InputError("one raw trace at a time (got '" + raw_path + "' and '" + args[i] + "')");
+      raw_path = args[i];
+      continue;
+    }
+    options.push_back(args[i]);
+    if (takes_value && i + 1 < args.size()) options.push_back(args[++i]);
+  }
+  const CommandLine cl(options, kValueOptions, {"--json"});
+  if (raw_path.empty())
+    throw InputError("missing the raw trace file (import-raw RAW --rate HZ ...)");
+  const std::string out_path = cl.value("--out");
+
+  RawImportOptions o;
+  if (!cl.has("--rate")) throw InputError("missing option --rate (samples per second of RAW)");
+  o.rate_hz = parse_number(cl.value("--rate"), "--rate");
+  if (cl.has("--from")) o.from_s = parse_number(cl.value("--from"), "--from");
+  if (cl.has("--to")) o.to_s = parse_number(cl.value("--to"), "--to");
+  const int column = whole_number(cl, "--column", 1, 1);
+  const int bits = whole_number(cl, "--bits", 24, 1);
+  const ActionModel model = load_action(cl.value_or("--action", "grand"));
+  o.action = model.kind;
+  if (cl.has("--calibration"))
+    o.calibration = read_sensor_calibration(cl.value("--calibration"), "hammer");
+  const RawTrace trace = read_raw_trace(raw_path, column, bits);
+  o.contact_angle_deg = hammer_contact_angle_deg(model);
+  const RawImport result = import_raw(trace, o);
+  write_csv(out_path, result.table);
+
+  const std::size_t samples = result.table.rows.size();
+  if (cl.has("--json")) {
+    nlohmann::json j{{"out", out_path},
+                     {"samples", samples},
+                     {"first_sample", result.first_sample},
+                     {"rate_hz", o.rate_hz},
+                     {"column", column},
+                     {"counts", trace.counts},
+                     {"calibration", o.calibration ? "points" : "estimated"},
+                     {"contact_angle_deg", o.contact_angle_deg},
+                     {"strike", nullptr}};
+    if (result.strike)
+      j["strike"] = {{"rest_reading", result.strike->rest_reading},
+                     {"peak_reading", result.strike->peak_reading},
+                     {"noise", result.strike->noise},
+                     {"reversed", result.strike->reversed},
+                     {"peak_t_s", result.peak_t_s},
+                     {"peak_angle_deg", result.peak_angle_deg}};
+    std::cout << j.dump(1) << "\n";
+  } else {
+    std::cout << samples << " samples written to " << out_path << " ("
+              << result.table.metadata.at("calibration") << ")\n";
+  }
+  return 0;
+}
+
+}  // namespace pat::app

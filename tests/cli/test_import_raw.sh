@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# `pianoaction import-raw` end to end: a synthetic two-column raw trace (24-bit counts in column 2)
+# becomes a measured-data file that diagnose's reader accepts; bad input fails with exit code 2,
+# a message naming the file / line / option and the problem, and no output file (an existing one
+# is left as it was).
+# usage: test_import_raw.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
+set -euo pipefail
+
+exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+source_dir="$(cd "$2" && pwd)"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+failures=0
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+# 0.3 s at 2000 samples/s: rest, a quadratic rise to the string at 80 ms, a rebound into check.
+# Column 1: a constant normalized reading; column 2: a sensor in 24-bit counts.
+awk 'BEGIN {
+  for (i = 0; i < 600; i++) {
+    t = i / 2000; a = 0
+    if (t > 0.08) a = (t < 0.095) ? 1 - 0.4 * 0.5 * (1 - cos(3.14159265 * (t - 0.08) / 0.015)) : 0.6
+    else if (t > 0.06) a = ((t - 0.06) / 0.02) ^ 2
+    printf "0.5, %d\n", 3600000 + int(4200000 * a)
+  }
+}' >strike.txt
+
+"$exe" import-raw strike.txt --rate 2000 --column 2 --out strike.csv --json >import.json \
+  || fail "import-raw failed"
+grep -q '^# action: grand' strike.csv || fail "no '# action: grand' line"
+grep -q '^# calibration: estimated' strike.csv || fail "no '# calibration:' line"
+grep -q '^# source: strike.txt column 2' strike.csv || fail "no '# source:' line"
+grep -q '^time_s,hammer_angle_deg,sensor_reading$' strike.csv || fail "header"
+rows=$(grep -vc '^#' strike.csv)
+[[ "$rows" -eq 601 ]] || fail "expected 600 rows + header, got $rows lines"
+for key in samples contact_angle_deg strike peak_t_s peak_angle_deg rest_reading; do
+  grep -q "\"$key\"" import.json || fail "import-raw --json: no key $key"
+done
+grep -q '"peak_t_s": 0.08' import.json || fail "the strike's peak is not at 0.08 s: $(cat import.json)"
+grep -q '"counts": true' import.json || fail "24-bit counts not detected"
+# a window of the file
+"$exe" import-raw strike.txt --rate 2000 --column 2 --from 0.02 --to 0.2 --out window.csv \
+  >/dev/null || fail "import-raw --from/--to failed"
+rows=$(grep -vc '^#' window.csv)
+[[ "$rows" -eq 362 ]] || fail "--from 0.02 --to 0.2: expected 361 rows + header, got $rows lines"
+
+# bad input: exit code 2, the message, and no output file
+expect_failure() {
+  local what="$1" expected="$2"
+  shift 2
+  rm -f out.csv
+  local status=0
+  "$exe" import-raw "$@" --out out.csv >out.txt 2>err.txt || status=$?
+  [[ $status -eq 2 ]] || fail "$what: exit code $status, expected 2"
+  grep -qF -- "$expected" err.txt || fail "$what: message lacks '$expected': $(cat err.txt)"
+  [[ ! -e out.csv ]] || fail "$what: out.csv was written"
+}
+printf '0.2\n0.3\nx7\n' >text.txt
+printf 'sensor,position_in,normalized_reading\nhammer,0,0\nhammer,0.1,1\n' >nogain.csv
+printf '# hammer offset 0.5 gain 0.2\nposition_in,normalized_reading\n0,0\n0.1,0.6\n0.2,0.5\n' \
+  >bump.csv
+expect_failure "missing file" "missing.txt: cannot open" missing.txt --rate 2000
+expect_failure "non-numeric" "text.txt: line 3, column 1: 'x7' is not a finite number" \
+  text.txt --rate 2000
+expect_failure "column" "line 1: column 3 is out of range" strike.txt --rate 2000 --column 3
+expect_failure "rate" "--rate must be a positive" strike.txt --rate 0
+expect_failure "no rate" "missing option --rate" strike.txt
+expect_failure "few samples" "only 11 samples" strike.txt --rate 2000 --column 2 --from 0.1 --to 0.105
+expect_failure "no strike" "no strike found in column 1" strike.txt --rate 2000 --column 1
+expect_failure "calibration header" "no offset and gain for sensor 'hammer'" \
+  strike.txt --rate 2000 --column 2 --calibration nogain.csv
+expect_failure "calibration monotone" "bump.csv: line 5: the calibration is not monotone" \
+  strike.txt --rate 2000 --column 2 --calibration bump.csv
+expect_failure "two files" "one raw trace at a time" strike.txt text.txt --rate 2000
+# an existing output file survives a failed run
+echo keep >kept.csv
+"$exe" import-raw strike.txt --rate 2000 --column 1 --out kept.csv 2>/dev/null && fail "no strike accepted"
+[[ "$(cat kept.csv)" == keep ]] || fail "a failed run changed an existing output file"
+
+if [[ $failures -ne 0 ]]; then
+  echo "$failures failure(s)" >&2
+  exit 1
+fi
+echo "import-raw CLI: all checks passed"
