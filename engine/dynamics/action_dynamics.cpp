@@ -4,7 +4,6 @@
 
 #include "dynamics/contact_geometry.h"
 #include "dynamics/force_laws.h"
-#include "dynamics/small_cholesky.h"
 
 namespace pat {
 
@@ -16,6 +15,16 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
   for (int j = 0; j < n_; ++j)
     if (!(key_prescribed_ && j == key_)) free_index_.push_back(j);
   free_count_ = static_cast<int>(free_index_.size());
+  // the free coordinates' tree: each one's nearest free ancestor (parents precede children)
+  int free_parent[kMaxDof];
+  for (int i = 0; i < free_count_; ++i) {
+    free_parent[i] = -1;
+    for (int j = model.bodies[free_index_[i]].parent; j >= 0 && free_parent[i] < 0;
+         j = model.bodies[j].parent)
+      for (int f = 0; f < i; ++f)
+        if (free_index_[f] == j) free_parent[i] = f;
+  }
+  tree_.set_tree(free_parent, free_count_);
 
   bodies_.resize(n_);
   for (int k = 0; k < n_; ++k) {
@@ -294,25 +303,20 @@ void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
 
 void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
   acceleration.resize(n_);
-  // factor a copy: mass_ stays whole for evaluate()'s key residual
-  SmallMatrix factor;
+  // factor a copy of the tree entries: mass_ stays whole for evaluate()'s key residual
   SmallVector rhs;
   double key_acc = 0.0;
-  if (!key_prescribed_) {
-    factor = mass_;
-    rhs = forces_;
-  } else {
-    // prescribed key: M_ff q̈_f = f_f − M_fk q̈_k
-    key_acc = input_->motion(t).acceleration;
-    for (int i = 0; i < free_count_; ++i) {
-      const int ji = free_index_[i];
-      rhs[i] = forces_[ji] - mass_entry(ji, key_) * key_acc;
-      for (int j = 0; j <= i; ++j) factor(i, j) = mass_(ji, free_index_[j]);
-    }
+  if (key_prescribed_) key_acc = input_->motion(t).acceleration;  // M_ff q̈_f = f_f − M_fk q̈_k
+  for (int i = 0; i < free_count_; ++i) {
+    const int ji = free_index_[i];
+    rhs[i] = key_prescribed_ ? forces_[ji] - mass_entry(ji, key_) * key_acc : forces_[ji];
+    factor_(i, i) = mass_(ji, ji);
+    for (int j = tree_.parent(i); j >= 0; j = tree_.parent(j))
+      factor_(i, j) = mass_(ji, free_index_[j]);
   }
   // a non-positive-definite M (never for a valid model) gives NaN, which the integrators report
   // as a failure
-  if (!cholesky_solve_in_place(factor, rhs, free_count_)) rhs.setConstant(std::nan(""));
+  if (!tree_.solve_in_place(factor_, rhs)) rhs.setConstant(std::nan(""));
   for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = rhs[i];
   if (key_prescribed_) acceleration[key_] = key_acc;
 }

@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "dynamics/contact_geometry.h"
-#include "dynamics/small_cholesky.h"
+#include "dynamics/tree_ldl.h"
 #include "inputs/key_input.h"
 #include "integrators/ode_system.h"
 #include "model/action_model.h"
@@ -193,6 +193,9 @@ class ActionDynamics : public OdeSystem {
   // assembled M (lower triangle only: read it through mass_entry) and forces Q − c
   SmallMatrix mass_ = SmallMatrix::Zero();
   SmallVector forces_ = SmallVector::Zero();
+  // the free coordinates' tree and the factor of M_ff on it (scratch of solve_accelerations)
+  TreeLdl tree_;
+  SmallMatrix factor_ = SmallMatrix::Zero();
   // scratch, so that rhs() does not allocate
   DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };
