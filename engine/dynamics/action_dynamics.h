@@ -111,12 +111,13 @@ class ActionDynamics : public OdeSystem {
   struct ContactConstants {
     int body_a = -1, body_b = -1;
     bool segment = true;
-    Vec2 center_a;  ///< circle of A
+    Vec2 center_a = Vec2::Zero();  ///< circle of A
     double radius_a = 0.0;
-    Vec2 center_b;                  ///< circle of B (circle–circle)
-    double radius_b = 0.0;          ///< circle of B, or the corner radius ρ of a segment
-    Vec2 start, direction, normal;  ///< segment s0, u = s1 − s0, unit normal m (B's frame)
-    double inverse_length2 = 0.0;   ///< 1 / |u|², 1/m²
+    Vec2 center_b = Vec2::Zero();  ///< circle of B (circle–circle)
+    double radius_b = 0.0;         ///< circle of B, or the corner radius ρ of a segment
+    /// segment s0, u = s1 − s0, unit normal m (B's frame)
+    Vec2 start = Vec2::Zero(), direction = Vec2::Zero(), normal = Vec2::Zero();
+    double inverse_length2 = 0.0;  ///< 1 / |u|², 1/m²
   };
   struct BodyKinematics {
     double angle = 0.0, cos = 1.0, sin = 0.0, omega = 0.0;
