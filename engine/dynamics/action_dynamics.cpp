@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/table_sincos.h"
 #include "dynamics/contact_geometry.h"
 #include "dynamics/force_laws.h"
 
@@ -106,8 +107,7 @@ void ActionDynamics::update_positions(const DofVector& q) {
       kk.angle = pk.angle + q[k];
       kk.origin = pk.origin + kk.arm_from_parent;
     }
-    kk.cos = std::cos(kk.angle);
-    kk.sin = std::sin(kk.angle);
+    table_sincos(kk.angle, kk.cos, kk.sin);
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
     Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
