@@ -316,7 +316,8 @@ void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
   }
   // a non-positive-definite M (never for a valid model) gives NaN, which the integrators report
   // as a failure
-  if (!tree_.solve_in_place(factor_, rhs)) rhs.setConstant(std::nan(""));
+  factor_valid_ = tree_.solve_in_place(factor_, rhs);
+  if (!factor_valid_) rhs.setConstant(std::nan(""));
   for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = rhs[i];
   if (key_prescribed_) acceleration[key_] = key_acc;
 }

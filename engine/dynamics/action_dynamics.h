@@ -55,6 +55,12 @@ class ActionDynamics : public OdeSystem {
   int dofs() const override { return free_count_; }
   void rhs(double t, const StateVector& y, StateVector& dydt) override;
   std::uint64_t regime() const override { return regime_; }
+  /// A_v ≈ ∂q̈_f/∂q̇_f at the latest rhs() state: M_ff⁻¹ K_v with K_v = ∂Q/∂q̇ of the joint
+  /// friction, the settling damping, the felts' hysteresis, the contact friction and the strap
+  /// damping (closed forms, force_laws.h); the velocity-dependent inertia terms (−∂c/∂q̇, not
+  /// stiff) are left out, which a W-method allows. A few hundred operations, against dofs()
+  /// evaluations for the finite differences. False if M was not positive definite.
+  bool velocity_jacobian(StateMatrix& jacobian) override;
 
   /// Extra viscous joint damping (N·m·s/rad) used only to settle the action to rest.
   void set_settling_damping(double damping) { settling_damping_ = damping; }
@@ -157,6 +163,9 @@ class ActionDynamics : public OdeSystem {
       generalized[j] += cross2(point - kin_[j].origin, force);
     }
   }
+  /// Adds ∂(v_A(P) − v_B(P))/∂q̇ (a = body_a, b = body_b; P a world point) to the rows gx, gy.
+  void add_relative_velocity_rows(int body_a, int body_b, const Vec2& point, SmallVector& gx,
+                                  SmallVector& gy) const;
   /// Fills mass_ and forces_ at (t, q, q̇); readings and tensions may be null.
   void assemble(double t, const DofVector& q, const DofVector& v,
                 std::vector<ContactReading>* readings, std::vector<double>* tensions);
@@ -197,6 +206,7 @@ class ActionDynamics : public OdeSystem {
   // the free coordinates' tree and the factor of M_ff on it (scratch of solve_accelerations)
   TreeLdl tree_;
   SmallMatrix factor_ = SmallMatrix::Zero();
+  bool factor_valid_ = false;  // factor_ holds the factor of the latest assembled M_ff
   // scratch, so that rhs() does not allocate
   DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };

@@ -55,11 +55,37 @@ inline double felt_normal_force(const FeltLaw& law, double x, double x_rate) {
   return std::max(loading + (loading - unloading) * smooth_tanh(law.alpha * x_rate), 0.0);
 }
 
+/// The felt normal force's rate derivative ∂F/∂ẋ (N·s/m), for the velocity Jacobian:
+///   (F_L − F_U) α (1 − T²) with T = tanh(α ẋ) for ẋ < 0; 0 for ẋ ≥ 0 and where F is clamped
+///   to 0 (x ≤ 0 or F ≤ 0).
+inline double felt_normal_damping(const FeltLaw& law, double x, double x_rate) {
+  if (x <= 0.0 || x_rate >= 0.0) return 0.0;
+  const double loading = felt_curve_force(law.loading, x);
+  const double unloading = felt_curve_force(law.unloading, x);
+  const double blend = smooth_tanh(law.alpha * x_rate);
+  if (!(loading + (loading - unloading) * blend > 0.0)) return 0.0;
+  return (loading - unloading) * law.alpha * (1.0 - blend * blend);
+}
+
 /// Tangential friction force along the slip direction (N): −μ F_n tanh(v_t / v_s).
 inline double friction_force(const ContactFriction& friction, double normal_force,
                              double slip_velocity) {
   if (friction.mu <= 0.0) return 0.0;
   return -friction.mu * normal_force * smooth_tanh(slip_velocity / friction.slip_velocity);
+}
+
+/// Partial derivatives of friction_force: ∂F_t/∂F_n = −μ T (dimensionless) and
+/// ∂F_t/∂v_t = −μ F_n (1 − T²)/v_s (N·s/m), T = tanh(v_t / v_s).
+struct FrictionSlope {
+  double per_normal_force = 0.0;
+  double per_slip_velocity = 0.0;
+};
+inline FrictionSlope friction_slope(const ContactFriction& friction, double normal_force,
+                                    double slip_velocity) {
+  if (friction.mu <= 0.0) return {};
+  const double blend = smooth_tanh(slip_velocity / friction.slip_velocity);
+  return {-friction.mu * blend,
+          -friction.mu * normal_force * (1.0 - blend * blend) / friction.slip_velocity};
 }
 
 /// Joint friction torque (paper eq. 4), N·m, opposing ω:
@@ -69,6 +95,18 @@ inline double joint_friction_torque(const JointFriction& law, double omega) {
   const double s = omega / law.omega_t;
   const double s2 = s * s;
   return -law.a_nm * (smooth_tanh(s) + law.b1 * s / (1.0 + law.b2 * s2 * s2));
+}
+
+/// Its derivative dτ/dω (N·m·s/rad), s = ω/ωt, T = tanh(s):
+///   −(A/ωt) ((1 − T²) + B1 (1 − 3 B2 s⁴) / (1 + B2 s⁴)²).
+inline double joint_friction_damping(const JointFriction& law, double omega) {
+  if (law.a_nm <= 0.0) return 0.0;
+  const double s = omega / law.omega_t;
+  const double s4 = s * s * s * s;
+  const double blend = smooth_tanh(s);
+  const double denominator = 1.0 + law.b2 * s4;
+  return -law.a_nm / law.omega_t *
+         ((1.0 - blend * blend) + law.b1 * (1.0 - 3.0 * law.b2 * s4) / (denominator * denominator));
 }
 
 }  // namespace pat

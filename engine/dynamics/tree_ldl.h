@@ -37,9 +37,9 @@ class TreeLdl {
   int parent(int i) const { return parent_[i]; }
 
   /// Factors the tree entries of the lower triangle of m (row ≥ column; entries off the tree's
-  /// pattern are not read) in place and solves m x = b in place on b. False if m is not positive
-  /// definite (a pivot D_k ≤ 0), b then unchanged.
-  bool solve_in_place(SmallMatrix& m, SmallVector& b) const {
+  /// pattern are not read) in place into L (below the diagonal) and D (on it). False if m is not
+  /// positive definite (a pivot D_k ≤ 0).
+  bool factor_in_place(SmallMatrix& m) const {
     for (int k = n_ - 1; k >= 0; --k) {
       const double d = m(k, k);
       if (!(d > 0.0)) return false;
@@ -50,11 +50,20 @@ class TreeLdl {
         m(k, i) = a;
       }
     }
+    return true;
+  }
+  /// Solves M x = b in place on b with a factor from factor_in_place.
+  void solve(const SmallMatrix& factor, SmallVector& b) const {
     for (int i = n_ - 1; i >= 0; --i)  // Lᵀ y = b
-      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[j] -= m(i, j) * b[i];
-    for (int i = 0; i < n_; ++i) b[i] /= m(i, i);  // z = D⁻¹ y
-    for (int i = 0; i < n_; ++i)                   // L x = z
-      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[i] -= m(i, j) * b[j];
+      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[j] -= factor(i, j) * b[i];
+    for (int i = 0; i < n_; ++i) b[i] /= factor(i, i);  // z = D⁻¹ y
+    for (int i = 0; i < n_; ++i)                        // L x = z
+      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[i] -= factor(i, j) * b[j];
+  }
+  /// factor_in_place, then solve; b is unchanged when m is not positive definite.
+  bool solve_in_place(SmallMatrix& m, SmallVector& b) const {
+    if (!factor_in_place(m)) return false;
+    solve(m, b);
     return true;
   }
 
