@@ -1,5 +1,6 @@
 #include "dynamics/action_dynamics.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/table_sincos.h"
@@ -85,6 +86,22 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
   distances_.resize(contacts_.size());
   patches_.resize(contacts_.size());
   touching_.resize(contacts_.size());
+  exact_.assign(contacts_.size(), 0);
+  culls_.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    // the joints on exactly one of the two chains
+    auto on_chain = [&](int body, int joint) {
+      if (body < 0) return false;
+      const BodyConstants& b = bodies_[body];
+      for (int k = 0; k < b.chain_length; ++k)
+        if (b.chain[k] == joint) return true;
+      return false;
+    };
+    int joints[kMaxDof], count = 0;
+    for (int j = 0; j < n_; ++j)
+      if (on_chain(contacts_[c].body_a, j) != on_chain(contacts_[c].body_b, j)) joints[count++] = j;
+    culls_[c].set_joints(joints, count);
+  }
   update_kinematics(DofVector::Zero(n_), DofVector::Zero(n_));  // the drawing configuration
   scratch_q_.resize(n_);
   scratch_v_.resize(n_);
@@ -110,9 +127,21 @@ void ActionDynamics::update_positions(const DofVector& q) {
     table_sincos(kk.angle, kk.cos, kk.sin);
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    double bound = 0.0;
+    if (culls_[c].still_open(q, bound)) {  // certainly apart: no force, no patch
+      distances_[c].penetration = bound;
+      touching_[c] = 0;
+      exact_[c] = 0;
+      continue;
+    }
     Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
     distances_[c] = contact_distance(contacts_[c], center_a);
     touching_[c] = patch_at(distances_[c], center_a, contacts_[c].radius_a, patches_[c]);
+    exact_[c] = 1;
+    if (touching_[c])
+      culls_[c].disarm();
+    else
+      arm_cull(c, q, center_a);
   }
   positions_q_ = q;
   positions_valid_ = true;
@@ -160,7 +189,58 @@ ContactDistance ActionDynamics::contact_distance(const ContactConstants& c, Vec2
   return d;
 }
 
+void ActionDynamics::arm_cull(std::size_t c, const DofVector& q, const Vec2& center_a) {
+  const ContactConstants& contact = contacts_[c];
+  const double gap = -distances_[c].penetration;
+  double margin = gap;
+  if (contact.segment) {
+    // where the formula would jump (contact_geometry.h): the circle centre behind the face line
+    Vec2 local = center_a;
+    if (contact.body_b >= 0) {
+      const BodyKinematics& kb = kin_[contact.body_b];
+      local = rotate(center_a - kb.origin, kb.cos, -kb.sin);
+    }
+    const Vec2 rel = local - contact.start;
+    const double height = contact.normal.dot(rel);
+    if (height < 0.0) {
+      if (contact.radius_b > 0.0) {
+        margin = std::min(margin, -height);  // crossing the face line inside the segment
+      } else {
+        const double t = rel.dot(contact.direction) * contact.inverse_length2;
+        const double length = std::sqrt(1.0 / contact.inverse_length2);
+        margin = std::min(margin, (t < 0.0 ? -t : t - 1.0) * length);  // entering the span
+      }
+    }
+  }
+  // distances from each relevant pivot to the contact's points and to the other relevant pivots
+  const ContactCull& cull = culls_[c];
+  const Vec2 center_b = contact.segment ? center_a : place(contact.body_b, contact.center_b);
+  double reach[kMaxDof];
+  for (int k = 0; k < cull.joint_count(); ++k) {
+    const Vec2& pivot = kin_[cull.joint(k)].origin;
+    double r = std::max((center_a - pivot).norm(), (center_b - pivot).norm());
+    for (int i = 0; i < cull.joint_count(); ++i)
+      r = std::max(r, (kin_[cull.joint(i)].origin - pivot).norm());
+    reach[k] = r;
+  }
+  culls_[c].arm(q, gap, margin, reach);
+}
+
 void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
+  update_positions(q);
+  penetration.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    if (!exact_[c]) {
+      Vec2 center_a;
+      distances_[c] = contact_distance(contacts_[c], center_a);
+      exact_[c] = 1;
+    }
+    penetration[c] = distances_[c].penetration;
+  }
+}
+
+void ActionDynamics::contact_penetration_bounds(const DofVector& q,
+                                                std::vector<double>& penetration) {
   update_positions(q);
   penetration.resize(contacts_.size());
   for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;

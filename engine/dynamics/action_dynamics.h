@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/contact_cull.h"
 #include "dynamics/contact_geometry.h"
 #include "dynamics/tree_ldl.h"
 #include "inputs/key_input.h"
@@ -82,6 +83,10 @@ class ActionDynamics : public OdeSystem {
   /// only (memoized with the positions): cheap enough to call after every step for events, the
   /// unphysical-penetration check and the technician's gap measurements.
   void contact_penetrations(const DofVector& q, std::vector<double>& penetration);
+  /// The same where a contact may touch; where it is certainly apart (contact_cull.h), an upper
+  /// bound of its penetration instead (negative, m). Enough for what needs the signs only (events,
+  /// the unphysical-penetration check), and cheaper.
+  void contact_penetration_bounds(const DofVector& q, std::vector<double>& penetration);
 
   /// Mass matrix at q (the point mass of a mass input included).
   DofMatrix mass_matrix(const DofVector& q);
@@ -174,6 +179,8 @@ class ActionDynamics : public OdeSystem {
   /// Signed distance and normal of a contact at the current positions; `center_a` receives the
   /// world position of A's circle (the patch needs it too).
   ContactDistance contact_distance(const ContactConstants& contact, Vec2& center_a) const;
+  /// Arms contact c's cull after its distance was found open at q (A's circle at center_a).
+  void arm_cull(std::size_t c, const DofVector& q, const Vec2& center_a);
   DofMatrix assembled_mass() const;
   /// M_ij of the assembled (lower-triangle) mass matrix.
   double mass_entry(int i, int j) const { return i >= j ? mass_(i, j) : mass_(j, i); }
@@ -194,7 +201,9 @@ class ActionDynamics : public OdeSystem {
   // memo of update_positions(): its q, and the contact patches there
   DofVector positions_q_;
   bool positions_valid_ = false;
-  std::vector<ContactDistance> distances_;  // signed, every contact
+  std::vector<ContactDistance> distances_;  // signed, every contact (bounds where culled)
+  std::vector<ContactCull> culls_;          // per contact: the certified "still apart" test
+  std::vector<char> exact_;                 // distances_[c] computed, not bounded
   std::vector<ContactPatch> patches_;
   std::vector<char> touching_;
   double settling_damping_ = 0.0;
