@@ -30,7 +30,6 @@ class SmallLu {
         for (int j = 0; j < n; ++j) std::swap(lu_(k, j), lu_(pivot, j));
       if (lu_(k, k) == 0.0) return false;
       const double inverse = 1.0 / lu_(k, k);
-      inverse_diagonal_[k] = inverse;
       for (int i = k + 1; i < n; ++i) {
         const double l = lu_(i, k) * inverse;
         lu_(i, k) = l;
@@ -78,13 +77,12 @@ class SmallLu {
     for (int i = N - 1; i >= 0; --i) {
       double s = b[i];
       for (int k = i + 1; k < N; ++k) s -= lu_(i, k) * b[k];
-      b[i] = s * inverse_diagonal_[i];  // a multiply: the divisions' latency would chain
+      b[i] = s / lu_(i, i);
     }
   }
 
   Matrix lu_ = Matrix::Zero();
-  int row_of_[kMaxDof] = {};               ///< row swapped with row k at step k
-  double inverse_diagonal_[kMaxDof] = {};  ///< 1 / U_kk
+  int row_of_[kMaxDof] = {};  ///< row swapped with row k at step k
   int n_ = 0;
 };
 
