@@ -1,10 +1,11 @@
 #include "dynamics/action_dynamics.h"
 
+#include <algorithm>
 #include <cmath>
 
+#include "core/table_sincos.h"
 #include "dynamics/contact_geometry.h"
 #include "dynamics/force_laws.h"
-#include "dynamics/small_cholesky.h"
 
 namespace pat {
 
@@ -16,6 +17,16 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
   for (int j = 0; j < n_; ++j)
     if (!(key_prescribed_ && j == key_)) free_index_.push_back(j);
   free_count_ = static_cast<int>(free_index_.size());
+  // the free coordinates' tree: each one's nearest free ancestor (parents precede children)
+  int free_parent[kMaxDof];
+  for (int i = 0; i < free_count_; ++i) {
+    free_parent[i] = -1;
+    for (int j = model.bodies[free_index_[i]].parent; j >= 0 && free_parent[i] < 0;
+         j = model.bodies[j].parent)
+      for (int f = 0; f < i; ++f)
+        if (free_index_[f] == j) free_parent[i] = f;
+  }
+  tree_.set_tree(free_parent, free_count_);
 
   bodies_.resize(n_);
   for (int k = 0; k < n_; ++k) {
@@ -75,6 +86,22 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
   distances_.resize(contacts_.size());
   patches_.resize(contacts_.size());
   touching_.resize(contacts_.size());
+  exact_.assign(contacts_.size(), 0);
+  culls_.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    // the joints on exactly one of the two chains
+    auto on_chain = [&](int body, int joint) {
+      if (body < 0) return false;
+      const BodyConstants& b = bodies_[body];
+      for (int k = 0; k < b.chain_length; ++k)
+        if (b.chain[k] == joint) return true;
+      return false;
+    };
+    int joints[kMaxDof], count = 0;
+    for (int j = 0; j < n_; ++j)
+      if (on_chain(contacts_[c].body_a, j) != on_chain(contacts_[c].body_b, j)) joints[count++] = j;
+    culls_[c].set_joints(joints, count);
+  }
   update_kinematics(DofVector::Zero(n_), DofVector::Zero(n_));  // the drawing configuration
   scratch_q_.resize(n_);
   scratch_v_.resize(n_);
@@ -97,13 +124,24 @@ void ActionDynamics::update_positions(const DofVector& q) {
       kk.angle = pk.angle + q[k];
       kk.origin = pk.origin + kk.arm_from_parent;
     }
-    kk.cos = std::cos(kk.angle);
-    kk.sin = std::sin(kk.angle);
+    table_sincos(kk.angle, kk.cos, kk.sin);
   }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    double bound = 0.0;
+    if (culls_[c].still_open(q, bound)) {  // certainly apart: no force, no patch
+      distances_[c].penetration = bound;
+      touching_[c] = 0;
+      exact_[c] = 0;
+      continue;
+    }
     Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
     distances_[c] = contact_distance(contacts_[c], center_a);
     touching_[c] = patch_at(distances_[c], center_a, contacts_[c].radius_a, patches_[c]);
+    exact_[c] = 1;
+    if (touching_[c])
+      culls_[c].disarm();
+    else
+      arm_cull(c, q, center_a);
   }
   positions_q_ = q;
   positions_valid_ = true;
@@ -151,7 +189,58 @@ ContactDistance ActionDynamics::contact_distance(const ContactConstants& c, Vec2
   return d;
 }
 
+void ActionDynamics::arm_cull(std::size_t c, const DofVector& q, const Vec2& center_a) {
+  const ContactConstants& contact = contacts_[c];
+  const double gap = -distances_[c].penetration;
+  double margin = gap;
+  if (contact.segment) {
+    // where the formula would jump (contact_geometry.h): the circle centre behind the face line
+    Vec2 local = center_a;
+    if (contact.body_b >= 0) {
+      const BodyKinematics& kb = kin_[contact.body_b];
+      local = rotate(center_a - kb.origin, kb.cos, -kb.sin);
+    }
+    const Vec2 rel = local - contact.start;
+    const double height = contact.normal.dot(rel);
+    if (height < 0.0) {
+      if (contact.radius_b > 0.0) {
+        margin = std::min(margin, -height);  // crossing the face line inside the segment
+      } else {
+        const double t = rel.dot(contact.direction) * contact.inverse_length2;
+        const double length = std::sqrt(1.0 / contact.inverse_length2);
+        margin = std::min(margin, (t < 0.0 ? -t : t - 1.0) * length);  // entering the span
+      }
+    }
+  }
+  // distances from each relevant pivot to the contact's points and to the other relevant pivots
+  const ContactCull& cull = culls_[c];
+  const Vec2 center_b = contact.segment ? center_a : place(contact.body_b, contact.center_b);
+  double reach[kMaxDof];
+  for (int k = 0; k < cull.joint_count(); ++k) {
+    const Vec2& pivot = kin_[cull.joint(k)].origin;
+    double r = std::max((center_a - pivot).norm(), (center_b - pivot).norm());
+    for (int i = 0; i < cull.joint_count(); ++i)
+      r = std::max(r, (kin_[cull.joint(i)].origin - pivot).norm());
+    reach[k] = r;
+  }
+  culls_[c].arm(q, gap, margin, reach);
+}
+
 void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
+  update_positions(q);
+  penetration.resize(contacts_.size());
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    if (!exact_[c]) {
+      Vec2 center_a;
+      distances_[c] = contact_distance(contacts_[c], center_a);
+      exact_[c] = 1;
+    }
+    penetration[c] = distances_[c].penetration;
+  }
+}
+
+void ActionDynamics::contact_penetration_bounds(const DofVector& q,
+                                                std::vector<double>& penetration) {
   update_positions(q);
   penetration.resize(contacts_.size());
   for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;
@@ -294,25 +383,21 @@ void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
 
 void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
   acceleration.resize(n_);
-  // factor a copy: mass_ stays whole for evaluate()'s key residual
-  SmallMatrix factor;
+  // factor a copy of the tree entries: mass_ stays whole for evaluate()'s key residual
   SmallVector rhs;
   double key_acc = 0.0;
-  if (!key_prescribed_) {
-    factor = mass_;
-    rhs = forces_;
-  } else {
-    // prescribed key: M_ff q̈_f = f_f − M_fk q̈_k
-    key_acc = input_->motion(t).acceleration;
-    for (int i = 0; i < free_count_; ++i) {
-      const int ji = free_index_[i];
-      rhs[i] = forces_[ji] - mass_entry(ji, key_) * key_acc;
-      for (int j = 0; j <= i; ++j) factor(i, j) = mass_(ji, free_index_[j]);
-    }
+  if (key_prescribed_) key_acc = input_->motion(t).acceleration;  // M_ff q̈_f = f_f − M_fk q̈_k
+  for (int i = 0; i < free_count_; ++i) {
+    const int ji = free_index_[i];
+    rhs[i] = key_prescribed_ ? forces_[ji] - mass_entry(ji, key_) * key_acc : forces_[ji];
+    factor_(i, i) = mass_(ji, ji);
+    for (int j = tree_.parent(i); j >= 0; j = tree_.parent(j))
+      factor_(i, j) = mass_(ji, free_index_[j]);
   }
   // a non-positive-definite M (never for a valid model) gives NaN, which the integrators report
   // as a failure
-  if (!cholesky_solve_in_place(factor, rhs, free_count_)) rhs.setConstant(std::nan(""));
+  factor_valid_ = tree_.solve_in_place(factor_, rhs);
+  if (!factor_valid_) rhs.setConstant(std::nan(""));
   for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = rhs[i];
   if (key_prescribed_) acceleration[key_] = key_acc;
 }

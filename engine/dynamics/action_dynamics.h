@@ -18,8 +18,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "dynamics/contact_cull.h"
 #include "dynamics/contact_geometry.h"
-#include "dynamics/small_cholesky.h"
+#include "dynamics/tree_ldl.h"
 #include "inputs/key_input.h"
 #include "integrators/ode_system.h"
 #include "model/action_model.h"
@@ -55,6 +56,12 @@ class ActionDynamics : public OdeSystem {
   int dofs() const override { return free_count_; }
   void rhs(double t, const StateVector& y, StateVector& dydt) override;
   std::uint64_t regime() const override { return regime_; }
+  /// A_v ≈ ∂q̈_f/∂q̇_f at the latest rhs() state: M_ff⁻¹ K_v with K_v = ∂Q/∂q̇ of the joint
+  /// friction, the settling damping, the felts' hysteresis, the contact friction and the strap
+  /// damping (closed forms, force_laws.h); the velocity-dependent inertia terms (−∂c/∂q̇, not
+  /// stiff) are left out, which a W-method allows. A few hundred operations, against dofs()
+  /// evaluations for the finite differences. False if M was not positive definite.
+  bool velocity_jacobian(StateMatrix& jacobian) override;
 
   /// Extra viscous joint damping (N·m·s/rad) used only to settle the action to rest.
   void set_settling_damping(double damping) { settling_damping_ = damping; }
@@ -76,6 +83,10 @@ class ActionDynamics : public OdeSystem {
   /// only (memoized with the positions): cheap enough to call after every step for events, the
   /// unphysical-penetration check and the technician's gap measurements.
   void contact_penetrations(const DofVector& q, std::vector<double>& penetration);
+  /// The same where a contact may touch; where it is certainly apart (contact_cull.h), an upper
+  /// bound of its penetration instead (negative, m). Enough for what needs the signs only (events,
+  /// the unphysical-penetration check), and cheaper.
+  void contact_penetration_bounds(const DofVector& q, std::vector<double>& penetration);
 
   /// Mass matrix at q (the point mass of a mass input included).
   DofMatrix mass_matrix(const DofVector& q);
@@ -111,12 +122,13 @@ class ActionDynamics : public OdeSystem {
   struct ContactConstants {
     int body_a = -1, body_b = -1;
     bool segment = true;
-    Vec2 center_a;  ///< circle of A
+    Vec2 center_a = Vec2::Zero();  ///< circle of A
     double radius_a = 0.0;
-    Vec2 center_b;                  ///< circle of B (circle–circle)
-    double radius_b = 0.0;          ///< circle of B, or the corner radius ρ of a segment
-    Vec2 start, direction, normal;  ///< segment s0, u = s1 − s0, unit normal m (B's frame)
-    double inverse_length2 = 0.0;   ///< 1 / |u|², 1/m²
+    Vec2 center_b = Vec2::Zero();  ///< circle of B (circle–circle)
+    double radius_b = 0.0;         ///< circle of B, or the corner radius ρ of a segment
+    /// segment s0, u = s1 − s0, unit normal m (B's frame)
+    Vec2 start = Vec2::Zero(), direction = Vec2::Zero(), normal = Vec2::Zero();
+    double inverse_length2 = 0.0;  ///< 1 / |u|², 1/m²
   };
   struct BodyKinematics {
     double angle = 0.0, cos = 1.0, sin = 0.0, omega = 0.0;
@@ -156,6 +168,9 @@ class ActionDynamics : public OdeSystem {
       generalized[j] += cross2(point - kin_[j].origin, force);
     }
   }
+  /// Adds ∂(v_A(P) − v_B(P))/∂q̇ (a = body_a, b = body_b; P a world point) to the rows gx, gy.
+  void add_relative_velocity_rows(int body_a, int body_b, const Vec2& point, SmallVector& gx,
+                                  SmallVector& gy) const;
   /// Fills mass_ and forces_ at (t, q, q̇); readings and tensions may be null.
   void assemble(double t, const DofVector& q, const DofVector& v,
                 std::vector<ContactReading>* readings, std::vector<double>* tensions);
@@ -164,6 +179,8 @@ class ActionDynamics : public OdeSystem {
   /// Signed distance and normal of a contact at the current positions; `center_a` receives the
   /// world position of A's circle (the patch needs it too).
   ContactDistance contact_distance(const ContactConstants& contact, Vec2& center_a) const;
+  /// Arms contact c's cull after its distance was found open at q (A's circle at center_a).
+  void arm_cull(std::size_t c, const DofVector& q, const Vec2& center_a);
   DofMatrix assembled_mass() const;
   /// M_ij of the assembled (lower-triangle) mass matrix.
   double mass_entry(int i, int j) const { return i >= j ? mass_(i, j) : mass_(j, i); }
@@ -184,7 +201,9 @@ class ActionDynamics : public OdeSystem {
   // memo of update_positions(): its q, and the contact patches there
   DofVector positions_q_;
   bool positions_valid_ = false;
-  std::vector<ContactDistance> distances_;  // signed, every contact
+  std::vector<ContactDistance> distances_;  // signed, every contact (bounds where culled)
+  std::vector<ContactCull> culls_;          // per contact: the certified "still apart" test
+  std::vector<char> exact_;                 // distances_[c] computed, not bounded
   std::vector<ContactPatch> patches_;
   std::vector<char> touching_;
   double settling_damping_ = 0.0;
@@ -193,6 +212,10 @@ class ActionDynamics : public OdeSystem {
   // assembled M (lower triangle only: read it through mass_entry) and forces Q − c
   SmallMatrix mass_ = SmallMatrix::Zero();
   SmallVector forces_ = SmallVector::Zero();
+  // the free coordinates' tree and the factor of M_ff on it (scratch of solve_accelerations)
+  TreeLdl tree_;
+  SmallMatrix factor_ = SmallMatrix::Zero();
+  bool factor_valid_ = false;  // factor_ holds the factor of the latest assembled M_ff
   // scratch, so that rhs() does not allocate
   DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };

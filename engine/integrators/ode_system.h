@@ -28,15 +28,21 @@ class OdeSystem {
   /// the bit set of active contacts). Integrators with a frozen Jacobian refresh it whenever
   /// this changes. Smooth systems return 0.
   virtual std::uint64_t regime() const { return 0; }
+
+  /// For a second-order system, right after rhs(t, y): writes an approximation of the velocity
+  /// block ∂v'/∂v of the Jacobian at that (t, y) into jacobian(n + i, n + j) (other entries
+  /// untouched) and returns true; false if the system does not provide one.
+  virtual bool velocity_jacobian(StateMatrix& /*jacobian*/) { return false; }
 };
 
 /// Counters every integrator keeps.
 struct IntegratorStats {
-  long steps = 0;             ///< accepted steps
-  long rejected_steps = 0;    ///< rejected by the error control (adaptive methods)
-  long rhs_evaluations = 0;   ///< f evaluations, Jacobian ones included
-  long jacobian_updates = 0;  ///< Jacobian evaluations
-  long factorizations = 0;    ///< LU factorizations of the iteration matrix
+  long steps = 0;                      ///< accepted steps
+  long rejected_steps = 0;             ///< rejected by the error control (adaptive methods)
+  long rhs_evaluations = 0;            ///< f evaluations, Jacobian ones included
+  long jacobian_updates = 0;           ///< Jacobian evaluations
+  long velocity_jacobian_updates = 0;  ///< w2: refreshes of the velocity block alone
+  long factorizations = 0;             ///< LU factorizations of the iteration matrix
 };
 
 /// What one step() call did.

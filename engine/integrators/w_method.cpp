@@ -203,6 +203,11 @@ StepStatus WMethod2::step(double t_max) {
   if (!have_jacobian_ || steps_since_jacobian_ >= options_.jacobian_refresh_steps ||
       regime != jacobian_regime_) {
     evaluate_jacobian(regime);
+  } else if (use_schur_ && !jacobian_override_ && options_.velocity_jacobian_steps > 0 &&
+             steps_since_jacobian_ % options_.velocity_jacobian_steps == 0 &&
+             system_->velocity_jacobian(jacobian_)) {
+    factored_ = false;  // W changed: its velocity block is new
+    ++stats_.velocity_jacobian_updates;
   }
   // W built for a step within 1e-12 (relative) is kept: same as J scaled by h_factored / h,
   // and a W-method is order 2 for any J.

@@ -12,7 +12,10 @@
 //   K1 = W⁻¹ [f(t, y) + γh f_t],   K2 = W⁻¹ [f(t + h, y + h K1) − 2 K1 − γh f_t].
 // J is frozen: it is re-evaluated on the first step, every `jacobian_refresh_steps` accepted steps
 // and whenever the system's regime() (seen after f(t, y)) differs from the one at the last
-// Jacobian evaluation.
+// Jacobian evaluation. In between, every `velocity_jacobian_steps` steps, the velocity block
+// ∂v'/∂v alone is replaced by the system's closed form at (t, y) where it offers one
+// (OdeSystem::velocity_jacobian; a mechanical system's damping and friction, which the contacts
+// switch on and off with the rates' signs), and W is refactored.
 //
 // For a second-order system y = (q, v), q' = v (n = dofs() > 0), J = [[0, I], [A_q, A_v]] and
 // W x = r is solved through the n×n Schur complement
@@ -57,9 +60,9 @@ class WMethod2 final : public Integrator {
   explicit WMethod2(const IntegratorOptions& options);
 
   /// Replaces the finite-difference Jacobian (e.g. a deliberately wrong one in tests, or an
-  /// analytic one). Called at the same refresh points. For dofs() > 0 only the lower rows
-  /// (A_q, A_v) are used: the upper rows are [0 I] by construction. Pass {} to restore the
-  /// finite differences.
+  /// analytic one). Called at the same refresh points; the system's velocity block is then not
+  /// used. For dofs() > 0 only the lower rows (A_q, A_v) are used: the upper rows are [0 I] by
+  /// construction. Pass {} to restore the finite differences.
   void set_jacobian_override(JacobianFunction jacobian);
 
   /// Includes the γh·f_t terms, f_t = ∂f/∂t by a forward difference in t at every step

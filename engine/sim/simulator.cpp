@@ -27,6 +27,7 @@ Simulator::Simulator(std::shared_ptr<const ActionModel> model,
   q0_ = q1_;
   v0_ = v1_;
   dynamics_->contact_penetrations(q1_, penetration_);
+  penetration_exact_ = true;
 }
 
 void Simulator::restart_integrator() {
@@ -48,6 +49,7 @@ void Simulator::set_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
   restart_integrator();
   dynamics_->contact_penetrations(q1_, penetration_);
+  penetration_exact_ = true;
 }
 
 void Simulator::set_input(std::shared_ptr<const KeyInput> input) {
@@ -100,11 +102,20 @@ bool Simulator::step(double t_max) {
       return false;
     }
   }
-  dynamics_->contact_penetrations(q1_, next_penetration_);
+  dynamics_->contact_penetration_bounds(q1_, next_penetration_);
   check_penetrations();
   detect_events();
   std::swap(penetration_, next_penetration_);
+  penetration_exact_ = false;
   return !stopped_;
+}
+
+const std::vector<double>& Simulator::contact_penetrations() {
+  if (!penetration_exact_) {
+    dynamics_->contact_penetrations(q1_, penetration_);
+    penetration_exact_ = true;
+  }
+  return penetration_;
 }
 
 bool Simulator::advance_to(double t) {

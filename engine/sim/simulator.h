@@ -55,7 +55,8 @@ class Simulator {
   bool stopped() const { return stopped_; }
   const std::string& stop_cause() const { return stop_cause_; }
   /// Signed contact penetrations at time() (m; < 0: the gap still open), by contact index.
-  const std::vector<double>& contact_penetrations() const { return penetration_; }
+  /// Computed on the first call after a step: the steps themselves only need their signs.
+  const std::vector<double>& contact_penetrations();
   /// Events found so far, in time order.
   const std::vector<SimEvent>& events() const { return events_; }
   /// Events found by the latest step() call.
@@ -96,7 +97,10 @@ class Simulator {
 
   double t0_ = 0.0, t1_ = 0.0;
   DofVector q0_, v0_, q1_, v1_;
-  std::vector<double> penetration_;       // at t1_
+  // at t1_: exact where a contact may touch, a negative bound where it is surely apart (enough
+  // for the events and the limit check; contact_penetrations() makes them exact on demand)
+  std::vector<double> penetration_;
+  bool penetration_exact_ = false;
   std::vector<double> next_penetration_;  // scratch: at the end of the step being taken
   bool stopped_ = false;
   std::string stop_cause_;

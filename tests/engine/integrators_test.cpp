@@ -117,6 +117,32 @@ class EngagingDamper final : public OdeSystem {
   bool engaged_ = false;
 };
 
+// q' = v, v' = −d(t) (v − u(t)) + u'(t), u = −sin t: the exact solution from q = 1, v = 0 is
+// q = cos t, v = −sin t. The damping d steps from 1 to 1e4 s⁻¹ at t = 0.5 with no regime signal;
+// the system offers the closed-form velocity block ∂v'/∂v = −d at its latest rhs() (a damper
+// that a rate's sign switches on, like a felt's hysteresis).
+class SilentDamper final : public OdeSystem {
+ public:
+  explicit SilentDamper(bool offer_velocity_block) : offer_(offer_velocity_block) {}
+  int dimension() const override { return 2; }
+  int dofs() const override { return 1; }
+  void rhs(double t, const StateVector& y, StateVector& dydt) override {
+    damping_ = t >= 0.5 ? 1e4 : 1.0;
+    dydt.resize(2);
+    dydt[0] = y[1];
+    dydt[1] = -damping_ * (y[1] + std::sin(t)) - std::cos(t);
+  }
+  bool velocity_jacobian(StateMatrix& jacobian) override {
+    if (!offer_) return false;
+    jacobian(1, 1) = -damping_;
+    return true;
+  }
+
+ private:
+  bool offer_;
+  double damping_ = 1.0;
+};
+
 // y' = −y, with regime() = ⌊t / 0.1⌋ of the latest rhs call: 9 changes on [0, 1).
 class TimeRegimes final : public OdeSystem {
  public:
@@ -280,6 +306,7 @@ TEST(WMethod2, StiffProblemStableAndAccurate) {
   StiffCosine system(-1e5);
   IntegratorOptions options;
   options.fixed_step_s = 1e-3;
+  options.jacobian_refresh_steps = 20;
   WMethod2 w2(options);
   const StateVector y = integrate(w2, system, vec({1.0}), 1.0);
   EXPECT_EQ(w2.stats().steps, 1000);
@@ -296,6 +323,7 @@ TEST(WMethod2, StiffProblemWithTimeDerivative) {
   StiffCosine system(-1e5);
   IntegratorOptions options;
   options.fixed_step_s = 1e-3;
+  options.jacobian_refresh_steps = 20;
   WMethod2 w2(options);
   w2.set_time_derivative(true);
   const StateVector y = integrate(w2, system, vec({1.0}), 1.0);
@@ -345,6 +373,34 @@ TEST(WMethod2, RegimeRefreshKeepsStiffenedSystemStable) {
     while (w2.time() < 1.0 && !failed) failed = w2.step(1.0) != StepStatus::Ok;
     EXPECT_TRUE(failed || std::abs(w2.state()[0]) > 10.0) << w2.state()[0];
     EXPECT_EQ(w2.stats().jacobian_updates, 1);
+  }
+}
+
+TEST(WMethod2, VelocityBlockRefreshKeepsASilentlyStiffenedDamperStable) {
+  IntegratorOptions options;
+  options.fixed_step_s = 1e-2;  // h d = 100 once the damper is on
+  options.jacobian_refresh_steps = 1'000'000;
+  options.velocity_jacobian_steps = 5;
+  {
+    // The velocity block is renewed within 5 steps of the change: stable and accurate (the
+    // error is the W-method's O(h²) plus the lag of the stiff rate behind its input, ~h·|u'|).
+    SilentDamper system(true);
+    WMethod2 w2(options);
+    const StateVector y = integrate(w2, system, vec({1.0, 0.0}), 1.0);
+    EXPECT_EQ(w2.stats().jacobian_updates, 1);
+    EXPECT_EQ(w2.stats().velocity_jacobian_updates, 19);  // steps 5, 10, …, 95
+    EXPECT_NEAR(y[0], std::cos(1.0), 1e-3);
+    EXPECT_NEAR(y[1], -std::sin(1.0), 1e-2);
+  }
+  {
+    // Without it the block of the first step (d = 1) stays and the solution blows up.
+    SilentDamper system(false);
+    WMethod2 w2(options);
+    w2.initialize(system, 0.0, vec({1.0, 0.0}));
+    bool failed = false;
+    while (w2.time() < 1.0 && !failed) failed = w2.step(1.0) != StepStatus::Ok;
+    EXPECT_TRUE(failed || std::abs(w2.state()[1]) > 10.0) << w2.state()[1];
+    EXPECT_EQ(w2.stats().velocity_jacobian_updates, 0);
   }
 }
 
