@@ -78,6 +78,13 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
           [this](const QCPRange& range) {
             if (!setting_range_) emit userChangedTimeRange(range.lower, range.upper);
           });
+  // a marker's label sits on the side of its line that has more room (never cut at the edge)
+  connect(plot_, &QCustomPlot::beforeReplot, this, [this] {
+    const double middle = plot_->xAxis->range().center();
+    for (auto& [line, text] : markers_)
+      text->setPositionAlignment(
+          (line->point1->coords().x() > middle ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
+  });
   connect(plot_, &QCustomPlot::mousePress, this,
           [this](QMouseEvent* event) { press_position_ = event->pos(); });
   connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent* event) {
@@ -284,6 +291,27 @@ void PlotPanel::set_points_only(int series) {
   QCPGraph* graph = series_.at(series).graph;
   graph->setLineStyle(QCPGraph::lsNone);
   graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 6));
+}
+
+void PlotPanel::add_marker(double x, const QString& label) {
+  const QColor colour(120, 120, 120);
+  auto* line = new QCPItemStraightLine(plot_);
+  line->setPen(QPen(colour, 1.5, Qt::DashDotLine));
+  line->point1->setCoords(x, 0.0);
+  line->point2->setCoords(x, 1.0);
+  auto* text = new QCPItemText(plot_);
+  text->position->setTypeX(QCPItemPosition::ptPlotCoords);
+  text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+  // below the legend's first row, one line further down for each earlier marker
+  text->position->setCoords(x, 0.12 + 0.09 * double(markers_.size() % 4));
+  text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+  text->setText(label);
+  text->setFont(readout_->font());
+  text->setColor(colour.darker(160));
+  text->setBrush(QColor(255, 255, 255, 200));
+  text->setPadding(QMargins(3, 1, 3, 1));
+  markers_.emplace_back(line, text);
+  request_replot();
 }
 
 CsvTable PlotPanel::visible_table() const {

@@ -50,6 +50,10 @@ class PlotPanel : public QWidget {
   void set_x_categories(const std::vector<QString>& names);
   /// Draws a series as markers without a line (one result per cycle or per case).
   void set_points_only(int series);
+  /// A labelled vertical line at x (the maximum frequency of a sweep, an impact); labels of
+  /// successive markers are stacked downwards so that close ones stay readable.
+  void add_marker(double x, const QString& label);
+  int marker_count() const { return static_cast<int>(markers_.size()); }
 
   QString title() const { return title_; }
   void set_x_range(double lo, double hi);
@@ -98,6 +102,7 @@ class PlotPanel : public QWidget {
     QString label, column;
   };
   std::vector<Series> series_;
+  std::vector<std::pair<QCPItemStraightLine*, QCPItemText*>> markers_;
   QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
   QCPItemText* readout_ = nullptr;
   std::optional<double> cursors_[2];

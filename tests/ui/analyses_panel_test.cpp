@@ -82,6 +82,11 @@ void AnalysesPanelTest::every_analysis_runs_from_the_window_for_both_actions() {
     pat::ui::AnalysesPanel* panel = window.analyses();
     QVERIFY(panel->analysis_names().size() >= 2);
     for (const QString& name : panel->analysis_names()) {
+      // the studies that take settings (measured files, long sweeps) run with short settings
+      // in analysis_studies_test
+      if (name == "Repetition-frequency sweep" || name == "Upright vs grand" ||
+          name == "Diagnosis of measured data")
+        continue;
       QVERIFY2(panel->run(name), qPrintable(name));
       QVERIFY2(wait_until([&] { return !panel->runner()->running(); }, 120000), qPrintable(name));
       const QString summary = panel->summary();
