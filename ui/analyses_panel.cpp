@@ -14,6 +14,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSplitter>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTextStream>
@@ -83,8 +84,17 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setMinimumHeight(70);
   plot_tabs_ = new QTabWidget(this);
-  plot_tabs_->setMinimumHeight(220);
+  plot_tabs_->setMinimumHeight(200);
+  // the table and the plots share the height; the user drags the handle between them
+  auto* results = new QSplitter(Qt::Vertical, this);
+  results->setChildrenCollapsible(false);
+  results->addWidget(table_);
+  results->addWidget(plot_tabs_);
+  results->setStretchFactor(0, 1);
+  results->setStretchFactor(1, 3);
+  results->setSizes({90, 1000});  // the plots first: the summary line says the headline
   export_plots_ = new QPushButton(tr("Export plots…"), this);
   export_table_ = new QPushButton(tr("Export table (CSV)…"), this);
   export_report_ = new QPushButton(tr("Export report…"), this);
@@ -117,8 +127,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   layout->addWidget(progress_);
   layout->addWidget(stage_);
   layout->addWidget(summary_);
-  layout->addWidget(table_, 1);
-  layout->addWidget(plot_tabs_, 2);
+  layout->addWidget(results, 1);
   layout->addLayout(export_row);
 
   connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
@@ -191,7 +200,8 @@ const AnalysisEntry* AnalysesPanel::chosen_entry() const {
 }
 
 void AnalysesPanel::remember(const QString& key, const QVariant& value) {
-  if (const AnalysisEntry* entry = chosen_entry()) remembered_[entry->name + '/' + key] = value;
+  if (const AnalysisEntry* entry = chosen_entry())
+    remembered_[entry->name + '/' + form_kind_ + '/' + key] = value;
 }
 
 void AnalysesPanel::rebuild_form(const ActionModel* model) {
@@ -200,10 +210,11 @@ void AnalysesPanel::rebuild_form(const ActionModel* model) {
   file_problems_->clear();
   file_problems_->hide();
   const AnalysisEntry* entry = chosen_entry();
+  form_kind_ = model ? QString::fromStdString(model->kind) : QString();
   form_host_->setVisible(entry && !entry->parameters.empty());
   if (!entry) return;
   for (const AnalysisParameter& p : entry->parameters) {
-    const QVariant kept = remembered_.value(entry->name + '/' + p.key);
+    const QVariant kept = remembered_.value(entry->name + '/' + form_kind_ + '/' + p.key);
     QWidget* editor = nullptr;
     switch (p.kind) {
       case AnalysisParameter::Kind::choice: {
@@ -251,7 +262,7 @@ void AnalysesPanel::rebuild_form(const ActionModel* model) {
           item->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
           item->setCheckState(ticked.contains(name) ? Qt::Checked : Qt::Unchecked);
         }
-        list->setMaximumHeight(110);
+        list->setMaximumHeight(84);
         connect(list, &QListWidget::itemChanged, this,
                 [this, list, key = p.key] { remember(key, checked_items(list)); });
         editor = list;
@@ -326,8 +337,8 @@ bool AnalysesPanel::set_parameter(const QString& key, const QVariant& value) {
     if (bad.isEmpty()) {
       good << path;
       names << QFileInfo(path).fileName();
-    } else {
-      problems << bad;
+    } else {  // the message names the file; its name is enough in the narrow dock
+      for (QString message : bad) problems << message.replace(path, QFileInfo(path).fileName());
     }
   }
   editor->setProperty(kPathsProperty, good);
@@ -447,7 +458,8 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
     for (const AnalysisMarker& m : p.markers) panel->add_marker(m.x, m.label);
     panel->fit_all();
     plots_.push_back(panel);
-    plot_tabs_->addTab(panel, p.title);
+    plot_tabs_->addTab(panel, p.tab.isEmpty() ? p.title : p.tab);
+    plot_tabs_->setTabToolTip(plot_tabs_->count() - 1, p.title);
   }
   for (const AnalysisGrid& grid : result.grids) add_grid(grid);
   result_ = result;

@@ -100,7 +100,10 @@ class AnalysesPanel : public QWidget {
   QFormLayout* form_;
   QLabel* file_problems_;
   std::map<QString, QWidget*> editors_;  ///< the chosen analysis's settings, by key
-  QVariantMap remembered_;               ///< "analysis/key" → the value last set
+  /// "analysis/kind/key" → the value last set (per action kind: candidates, files and
+  /// frequencies differ between the grand and the upright)
+  QVariantMap remembered_;
+  QString form_kind_;  ///< the kind of action the form was built for
   std::vector<PlotPanel*> plots_;
   std::vector<QTableWidget*> grids_;
   AnalysisResult result_;

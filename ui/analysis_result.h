@@ -40,6 +40,7 @@ struct AnalysisPlot {
   std::vector<AnalysisSeries> series;
   std::vector<QString> x_categories;  ///< names of x = 0, 1, … (empty: numeric x)
   std::vector<AnalysisMarker> markers;
+  QString tab;  ///< short name on its tab (empty: the title); the dock is narrow
 };
 
 /// A table with its own columns (a ranking, the cycles of a sweep), shown in a tab of its own.

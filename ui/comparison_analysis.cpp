@@ -27,14 +27,16 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
   const QString input = QString::fromStdString(o.input);
   struct Overlaid {
     const char* column;
-    QString title, y_title;
+    QString title, tab, y_title;
   };
-  const Overlaid overlaid[] = {
-      {"key_angle_deg", QObject::tr("Key angle"), QObject::tr("key angle from rest (deg)")},
-      {"hammer_angle_deg", QObject::tr("Hammer angle"),
-       QObject::tr("hammer angle from rest (deg)")},
-      {"hammer_string_gap_mm", QObject::tr("Hammer–string gap"), QObject::tr("gap (mm)")},
-      {"finger_force_n", QObject::tr("Force at the key front"), QObject::tr("force (N)")}};
+  const Overlaid overlaid[] = {{"key_angle_deg", QObject::tr("Key angle"), QObject::tr("Key"),
+                                QObject::tr("key angle (deg)")},
+                               {"hammer_angle_deg", QObject::tr("Hammer angle"),
+                                QObject::tr("Hammer"), QObject::tr("hammer angle (deg)")},
+                               {"hammer_string_gap_mm", QObject::tr("Hammer–string gap"),
+                                QObject::tr("Gap"), QObject::tr("gap (mm)")},
+                               {"finger_force_n", QObject::tr("Force at the key front"),
+                                QObject::tr("Force"), QObject::tr("force (N)")}};
   std::vector<AnalysisMarker> impacts;
   for (const ActionComparison& a : r.actions)
     if (a.first_impact)
@@ -46,6 +48,7 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
       plot.series.push_back(
           trace_series(r.overlay, a.action + "_" + o_.column, QString::fromStdString(a.action)));
     plot.markers = impacts;
+    plot.tab = o_.tab;
     result.plots.push_back(plot);
   }
 
@@ -53,10 +56,11 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
                       QObject::tr("stroke"),
                       "stroke_index",
                       "",
-                      QObject::tr("maximum repetition frequency (Hz)"),
+                      QObject::tr("max. frequency (Hz)"),
                       {},
                       {QObject::tr("full stroke"), QObject::tr("half stroke")},
-                      {}};
+                      {},
+                      QObject::tr("Limits")};
   QStringList impact_words;
   for (const ActionComparison& a : r.actions) {
     const QString name = QString::fromStdString(a.action);

@@ -42,6 +42,38 @@ std::vector<double> rms_by_phase(const Diagnosis& d, bool extended) {
   return rms;
 }
 
+/// An effect's name for a category axis, on lines of about a dozen characters so that four
+/// candidates fit side by side: "joint_friction.hammer" → "friction:\nhammer" (the Ranking
+/// table keeps the full names).
+QString effect_label(const std::string& effect) {
+  QString name = QString::fromStdString(effect);
+  const int dot = name.indexOf('.');
+  if (dot >= 0) {
+    const QString family = name.left(dot);
+    const QString short_family = family == "joint_friction"      ? QObject::tr("friction")
+                                 : family == "felt_stiffness"    ? QObject::tr("felt")
+                                 : family == "regulation_offset" ? QObject::tr("offset")
+                                                                 : family;
+    name = short_family + ": " + name.mid(dot + 1);
+  }
+  QStringList lines;
+  for (const QString& word : name.replace('_', ' ').split(' ', Qt::SkipEmptyParts)) {
+    if (!lines.isEmpty() && lines.back().size() + 1 + word.size() <= 12)
+      lines.back() += ' ' + word;
+    else
+      lines << word;
+  }
+  return lines.join('\n');
+}
+
+/// A phase's name short enough for a category axis (the CSV keeps the engine's names).
+QString phase_label(const std::string& phase) {
+  if (phase == "acceleration") return QObject::tr("accel.");
+  if (phase == "free_flight") return QObject::tr("flight");
+  if (phase == "rebound_and_check") return QObject::tr("check");
+  return QString::fromStdString(phase);
+}
+
 AnalysisSeries phase_series(const QString& label, const QString& column,
                             const std::vector<double>& rms) {
   AnalysisSeries s{label, column, {}, {}, true};
@@ -98,6 +130,7 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
   AnalysisSeries residuals_base{QObject::tr("baseline"), "residual_baseline_deg", {}, {}, false};
   AnalysisPlot residuals =
       time_plot(QObject::tr("Residuals (measured − model)"), QObject::tr("residual (deg)"), {});
+  residuals.tab = QObject::tr("Residuals");
   for (const TrialReport& r : d.trials) {
     const QString name = file_name(r.path);
     AnalysisSeries measured{QObject::tr("measured"), "measured_deg", r.data.t, r.data.hammer_deg,
@@ -107,9 +140,9 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                             r.baseline_alignment.residual, false};
     for (std::size_t i = 0; i < r.data.t.size(); ++i)
       baseline.y.push_back(r.data.hammer_deg[i] - r.baseline_alignment.residual[i]);
-    AnalysisPlot overlay =
-        time_plot(QObject::tr("%1: measured vs model").arg(name),
-                  QObject::tr("hammer angle from rest (deg)"), {measured, baseline});
+    AnalysisPlot overlay = time_plot(QObject::tr("%1: measured vs model").arg(name),
+                                     QObject::tr("hammer angle (deg)"), {measured, baseline});
+    overlay.tab = QFileInfo(name).completeBaseName();
     residuals.series.push_back(base_res);
     if (!r.extended.hammer_deg.empty()) {
       AnalysisSeries extended{QObject::tr("extended model"), "extended_deg", r.data.t, {}, false};
@@ -127,7 +160,7 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
 
   // residuals by phase, pooled over the trials
   std::vector<QString> phases;
-  for (const std::string& p : phase_names()) phases.push_back(QString::fromStdString(p));
+  for (const std::string& p : phase_names()) phases.push_back(phase_label(p));
   AnalysisPlot by_phase{
       QObject::tr("Residual by phase"),
       QObject::tr("phase of the stroke"),
@@ -136,7 +169,8 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
       QObject::tr("residual rms (deg)"),
       {phase_series(QObject::tr("baseline"), "baseline_rms_deg", rms_by_phase(d, false))},
       phases,
-      {}};
+      {},
+      QObject::tr("By phase")};
   if (has_cause)
     by_phase.series.push_back(
         phase_series(QObject::tr("extended"), "extended_rms_deg", rms_by_phase(d, true)));
@@ -147,10 +181,11 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                        QObject::tr("candidate (best first)"),
                        "rank_index",
                        "",
-                       QObject::tr("%1 rms error (deg)").arg(error_kind),
+                       QObject::tr("%1 rms (deg)").arg(error_kind),
                        {},
                        {},
-                       {}};
+                       {},
+                       QObject::tr("Ranking plot")};
   AnalysisSeries validated{QObject::tr("candidate, fitted"), "validated_rms_deg", {}, {}, true};
   AnalysisSeries base_line{
       QObject::tr("baseline (no extension)"), "baseline_rms_deg", {}, {}, false};
@@ -169,12 +204,12 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
          std::isfinite(c.delta_bic) ? number(c.delta_bic) : QObject::tr("—"),
          QString::fromStdString(c.note)});
     if (!std::isfinite(c.validated_rms_deg)) continue;
-    ranking.x_categories.push_back(QString::fromStdString(c.effect));
+    ranking.x_categories.push_back(effect_label(c.effect));
     validated.x.push_back(double(ranking.x_categories.size() - 1));
     validated.y.push_back(c.validated_rms_deg);
   }
   if (!validated.x.empty()) {
-    base_line.x = {validated.x.front(), validated.x.back()};
+    base_line.x = {-0.5, validated.x.back() + 0.5};  // across every category
     base_line.y = {d.baseline_rms_deg, d.baseline_rms_deg};
     ranking.series = {validated, base_line};
     result.plots.push_back(ranking);

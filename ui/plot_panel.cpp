@@ -164,18 +164,28 @@ void PlotPanel::fit_values() {
     any = true;
   }
   if (!any) return;
+  // categories compare sizes (errors, frequencies, changes): the axis shows zero
+  if (categories_ > 0) range = QCPRange(std::min(range.lower, 0.0), std::max(range.upper, 0.0));
   // a flat line gets a visible band around it
   if (range.size() < 1e-9) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
   // headroom at the top for the legend
   const int legend_rows = (series_count() + 2) / 3;
   const double pad = 0.08 * range.size();
-  plot_->yAxis->setRange(range.lower - pad, range.upper + pad + 0.3 * legend_rows * range.size());
+  // (categories: few points, often in the middle where the legend is; more room)
+  const double headroom = (categories_ > 0 ? 0.5 : 0.3) * legend_rows * range.size();
+  plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
 }
 
 void PlotPanel::fit_all() {
   setting_range_ = true;
   plot_->rescaleAxes();
-  if (categories_ > 0) plot_->xAxis->setRange(-0.5, double(categories_) - 0.5);
+  if (categories_ > 0) {
+    plot_->xAxis->setRange(-0.5, double(categories_) - 0.5);
+  } else if (points_only_) {  // whole markers at both ends
+    const QCPRange r = plot_->xAxis->range();
+    const double pad = std::max(0.02 * r.size(), 1e-9);
+    plot_->xAxis->setRange(r.lower - pad, r.upper + pad);
+  }
   setting_range_ = false;
   fit_values();
 }
@@ -291,6 +301,7 @@ void PlotPanel::set_points_only(int series) {
   QCPGraph* graph = series_.at(series).graph;
   graph->setLineStyle(QCPGraph::lsNone);
   graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 6));
+  points_only_ = true;
 }
 
 void PlotPanel::add_marker(double x, const QString& label) {
@@ -300,10 +311,13 @@ void PlotPanel::add_marker(double x, const QString& label) {
   line->point1->setCoords(x, 0.0);
   line->point2->setCoords(x, 1.0);
   auto* text = new QCPItemText(plot_);
+  // y in pixels below the top of the plot area (the readout's anchor sits there): under the
+  // legend's first row, one text line further down for each earlier marker
   text->position->setTypeX(QCPItemPosition::ptPlotCoords);
-  text->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-  // below the legend's first row, one line further down for each earlier marker
-  text->position->setCoords(x, 0.12 + 0.09 * double(markers_.size() % 4));
+  text->position->setParentAnchorY(readout_->position);
+  text->position->setTypeY(QCPItemPosition::ptAbsolute);
+  const double line_px = QFontMetrics(readout_->font()).height() + 4.0;
+  text->position->setCoords(x, line_px * (1.5 + double(markers_.size() % 5)));
   text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
   text->setText(label);
   text->setFont(readout_->font());

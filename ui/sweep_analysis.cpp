@@ -129,19 +129,27 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
     for (const CycleResult& c : r.cycles)
       if (r.max_frequency_hz && c.frequency_hz == *r.max_frequency_hz)
         time_marker.push_back({c.t_end_s, frequency_marker.front().label});
-    AnalysisPlot motion =
-        time_plot(QObject::tr("Key and hammer during the chirp (%1 Hz + %2 Hz/s × t)")
-                      .arg(number(o.f_start_hz))
-                      .arg(number(o.chirp_rate_hz_per_s)),
-                  QObject::tr("angle from rest (deg)"),
-                  {trace_series(r.trace, "key_angle_deg", QObject::tr("key")),
-                   trace_series(r.trace, "hammer_angle_deg", QObject::tr("hammer"))});
-    motion.markers = time_marker;
-    AnalysisPlot gap =
-        time_plot(QObject::tr("Hammer–string gap during the chirp"), QObject::tr("gap (mm)"),
-                  {trace_series(r.trace, "hammer_string_gap_mm", QObject::tr("gap"))});
-    gap.markers = time_marker;
-    result.plots = {motion, gap};
+    // the key's few degrees and the hammer's tens each get their own axis
+    const QString chirp_time = QObject::tr("time (s); the key at %1 Hz + %2 Hz/s × t")
+                                   .arg(number(o.f_start_hz))
+                                   .arg(number(o.chirp_rate_hz_per_s));
+    const auto chirp_plot = [&](const QString& title, const QString& tab, const QString& y_title,
+                                AnalysisSeries series) {
+      AnalysisPlot plot = time_plot(title, y_title, {std::move(series)});
+      plot.x_title = chirp_time;
+      plot.markers = time_marker;
+      plot.tab = tab;
+      return plot;
+    };
+    result.plots = {chirp_plot(QObject::tr("Hammer during the chirp"), QObject::tr("Hammer"),
+                               QObject::tr("hammer angle (deg)"),
+                               trace_series(r.trace, "hammer_angle_deg", QObject::tr("hammer"))),
+                    chirp_plot(QObject::tr("Key during the chirp"), QObject::tr("Key"),
+                               QObject::tr("key angle (deg)"),
+                               trace_series(r.trace, "key_angle_deg", QObject::tr("key"))),
+                    chirp_plot(QObject::tr("Hammer–string gap during the chirp"),
+                               QObject::tr("Gap"), QObject::tr("gap (mm)"),
+                               trace_series(r.trace, "hammer_string_gap_mm", QObject::tr("gap")))};
     grid.title = QObject::tr("Cycles");
     grid.columns = {QObject::tr("start (s)"), QObject::tr("frequency (Hz)"), QObject::tr("strikes"),
                     QObject::tr("outcome"), QObject::tr("judged")};
@@ -164,7 +172,8 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
                           QObject::tr("failed cycles (of %1)").arg(o.window_cycles),
                           {failed},
                           {},
-                          frequency_marker};
+                          frequency_marker,
+                          QObject::tr("Failures")};
     result.plots = {failures};
     grid.title = QObject::tr("Frequencies");
     grid.columns = {QObject::tr("frequency (Hz)"), QObject::tr("passed"),
@@ -181,10 +190,11 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
                           QObject::tr("key frequency (Hz)"),
                           "frequency_hz",
                           "Hz",
-                          QObject::tr("strikes per cycle (1 = success)"),
+                          QObject::tr("strikes (1 = success)"),
                           {strikes},
                           {},
-                          frequency_marker});
+                          frequency_marker,
+                          QObject::tr("Strikes")});
   result.plots.push_back({QObject::tr("Hammer speed at each strike"),
                           QObject::tr("key frequency (Hz)"),
                           "frequency_hz",
@@ -192,7 +202,8 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
                           QObject::tr("hammer speed (m/s)"),
                           {velocity},
                           {},
-                          frequency_marker});
+                          frequency_marker,
+                          QObject::tr("Speed")});
   result.grids.push_back(grid);
   return result;
 }
