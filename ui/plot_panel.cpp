@@ -171,8 +171,8 @@ void PlotPanel::fit_values() {
   // headroom at the top for the legend
   const int legend_rows = (series_count() + 2) / 3;
   const double pad = 0.08 * range.size();
-  // (categories: few points, often in the middle where the legend is; more room)
-  const double headroom = (categories_ > 0 ? 0.5 : 0.3) * legend_rows * range.size();
+  // (categories: the legend is under the plot)
+  const double headroom = categories_ > 0 ? 0.0 : 0.3 * legend_rows * range.size();
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
 }
 
@@ -295,6 +295,15 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   plot_->xAxis->setTicker(ticker);
   plot_->xAxis->setTickLabelRotation(names.size() > 4 ? 30 : 0);
   categories_ = names.size();
+  // a few points often sit right where an inset legend would be: the legend goes under the plot
+  if (plot_->axisRect()->insetLayout()->take(plot_->legend)) {
+    plot_->axisRect()->insetLayout()->simplify();
+    const int row = plot_->plotLayout()->rowCount();
+    plot_->plotLayout()->addElement(row, 0, plot_->legend);
+    plot_->plotLayout()->setRowStretchFactor(row, 0.001);
+    plot_->legend->setMargins(QMargins(6, 0, 6, 4));
+    plot_->legend->setBorderPen(Qt::NoPen);
+  }
 }
 
 void PlotPanel::set_points_only(int series) {
