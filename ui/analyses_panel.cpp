@@ -441,6 +441,7 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
     const AnalysisTableRow& row = result.table[r];
     table_->setItem(r, 0, new QTableWidgetItem(row.quantity));
     table_->setItem(r, 1, new QTableWidgetItem(row.value));
+    table_->item(r, 1)->setToolTip(row.value);  // long values (errors in words) in full
     table_->setItem(r, 2, new QTableWidgetItem(row.unit));
   }
   table_->resizeColumnToContents(0);

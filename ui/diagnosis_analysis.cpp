@@ -94,10 +94,13 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                                         .arg(number(d.cause->value))
                                         .arg(QString::fromStdString(d.cause_unit))
                                   : QObject::tr("none beyond the noise");
+  const QString error_kind = d.held_out ? QObject::tr("held-out") : QObject::tr("training");
   result.summary = has_cause
-                       ? QObject::tr(
-                             "cause %1; the error on held-out trials falls from %2 to %3 deg "
-                             "(gain %4 %).")
+                       ? (d.held_out ? QObject::tr("cause %1; the error on held-out trials "
+                                                   "falls from %2 to %3 deg (gain %4 %).")
+                                     : QObject::tr("cause %1; the error on the single "
+                                                   "trial (no held-out data) falls from %2 "
+                                                   "to %3 deg (gain %4 %)."))
                              .arg(cause)
                              .arg(number(d.baseline_rms_deg))
                              .arg(number(d.extended_rms_deg))
@@ -107,7 +110,6 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                              "deg): cause null.")
                              .arg(number(d.baseline_rms_deg))
                              .arg(number(d.noise_deg));
-  const QString error_kind = d.held_out ? QObject::tr("held-out") : QObject::tr("training");
   result.table = {
       {QObject::tr("cause"), cause, ""},
       {QObject::tr("baseline error (%1 rms)").arg(error_kind), number(d.baseline_rms_deg), "deg"},
@@ -120,11 +122,11 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
   for (const TrialReport& r : d.trials)
     for (const MeasuredEvent& e : r.measured_events)
       result.table.push_back(
-          {QObject::tr("%1: measured %2").arg(file_name(r.path), QString::fromStdString(e.type)),
-           QObject::tr("t = %1 ms").arg(number(e.t * 1e3, 4)), "ms"});
+          {QObject::tr("measured %1").arg(QString::fromStdString(e.type)),
+           QObject::tr("t = %1 ms in %2").arg(number(e.t * 1e3, 4), file_name(r.path)), ""});
   for (std::size_t i = 0; i < d.discrepancies.size() && i < 10; ++i)
-    result.table.push_back({QObject::tr("what the model gets wrong (%1)").arg(i + 1),
-                            QString::fromStdString(d.discrepancies[i]), ""});
+    result.table.push_back(
+        {QObject::tr("model error %1").arg(i + 1), QString::fromStdString(d.discrepancies[i]), ""});
 
   // measured vs baseline vs extended, one plot per trial, the measured events marked
   AnalysisSeries residuals_base{QObject::tr("baseline"), "residual_baseline_deg", {}, {}, false};
