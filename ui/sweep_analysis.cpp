@@ -3,8 +3,7 @@
 // so that the key and hammer can be watched losing the beat; steps: one run per frequency on
 // both cores.
 #include <QObject>
-#include <algorithm>
-#include <cmath>
+#include <utility>
 
 #include "analysis/repetition_sweep.h"
 #include "analysis_entries.h"
@@ -45,7 +44,8 @@ SweepOptions sweep_options(const AnalysisSettings& settings) {
 }
 
 /// Judged cycles as points: strikes per cycle and the hammer speed at each strike, over the
-/// cycle's frequency (chirp) or the run's frequency (steps).
+/// cycle's frequency (chirp) or the run's frequency (steps). Both rise from point to point (a
+/// chirp's cycles shorten with time; the steps come in increasing order), as plots need.
 void add_cycle_points(const std::vector<CycleResult>& cycles, double run_frequency_hz,
                       AnalysisSeries& strikes, AnalysisSeries& velocity) {
   for (const CycleResult& c : cycles) {
@@ -58,17 +58,6 @@ void add_cycle_points(const std::vector<CycleResult>& cycles, double run_frequen
       velocity.y.push_back(c.strike_velocity_mps);
     }
   }
-}
-
-/// Sorts a series by x (steps' cycles come per frequency, already in order; kept for safety).
-void sort_by_x(AnalysisSeries& s) {
-  std::vector<std::size_t> order(s.x.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return s.x[a] < s.x[b]; });
-  std::vector<double> x, y;
-  for (std::size_t i : order) x.push_back(s.x[i]), y.push_back(s.y[i]);
-  s.x = std::move(x);
-  s.y = std::move(y);
 }
 
 AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
@@ -184,8 +173,6 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
            QString::number(f.failed_cycles),
            f.run_status == "ok" ? QObject::tr("ok") : QString::fromStdString(f.stop_cause)});
   }
-  sort_by_x(strikes);
-  sort_by_x(velocity);
   result.plots.push_back({QObject::tr("Strikes per cycle"),
                           QObject::tr("key frequency (Hz)"),
                           "frequency_hz",
