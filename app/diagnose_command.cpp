@@ -1,173 +1,15 @@
 // pianoaction diagnose: what the model gets wrong on measured data, the cause among the
 // candidate extensions, and the gain (DESIGN.md sections 4 and 5).
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
-#include "io/csv.h"
 #include "measured/diagnosis.h"
+#include "measured/diagnosis_report.h"
 
 namespace pat::app {
-namespace {
-
-nlohmann::json finite_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-}
-
-nlohmann::json diagnosis_json(const Diagnosis& d) {
-  nlohmann::json ranking = nlohmann::json::array();
-  for (const CandidateFit& c : d.ranking) {
-    ranking.push_back({{"effect", c.effect},
-                       {"value", c.completed ? nlohmann::json(c.value) : nlohmann::json(nullptr)},
-                       {"unit", c.unit},
-                       {"fold_values", c.fold_values},
-                       {"validated_rms_deg", finite_or_null(c.validated_rms_deg)},
-                       {"training_rms_deg", finite_or_null(c.training_rms_deg)},
-                       {"delta_bic", finite_or_null(c.delta_bic)},
-                       {"completed", c.completed},
-                       {"note", c.note}});
-  }
-  nlohmann::json events = nlohmann::json::array();
-  nlohmann::json trials = nlohmann::json::array();
-  for (const TrialReport& r : d.trials) {
-    nlohmann::json trial_events = nlohmann::json::array();
-    for (const MeasuredEvent& e : r.measured_events) {
-      nlohmann::json item{
-          {"type", e.type}, {"t_s", e.t}, {"angle_deg", e.angle_deg}, {"file", r.path}};
-      events.push_back(item);
-      trial_events.push_back(item);
-    }
-    nlohmann::json phases = nlohmann::json::array();
-    for (const PhaseResidual& p : r.discrepancies.phases)
-      phases.push_back({{"phase", p.phase},
-                        {"samples", p.samples},
-                        {"rms_deg", p.rms_deg},
-                        {"mean_deg", p.mean_deg}});
-    nlohmann::json features = nlohmann::json::array();
-    for (const FeatureDiscrepancy& f : r.discrepancies.features)
-      features.push_back(
-          {{"feature", f.feature},
-           {"unit", f.unit},
-           {"measured", f.measured_known ? nlohmann::json(f.measured) : nlohmann::json(nullptr)},
-           {"model", f.model},
-           {"difference",
-            f.measured_known ? nlohmann::json(f.difference) : nlohmann::json(nullptr)},
-           {"text", f.text}});
-    trials.push_back(
-        {{"file", r.path},
-         {"input", r.input_spec},
-         {"input_estimated", r.input_estimated},
-         {"noise_deg", r.noise_deg},
-         {"time_offset_ms", r.baseline_alignment.time_offset_s * 1e3},
-         {"angle_offset_deg", r.baseline_alignment.angle_offset_deg},
-         {"baseline_rms_deg", std::sqrt(r.baseline_alignment.rss /
-                                        static_cast<double>(r.baseline_alignment.residual.size()))},
-         {"phases", phases},
-         {"features", features},
-         {"measured_events", trial_events}});
-  }
-  nlohmann::json cause = nullptr;
-  if (d.cause)
-    cause = {{"effect", d.cause->name}, {"value", d.cause->value}, {"unit", d.cause_unit}};
-  return {{"action", d.action},
-          {"baseline_rms_deg", d.baseline_rms_deg},
-          {"extended_rms_deg", d.extended_rms_deg},
-          {"gain", d.gain},
-          {"held_out", d.held_out},
-          {"noise_deg", d.noise_deg},
-          {"cause", cause},
-          {"ranking", ranking},
-          {"discrepancies", d.discrepancies},
-          {"measured_events", events},
-          {"trials", trials},
-          {"simulations", d.simulations},
-          {"wall_time_s", d.wall_time_s}};
-}
-
-/// --report DIR: diagnosis.json, ranking.csv, phases.csv and one <file>_traces.csv per trial
-/// (measured, baseline and extended model aligned, residuals, phase index).
-void write_report(const std::string& dir, const Diagnosis& d, const nlohmann::json& json) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec || !fs::is_directory(dir))
-    throw InputError("--report " + dir + ": cannot create the folder (" + ec.message() + ")");
-  {
-    const std::string path = (fs::path(dir) / "diagnosis.json").string();
-    const std::string tmp = path + ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw InputError("--report: cannot write " + path);
-    const std::string text = json.dump(1) + "\n";
-    std::fwrite(text.data(), 1, text.size(), f);
-    std::fclose(f);
-    fs::rename(tmp, path, ec);
-    if (ec) throw InputError("--report: cannot write " + path + " (" + ec.message() + ")");
-  }
-  CsvTable ranking;
-  ranking.columns = {"rank", "validated_rms_deg", "training_rms_deg", "delta_bic", "value"};
-  std::string order;  // effect names are text: a metadata line lists them in rank order
-  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
-    const CandidateFit& c = d.ranking[i];
-    if (!c.completed) continue;
-    ranking.rows.push_back({static_cast<double>(i + 1), c.validated_rms_deg, c.training_rms_deg,
-                            c.delta_bic, c.value});
-    order += (order.empty() ? "" : " ") + c.effect;
-  }
-  ranking.metadata["effects_by_rank"] = order;
-  ranking.metadata["baseline_rms_deg"] = std::to_string(d.baseline_rms_deg);
-  write_csv((fs::path(dir) / "ranking.csv").string(), ranking);
-
-  const auto& phases = phase_names();
-  CsvTable phase_table;
-  phase_table.columns = {"trial", "phase_index", "samples", "rms_deg", "mean_deg"};
-  std::string phase_list;
-  for (const std::string& p : phases) phase_list += (phase_list.empty() ? "" : " ") + p;
-  phase_table.metadata["phases"] = phase_list;
-  for (std::size_t j = 0; j < d.trials.size(); ++j) {
-    const TrialReport& r = d.trials[j];
-    for (const PhaseResidual& p : r.discrepancies.phases) {
-      const double index =
-          static_cast<double>(std::find(phases.begin(), phases.end(), p.phase) - phases.begin());
-      phase_table.rows.push_back({static_cast<double>(j + 1), index, static_cast<double>(p.samples),
-                                  p.rms_deg, p.mean_deg});
-    }
-    CsvTable traces;
-    traces.metadata["file"] = r.path;
-    traces.metadata["phases"] = phase_list;
-    traces.columns = {"time_s", "measured_deg", "baseline_deg", "residual_baseline_deg",
-                      "phase_index"};
-    const bool extended = !r.extended.hammer_deg.empty();
-    if (extended) {
-      traces.columns.push_back("extended_deg");
-      traces.columns.push_back("residual_extended_deg");
-    }
-    const Alignment& base = r.baseline_alignment;
-    for (std::size_t i = 0; i < r.data.t.size(); ++i) {
-      const double measured = r.data.hammer_deg[i];
-      const double index = static_cast<double>(
-          std::find(phases.begin(), phases.end(), r.discrepancies.phase_of_sample[i]) -
-          phases.begin());
-      std::vector<double> row{r.data.t[i], measured, measured - base.residual[i], base.residual[i],
-                              index};
-      if (extended) {
-        row.push_back(measured - r.extended_alignment.residual[i]);
-        row.push_back(r.extended_alignment.residual[i]);
-      }
-      traces.rows.push_back(std::move(row));
-    }
-    write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
-              traces);
-  }
-  write_csv((fs::path(dir) / "phases.csv").string(), phase_table);
-}
-
-}  // namespace
 
 int run_diagnose(const std::vector<std::string>& args) {
   const CommandLine cl(args,
@@ -185,7 +27,13 @@ int run_diagnose(const std::vector<std::string>& args) {
   const std::string report = cl.value_or("--report", "");
   const Diagnosis d = diagnose(model, trials, options);
   const nlohmann::json json = diagnosis_json(d);
-  if (!report.empty()) write_report(report, d, json);
+  if (!report.empty()) {
+    try {
+      write_diagnosis_report(report, d);
+    } catch (const InputError& e) {
+      throw InputError(std::string("--report ") + e.what());
+    }
+  }
   if (cl.has("--json")) {
     std::cout << json.dump(1) << "\n";
     return 0;

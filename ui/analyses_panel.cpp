@@ -1,14 +1,20 @@
 #include "analyses_panel.h"
 
 #include <QComboBox>
+#include <QDir>
+#include <QDoubleSpinBox>
 #include <QFile>
 #include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QListWidget>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSplitter>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTextStream>
@@ -16,6 +22,7 @@
 
 #include "analysis_runner.h"
 #include "core/error.h"
+#include "plot_export.h"
 #include "plot_panel.h"
 
 namespace pat::ui {
@@ -30,6 +37,26 @@ QString csv_field(const QString& text) {
   quoted.replace('"', "\"\"");
   return '"' + quoted + '"';
 }
+
+// "Strikes per cycle" → "strikes_per_cycle": a file name for a plot's title.
+QString file_stem(const QString& title) {
+  QString stem;
+  for (const QChar c : title.toLower()) stem += c.isLetterOrNumber() ? c : QChar('_');
+  while (stem.contains("__")) stem.replace("__", "_");
+  while (stem.endsWith('_')) stem.chop(1);
+  return stem;
+}
+
+QStringList checked_items(const QListWidget* list) {
+  QStringList names;
+  for (int i = 0; i < list->count(); ++i)
+    if (list->item(i)->checkState() == Qt::Checked) names << list->item(i)->text();
+  return names;
+}
+
+// Editors keep their parameter's kind and key in properties (the form is rebuilt per analysis).
+const char* kKindProperty = "pat_parameter_kind";
+const char* kPathsProperty = "pat_paths";
 
 }  // namespace
 
@@ -57,12 +84,34 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  table_->setMinimumHeight(70);
   plot_tabs_ = new QTabWidget(this);
-  plot_tabs_->setMinimumHeight(220);
+  plot_tabs_->setMinimumHeight(200);
+  // the table and the plots share the height; the user drags the handle between them
+  auto* results = new QSplitter(Qt::Vertical, this);
+  results->setChildrenCollapsible(false);
+  results->addWidget(table_);
+  results->addWidget(plot_tabs_);
+  results->setStretchFactor(0, 1);
+  results->setStretchFactor(1, 3);
+  results->setSizes({90, 1000});  // the plots first: the summary line says the headline
   export_plots_ = new QPushButton(tr("Export plots…"), this);
   export_table_ = new QPushButton(tr("Export table (CSV)…"), this);
+  export_report_ = new QPushButton(tr("Export report…"), this);
+  export_report_->setToolTip(
+      tr("The analysis's own report (as on the command line) and every plot as PNG, in a folder"));
   export_plots_->setEnabled(false);
   export_table_->setEnabled(false);
+  export_report_->hide();
+  form_host_ = new QWidget(this);
+  form_ = new QFormLayout(form_host_);
+  form_->setContentsMargins(0, 0, 0, 0);
+  form_->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+  file_problems_ = new QLabel(this);
+  file_problems_->setWordWrap(true);
+  file_problems_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  file_problems_->setStyleSheet("color: #b00000;");
+  file_problems_->hide();
 
   auto* run_row = new QHBoxLayout;
   run_row->addWidget(choice_, 1);
@@ -70,18 +119,21 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   auto* export_row = new QHBoxLayout;
   export_row->addWidget(export_plots_);
   export_row->addWidget(export_table_);
+  export_row->addWidget(export_report_);
   layout->addLayout(run_row);
   layout->addWidget(description_);
+  layout->addWidget(form_host_);
+  layout->addWidget(file_problems_);
   layout->addWidget(progress_);
   layout->addWidget(stage_);
   layout->addWidget(summary_);
-  layout->addWidget(table_, 1);
-  layout->addWidget(plot_tabs_, 2);
+  layout->addWidget(results, 1);
   layout->addLayout(export_row);
 
   connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
     const int entry = choice_->itemData(index).toInt();
     description_->setText(index >= 0 ? catalogue_[entry].description : QString());
+    rebuild_form(current_model_ ? current_model_().get() : nullptr);
   });
   connect(run_button_, &QPushButton::clicked, this, [this] {
     if (runner_->running())
@@ -119,6 +171,16 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
       QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
     }
   });
+  connect(export_report_, &QPushButton::clicked, this, [this] {
+    const QString folder = QFileDialog::getExistingDirectory(this, tr("Report folder"));
+    if (folder.isEmpty()) return;
+    try {
+      write_report(folder);
+      summary_->setText(summary_->text() + "\n" + tr("Report written to %1.").arg(folder));
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
+    }
+  });
   catalogue_ = analysis_catalogue();
 }
 
@@ -129,12 +191,191 @@ void AnalysesPanel::set_model(const ActionModel& model) {
     if (catalogue_[i].applies(model)) choice_->addItem(catalogue_[i].name, static_cast<int>(i));
   const int again = choice_->findText(previous);
   if (again >= 0) choice_->setCurrentIndex(again);
+  rebuild_form(&model);
+}
+
+const AnalysisEntry* AnalysesPanel::chosen_entry() const {
+  if (choice_->currentIndex() < 0) return nullptr;
+  return &catalogue_[choice_->itemData(choice_->currentIndex()).toInt()];
+}
+
+void AnalysesPanel::remember(const QString& key, const QVariant& value) {
+  if (const AnalysisEntry* entry = chosen_entry())
+    remembered_[entry->name + '/' + form_kind_ + '/' + key] = value;
+}
+
+void AnalysesPanel::rebuild_form(const ActionModel* model) {
+  while (form_->rowCount() > 0) form_->removeRow(0);
+  editors_.clear();
+  file_problems_->clear();
+  file_problems_->hide();
+  const AnalysisEntry* entry = chosen_entry();
+  form_kind_ = model ? QString::fromStdString(model->kind) : QString();
+  form_host_->setVisible(entry && !entry->parameters.empty());
+  if (!entry) return;
+  for (const AnalysisParameter& p : entry->parameters) {
+    const QVariant kept = remembered_.value(entry->name + '/' + form_kind_ + '/' + p.key);
+    QWidget* editor = nullptr;
+    switch (p.kind) {
+      case AnalysisParameter::Kind::choice: {
+        auto* combo = new QComboBox(form_host_);
+        combo->addItems(p.choices);
+        if (kept.isValid()) combo->setCurrentText(kept.toString());
+        connect(combo, &QComboBox::currentTextChanged, this,
+                [this, key = p.key](const QString& text) { remember(key, text); });
+        editor = combo;
+        break;
+      }
+      case AnalysisParameter::Kind::number: {
+        auto* spin = new QDoubleSpinBox(form_host_);
+        spin->setRange(p.minimum, p.maximum);
+        spin->setDecimals(p.decimals);
+        spin->setSingleStep(p.step);
+        spin->setSuffix(p.unit.isEmpty() ? QString() : " " + p.unit);
+        spin->setValue(kept.isValid() ? kept.toDouble() : p.value);
+        connect(spin, &QDoubleSpinBox::valueChanged, this,
+                [this, key = p.key](double v) { remember(key, v); });
+        editor = spin;
+        break;
+      }
+      case AnalysisParameter::Kind::files: {
+        auto* row = new QWidget(form_host_);
+        auto* h = new QHBoxLayout(row);
+        h->setContentsMargins(0, 0, 0, 0);
+        auto* button = new QPushButton(tr("Choose…"), row);
+        auto* names = new QLabel(tr("none chosen"), row);
+        names->setObjectName("names");
+        names->setWordWrap(true);
+        h->addWidget(button);
+        h->addWidget(names, 1);
+        row->setProperty(kPathsProperty, QStringList());
+        connect(button, &QPushButton::clicked, this, [this, key = p.key] { choose_files(key); });
+        editor = row;
+        break;
+      }
+      case AnalysisParameter::Kind::checklist: {
+        auto* list = new QListWidget(form_host_);
+        const QStringList items = model && p.items ? p.items(*model) : QStringList();
+        const QStringList ticked = kept.isValid() ? kept.toStringList() : items;
+        for (const QString& name : items) {
+          auto* item = new QListWidgetItem(name, list);
+          item->setFlags(Qt::ItemIsUserCheckable | Qt::ItemIsEnabled);
+          item->setCheckState(ticked.contains(name) ? Qt::Checked : Qt::Unchecked);
+        }
+        list->setMaximumHeight(84);
+        connect(list, &QListWidget::itemChanged, this,
+                [this, list, key = p.key] { remember(key, checked_items(list)); });
+        editor = list;
+        break;
+      }
+    }
+    editor->setProperty(kKindProperty, static_cast<int>(p.kind));
+    editor->setToolTip(p.tooltip);
+    form_->addRow(p.label, editor);
+    editors_[p.key] = editor;
+    if (p.kind == AnalysisParameter::Kind::files && kept.isValid()) set_parameter(p.key, kept);
+  }
+}
+
+AnalysisSettings AnalysesPanel::settings() const {
+  AnalysisSettings values;
+  for (const auto& [key, editor] : editors_) {
+    switch (static_cast<AnalysisParameter::Kind>(editor->property(kKindProperty).toInt())) {
+      case AnalysisParameter::Kind::choice:
+        values[key] = static_cast<QComboBox*>(editor)->currentText();
+        break;
+      case AnalysisParameter::Kind::number:
+        values[key] = static_cast<QDoubleSpinBox*>(editor)->value();
+        break;
+      case AnalysisParameter::Kind::files:
+        values[key] = editor->property(kPathsProperty).toStringList();
+        break;
+      case AnalysisParameter::Kind::checklist:
+        values[key] = checked_items(static_cast<QListWidget*>(editor));
+        break;
+    }
+  }
+  return values;
+}
+
+bool AnalysesPanel::set_parameter(const QString& key, const QVariant& value) {
+  const auto found = editors_.find(key);
+  if (found == editors_.end()) return false;
+  QWidget* editor = found->second;
+  switch (static_cast<AnalysisParameter::Kind>(editor->property(kKindProperty).toInt())) {
+    case AnalysisParameter::Kind::choice: {
+      auto* combo = static_cast<QComboBox*>(editor);
+      const int index = combo->findText(value.toString());
+      if (index < 0) return false;
+      combo->setCurrentIndex(index);
+      return true;
+    }
+    case AnalysisParameter::Kind::number:
+      static_cast<QDoubleSpinBox*>(editor)->setValue(value.toDouble());
+      return true;
+    case AnalysisParameter::Kind::checklist: {
+      auto* list = static_cast<QListWidget*>(editor);
+      const QStringList ticked = value.toStringList();
+      for (int i = 0; i < list->count(); ++i)
+        list->item(i)->setCheckState(ticked.contains(list->item(i)->text()) ? Qt::Checked
+                                                                            : Qt::Unchecked);
+      return true;
+    }
+    case AnalysisParameter::Kind::files:
+      break;
+  }
+  // files: each is read now; the bad ones are left out and named with their problem
+  const AnalysisParameter* parameter = nullptr;
+  for (const AnalysisParameter& p : chosen_entry()->parameters)
+    if (p.key == key) parameter = &p;
+  const std::shared_ptr<const ActionModel> model = current_model_ ? current_model_() : nullptr;
+  QStringList good, names;
+  QStringList problems;
+  for (const QString& path : value.toStringList()) {
+    const QStringList bad =
+        parameter->check_files && model ? parameter->check_files({path}, *model) : QStringList();
+    if (bad.isEmpty()) {
+      good << path;
+      names << QFileInfo(path).fileName();
+    } else {  // the message names the file; its name is enough in the narrow dock
+      for (QString message : bad) problems << message.replace(path, QFileInfo(path).fileName());
+    }
+  }
+  editor->setProperty(kPathsProperty, good);
+  editor->findChild<QLabel*>("names")->setText(names.isEmpty() ? tr("none chosen")
+                                                               : names.join(", "));
+  file_problems_->setText(problems.isEmpty() ? QString()
+                                             : tr("Not loaded:\n%1").arg(problems.join('\n')));
+  file_problems_->setVisible(!problems.isEmpty());
+  remember(key, good);
+  return true;
+}
+
+QString AnalysesPanel::file_problems() const {
+  return file_problems_->text();
+}
+
+void AnalysesPanel::choose_files(const QString& key) {
+  const AnalysisEntry* entry = chosen_entry();
+  QString filter;
+  for (const AnalysisParameter& p : entry->parameters)
+    if (p.key == key) filter = p.file_filter;
+  const QStringList paths =
+      QFileDialog::getOpenFileNames(this, tr("Measured files"), QString(), filter);
+  if (!paths.isEmpty()) set_parameter(key, paths);
 }
 
 QStringList AnalysesPanel::analysis_names() const {
   QStringList names;
   for (int i = 0; i < choice_->count(); ++i) names << choice_->itemText(i);
   return names;
+}
+
+bool AnalysesPanel::choose(const QString& name) {
+  const int index = choice_->findText(name);
+  if (index < 0 || runner_->running()) return false;
+  choice_->setCurrentIndex(index);
+  return true;
 }
 
 bool AnalysesPanel::run(const QString& name) {
@@ -144,9 +385,16 @@ bool AnalysesPanel::run(const QString& name) {
   choice_->setCurrentIndex(index);
   const AnalysisEntry& entry = catalogue_[choice_->itemData(index).toInt()];
   clear_result();
+  AnalysisTask task;
+  try {
+    task = entry.make(model, settings());
+  } catch (const std::exception& e) {  // settings that cannot run: said next to the form
+    summary_->setText(tr("%1: %2").arg(entry.name, QString::fromStdString(e.what())));
+    return false;
+  }
   summary_->setText(tr("%1: running…").arg(entry.name));
   set_busy(true);
-  runner_->start(entry.name, entry.make(model));
+  runner_->start(entry.name, std::move(task));
   return true;
 }
 
@@ -162,6 +410,7 @@ QString AnalysesPanel::summary() const {
 void AnalysesPanel::set_busy(bool busy) {
   run_button_->setText(busy ? tr("Cancel") : tr("Run"));
   choice_->setEnabled(!busy);
+  form_host_->setEnabled(!busy);
   progress_->setVisible(busy);
   stage_->setVisible(busy);
   progress_->setValue(0);
@@ -176,8 +425,11 @@ void AnalysesPanel::clear_result() {
     page->deleteLater();
   }
   plots_.clear();
+  grids_.clear();
+  result_ = AnalysisResult{};
   export_plots_->setEnabled(false);
   export_table_->setEnabled(false);
+  export_report_->hide();
 }
 
 void AnalysesPanel::show_result(const QString& title, const AnalysisResult& result) {
@@ -189,6 +441,7 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
     const AnalysisTableRow& row = result.table[r];
     table_->setItem(r, 0, new QTableWidgetItem(row.quantity));
     table_->setItem(r, 1, new QTableWidgetItem(row.value));
+    table_->item(r, 1)->setToolTip(row.value);  // long values (errors in words) in full
     table_->setItem(r, 2, new QTableWidgetItem(row.unit));
   }
   table_->resizeColumnToContents(0);
@@ -203,12 +456,42 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
       if (series.points) panel->set_points_only(id);
     }
     if (!p.x_categories.empty()) panel->set_x_categories(p.x_categories);
+    for (const AnalysisMarker& m : p.markers) panel->add_marker(m.x, m.label);
     panel->fit_all();
     plots_.push_back(panel);
-    plot_tabs_->addTab(panel, p.title);
+    plot_tabs_->addTab(panel, p.tab.isEmpty() ? p.title : p.tab);
+    plot_tabs_->setTabToolTip(plot_tabs_->count() - 1, p.title);
   }
+  for (const AnalysisGrid& grid : result.grids) add_grid(grid);
+  result_ = result;
   export_plots_->setEnabled(!plots_.empty());
   export_table_->setEnabled(table_->rowCount() > 0);
+  export_report_->setVisible(static_cast<bool>(result.write_report));
+}
+
+void AnalysesPanel::add_grid(const AnalysisGrid& grid) {
+  auto* view =
+      new QTableWidget(static_cast<int>(grid.rows.size()), grid.columns.size(), plot_tabs_);
+  view->setHorizontalHeaderLabels(grid.columns);
+  view->verticalHeader()->hide();
+  view->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  for (int r = 0; r < view->rowCount(); ++r)
+    for (int c = 0; c < view->columnCount() && c < grid.rows[r].size(); ++c)
+      view->setItem(r, c, new QTableWidgetItem(grid.rows[r][c]));
+  view->resizeColumnsToContents();
+  view->horizontalHeader()->setStretchLastSection(true);
+  grids_.push_back(view);
+  plot_tabs_->addTab(view, grid.title);
+}
+
+void AnalysesPanel::write_report(const QString& folder) const {
+  if (!QDir().mkpath(folder)) throw InputError(folder.toStdString() + ": cannot create the folder");
+  if (result_.write_report) result_.write_report(folder);
+  for (std::size_t i = 0; i < plots_.size(); ++i)
+    export_plots({plots_[i]},
+                 QDir(folder).filePath(
+                     QString("plot%1_%2.png").arg(i + 1).arg(file_stem(plots_[i]->title()))),
+                 QSize(1200, 700));
 }
 
 void AnalysesPanel::write_table_csv(const QString& path) const {

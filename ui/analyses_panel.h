@@ -1,10 +1,14 @@
-// The Analyses dock: choose an analysis of the current action, run it in the background with a
+// The Analyses dock: choose an analysis of the current action and its settings (a form under
+// the choice: stroke, frequencies, measured files, candidates), run it in the background with a
 // non-modal progress bar and Cancel, read its summary and table, look at its plots (cursors,
-// zoom) and export them (PNG, PDF, SVG, CSV) or the table (CSV). The window stays live.
+// zoom) and tables in tabs, and export them (PNG, PDF, SVG, CSV), the table (CSV) or the
+// analysis's own report. The window stays live.
 #pragma once
 
+#include <QVariantMap>
 #include <QWidget>
 #include <functional>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -12,6 +16,7 @@
 #include "plot_panel.h"
 
 class QComboBox;
+class QFormLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
@@ -31,7 +36,10 @@ class AnalysesPanel : public QWidget {
 
   /// Lists the analyses that apply to `model` (called when the action changes).
   void set_model(const ActionModel& model);
-  /// Runs the analysis named `name` (as the Run button does); false when unknown or busy.
+  /// Chooses the analysis named `name` and shows its settings form; false when unknown or busy.
+  bool choose(const QString& name);
+  /// Runs the analysis named `name` (as the Run button does) with the settings of its form;
+  /// false when unknown, busy, or when the settings cannot run (the summary says why).
   bool run(const QString& name);
   void cancel();
 
@@ -40,6 +48,21 @@ class AnalysesPanel : public QWidget {
   QString summary() const;
   QTableWidget* table() const { return table_; }
   std::vector<PlotPanel*> plots() const { return plots_; }
+  /// The tables of the result that have their own columns (ranking, cycles), one tab each.
+  std::vector<QTableWidget*> grids() const { return grids_; }
+
+  /// The settings of the chosen analysis as its form shows them.
+  AnalysisSettings settings() const;
+  /// Sets one setting of the chosen analysis as its form row would (a choice's word, a number,
+  /// a list of files or ticked candidates). Files are checked at once: bad ones are left out
+  /// and named in the form with their problem. False when the analysis has no such setting.
+  bool set_parameter(const QString& key, const QVariant& value);
+  /// What is wrong with the files last chosen (empty when all could be read).
+  QString file_problems() const;
+  /// Writes the result's own report into `folder` (when it has one, as the diagnosis does)
+  /// with every plot of the result as a PNG. Throws InputError naming what cannot be written.
+  void write_report(const QString& folder) const;
+  bool has_report() const { return static_cast<bool>(result_.write_report); }
   /// Shows a result computed elsewhere (the deregulation demo) as if run here.
   void show_result(const QString& title, const AnalysisResult& result);
   /// Writes the result table as CSV (quantity,value,unit). Throws InputError naming the file.
@@ -52,6 +75,12 @@ class AnalysesPanel : public QWidget {
  private:
   void set_busy(bool busy);
   void clear_result();
+  const AnalysisEntry* chosen_entry() const;
+  /// Rebuilds the settings form for the chosen analysis and the current model.
+  void rebuild_form(const ActionModel* model);
+  void remember(const QString& key, const QVariant& value);
+  void choose_files(const QString& key);
+  void add_grid(const AnalysisGrid& grid);
 
   std::function<std::shared_ptr<const ActionModel>()> current_model_;
   std::vector<AnalysisEntry> catalogue_;
@@ -66,7 +95,18 @@ class AnalysesPanel : public QWidget {
   QTabWidget* plot_tabs_;
   QPushButton* export_plots_;
   QPushButton* export_table_;
+  QPushButton* export_report_;
+  QWidget* form_host_;
+  QFormLayout* form_;
+  QLabel* file_problems_;
+  std::map<QString, QWidget*> editors_;  ///< the chosen analysis's settings, by key
+  /// "analysis/kind/key" → the value last set (per action kind: candidates, files and
+  /// frequencies differ between the grand and the upright)
+  QVariantMap remembered_;
+  QString form_kind_;  ///< the kind of action the form was built for
   std::vector<PlotPanel*> plots_;
+  std::vector<QTableWidget*> grids_;
+  AnalysisResult result_;
   QString result_title_;
 };
 

@@ -10,6 +10,7 @@
 #include "analysis/sensitivity.h"
 #include "analysis/swing_test.h"
 #include "analysis/touchweight.h"
+#include "analysis_entries.h"
 #include "core/format.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
@@ -17,11 +18,29 @@
 #include "sim/simulation.h"
 
 namespace pat::ui {
-namespace {
 
-QString number(double value, int precision = 3) {
+QString number(double value, int precision) {
   return QString::fromStdString(format_number(value, precision));
 }
+
+AnalysisPlot time_plot(const QString& title, const QString& y_title,
+                       std::vector<AnalysisSeries> series) {
+  return {title, QObject::tr("time (s)"), "time_s", "s", y_title, std::move(series), {}, {}};
+}
+
+AnalysisSeries trace_series(const CsvTable& trace, const std::string& column, const QString& label,
+                            bool points) {
+  AnalysisSeries series{label, QString::fromStdString(column), {}, {}, points};
+  const int t = trace.column_index("time_s"), c = trace.column_index(column);
+  if (t < 0 || c < 0) return series;
+  for (const auto& row : trace.rows) {
+    series.x.push_back(row[t]);
+    series.y.push_back(row[c]);
+  }
+  return series;
+}
+
+namespace {
 
 // The seven settings measured the technician's way, against their targets.
 AnalysisEntry technician_measurements() {
@@ -30,7 +49,7 @@ AnalysisEntry technician_measurements() {
   e.description = QObject::tr(
       "Every regulation setting measured as a technician measures it (rest geometry, slow key "
       "press, forte blow), with its target and tolerance");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const std::size_t n = model->regulation.size();
       ProgressReporter reporter(progress, n);
@@ -94,7 +113,7 @@ AnalysisEntry impact_velocity_range() {
   e.description = QObject::tr(
       "A constant force from 2 N (pianissimo) to 50 N (fortissimo) on the key front: the "
       "hammer's velocity at the string and the time it takes to get there");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       std::vector<double> forces;
       // geometric steps from 2 to 50 N: equal steps in loudness (dynamics are logarithmic)
@@ -177,7 +196,7 @@ AnalysisEntry regulation_sensitivity() {
   e.description = QObject::tr(
       "Each adjuster moved 0.5 mm each way: the setting's measured value and the change of "
       "impact velocity and let-off time under a 20 N key force (and the other metrics listed)");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const SensitivityResult r = sensitivity(*model, SensitivityOptions{}, progress);
       AnalysisResult result;
@@ -238,25 +257,6 @@ AnalysisEntry regulation_sensitivity() {
   return e;
 }
 
-/// A plot over time (s) of these series.
-AnalysisPlot time_plot(const QString& title, const QString& y_title,
-                       std::vector<AnalysisSeries> series) {
-  return {title, QObject::tr("time (s)"), "time_s", "s", y_title, std::move(series)};
-}
-
-/// A trace column as a plotted series (x: its time_s column).
-AnalysisSeries trace_series(const CsvTable& trace, const std::string& column, const QString& label,
-                            bool points = false) {
-  AnalysisSeries series{label, QString::fromStdString(column), {}, {}, points};
-  const int t = trace.column_index("time_s"), c = trace.column_index(column);
-  if (t < 0 || c < 0) return series;
-  for (const auto& row : trace.rows) {
-    series.x.push_back(row[t]);
-    series.y.push_back(row[c]);
-  }
-  return series;
-}
-
 // Fact F5: the hammer alone on its flange, released from horizontal.
 AnalysisEntry swing() {
   AnalysisEntry e;
@@ -264,7 +264,7 @@ AnalysisEntry swing() {
   e.description = QObject::tr(
       "The hammer alone on its flange, released from horizontal: the technician counts the "
       "swings until it stops (about two round trips for a good centre pin)");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const SwingResult r = swing_test(*model, SwingOptions{}, progress);
       AnalysisResult result;
@@ -292,7 +292,7 @@ AnalysisEntry key_fall_test() {
   e.description = QObject::tr(
       "The key alone released from its rest angle under gravity onto the front-rail punching: "
       "fall time, impact speed and bounces (the paper's key characterisation)");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const KeyFallResult r = key_fall(*model, KeyFallOptions{}, progress);
       AnalysisResult result;
@@ -328,7 +328,7 @@ AnalysisEntry touchweight() {
   e.description = QObject::tr(
       "Downweight and upweight at the key front (gram weights, friction included), balance "
       "and friction weight (Stanwood), key ratio and strike weight");
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const TouchweightResult r = measure_touchweight(*model, TouchweightOptions{}, progress);
       AnalysisResult result;
@@ -379,7 +379,7 @@ AnalysisEntry double_blow() {
       "Two blows on the upright with and without its bridle strap and butt spring: how fast "
       "the hammer returns after the first blow, and how hard the second one strikes");
   e.applies = [](const ActionModel& m) { return m.kind == "upright"; };
-  e.make = [](std::shared_ptr<const ActionModel> model) -> AnalysisTask {
+  e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
       const DoubleBlowStudy r = double_blow_study(*model, DoubleBlowOptions{}, progress);
       AnalysisResult result;
@@ -408,8 +408,16 @@ AnalysisEntry double_blow() {
 }  // namespace
 
 std::vector<AnalysisEntry> analysis_catalogue() {
-  return {technician_measurements(), impact_velocity_range(), touchweight(),           swing(),
-          key_fall_test(),           double_blow(),           regulation_sensitivity()};
+  return {technician_measurements(),
+          impact_velocity_range(),
+          touchweight(),
+          swing(),
+          key_fall_test(),
+          double_blow(),
+          repetition_sweep_entry(),
+          action_comparison_entry(),
+          regulation_sensitivity(),
+          diagnosis_entry()};
 }
 
 }  // namespace pat::ui

@@ -5,6 +5,7 @@
 
 #include <QMetaType>
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <vector>
 
@@ -25,6 +26,12 @@ struct AnalysisSeries {
   bool points = false;       ///< markers only (per-cycle results), else a line
 };
 
+/// A vertical line across a plot at x, labelled (e.g. the maximum repetition frequency).
+struct AnalysisMarker {
+  double x = 0.0;
+  QString label;
+};
+
 struct AnalysisPlot {
   QString title;
   QString x_title, x_column;  ///< e.g. "frequency (Hz)", frequency_hz
@@ -32,12 +39,25 @@ struct AnalysisPlot {
   QString y_title;            ///< with the unit, e.g. "impact velocity (m/s)"
   std::vector<AnalysisSeries> series;
   std::vector<QString> x_categories;  ///< names of x = 0, 1, … (empty: numeric x)
+  std::vector<AnalysisMarker> markers;
+  QString tab;  ///< short name on its tab (empty: the title); the dock is narrow
+};
+
+/// A table with its own columns (a ranking, the cycles of a sweep), shown in a tab of its own.
+struct AnalysisGrid {
+  QString title;
+  QStringList columns;  ///< with units, e.g. "validated rms (deg)"
+  std::vector<QStringList> rows;
 };
 
 struct AnalysisResult {
   QString summary;  ///< one sentence a teacher can read out
   std::vector<AnalysisTableRow> table;
   std::vector<AnalysisPlot> plots;
+  std::vector<AnalysisGrid> grids;
+  /// When set, the panel offers "Export report…": writes the analysis's own report into a
+  /// folder (throws InputError naming what cannot be written). Runs on the window's thread.
+  std::function<void(const QString& folder)> write_report;
 };
 
 /// The work of one analysis, run in a worker thread. It calls the callback with its progress;

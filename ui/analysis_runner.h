@@ -24,6 +24,9 @@ class AnalysisRunner : public QObject {
   void start(const QString& title, AnalysisTask task);
   void cancel() { cancel_requested_.store(true); }
   bool running() const { return running_; }
+  /// True once the task's thread has returned (running() turns false a moment earlier, when
+  /// the result reaches the window's thread).
+  bool task_finished() const { return future_.isFinished(); }
   void wait() { future_.waitForFinished(); }
 
  signals:

@@ -78,6 +78,13 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
           [this](const QCPRange& range) {
             if (!setting_range_) emit userChangedTimeRange(range.lower, range.upper);
           });
+  // a marker's label sits on the side of its line that has more room (never cut at the edge)
+  connect(plot_, &QCustomPlot::beforeReplot, this, [this] {
+    const double middle = plot_->xAxis->range().center();
+    for (auto& [line, text] : markers_)
+      text->setPositionAlignment(
+          (line->point1->coords().x() > middle ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
+  });
   connect(plot_, &QCustomPlot::mousePress, this,
           [this](QMouseEvent* event) { press_position_ = event->pos(); });
   connect(plot_, &QCustomPlot::mouseRelease, this, [this](QMouseEvent* event) {
@@ -157,18 +164,28 @@ void PlotPanel::fit_values() {
     any = true;
   }
   if (!any) return;
+  // categories compare sizes (errors, frequencies, changes): the axis shows zero
+  if (categories_ > 0) range = QCPRange(std::min(range.lower, 0.0), std::max(range.upper, 0.0));
   // a flat line gets a visible band around it
   if (range.size() < 1e-9) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
   // headroom at the top for the legend
   const int legend_rows = (series_count() + 2) / 3;
   const double pad = 0.08 * range.size();
-  plot_->yAxis->setRange(range.lower - pad, range.upper + pad + 0.3 * legend_rows * range.size());
+  // (categories: the legend is under the plot)
+  const double headroom = categories_ > 0 ? 0.0 : 0.3 * legend_rows * range.size();
+  plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
 }
 
 void PlotPanel::fit_all() {
   setting_range_ = true;
   plot_->rescaleAxes();
-  if (categories_ > 0) plot_->xAxis->setRange(-0.5, double(categories_) - 0.5);
+  if (categories_ > 0) {
+    plot_->xAxis->setRange(-0.5, double(categories_) - 0.5);
+  } else if (points_only_) {  // whole markers at both ends
+    const QCPRange r = plot_->xAxis->range();
+    const double pad = std::max(0.02 * r.size(), 1e-9);
+    plot_->xAxis->setRange(r.lower - pad, r.upper + pad);
+  }
   setting_range_ = false;
   fit_values();
 }
@@ -278,12 +295,46 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   plot_->xAxis->setTicker(ticker);
   plot_->xAxis->setTickLabelRotation(names.size() > 4 ? 30 : 0);
   categories_ = names.size();
+  // a few points often sit right where an inset legend would be: the legend goes under the plot
+  if (plot_->axisRect()->insetLayout()->take(plot_->legend)) {
+    plot_->axisRect()->insetLayout()->simplify();
+    const int row = plot_->plotLayout()->rowCount();
+    plot_->plotLayout()->addElement(row, 0, plot_->legend);
+    plot_->plotLayout()->setRowStretchFactor(row, 0.001);
+    plot_->legend->setMargins(QMargins(6, 0, 6, 4));
+    plot_->legend->setBorderPen(Qt::NoPen);
+  }
 }
 
 void PlotPanel::set_points_only(int series) {
   QCPGraph* graph = series_.at(series).graph;
   graph->setLineStyle(QCPGraph::lsNone);
   graph->setScatterStyle(QCPScatterStyle(QCPScatterStyle::ssDisc, 6));
+  points_only_ = true;
+}
+
+void PlotPanel::add_marker(double x, const QString& label) {
+  const QColor colour(120, 120, 120);
+  auto* line = new QCPItemStraightLine(plot_);
+  line->setPen(QPen(colour, 1.5, Qt::DashDotLine));
+  line->point1->setCoords(x, 0.0);
+  line->point2->setCoords(x, 1.0);
+  auto* text = new QCPItemText(plot_);
+  // y in pixels below the top of the plot area (the readout's anchor sits there): under the
+  // legend's first row, one text line further down for each earlier marker
+  text->position->setTypeX(QCPItemPosition::ptPlotCoords);
+  text->position->setParentAnchorY(readout_->position);
+  text->position->setTypeY(QCPItemPosition::ptAbsolute);
+  const double line_px = QFontMetrics(readout_->font()).height() + 4.0;
+  text->position->setCoords(x, line_px * (1.5 + double(markers_.size() % 5)));
+  text->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
+  text->setText(label);
+  text->setFont(readout_->font());
+  text->setColor(colour.darker(160));
+  text->setBrush(QColor(255, 255, 255, 200));
+  text->setPadding(QMargins(3, 1, 3, 1));
+  markers_.emplace_back(line, text);
+  request_replot();
 }
 
 CsvTable PlotPanel::visible_table() const {

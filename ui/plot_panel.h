@@ -50,6 +50,10 @@ class PlotPanel : public QWidget {
   void set_x_categories(const std::vector<QString>& names);
   /// Draws a series as markers without a line (one result per cycle or per case).
   void set_points_only(int series);
+  /// A labelled vertical line at x (the maximum frequency of a sweep, an impact); labels of
+  /// successive markers are stacked downwards so that close ones stay readable.
+  void add_marker(double x, const QString& label);
+  int marker_count() const { return static_cast<int>(markers_.size()); }
 
   QString title() const { return title_; }
   void set_x_range(double lo, double hi);
@@ -90,6 +94,7 @@ class PlotPanel : public QWidget {
   QString x_column_ = "time_s";
   QString x_symbol_ = "t";
   std::size_t categories_ = 0;  ///< named x positions (0: a numeric axis)
+  bool points_only_ = false;    ///< some series are markers only (fit_all pads x)
   QString x_readout_unit_ = "ms";
   double x_readout_scale_ = 1e3;
   QCustomPlot* plot_;
@@ -98,6 +103,7 @@ class PlotPanel : public QWidget {
     QString label, column;
   };
   std::vector<Series> series_;
+  std::vector<std::pair<QCPItemStraightLine*, QCPItemText*>> markers_;
   QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
   QCPItemText* readout_ = nullptr;
   std::optional<double> cursors_[2];

@@ -396,7 +396,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
         w.refined = true;
         refine_candidate(ev, model, samples, w);
       },
-      nullptr, options.threads);
+      options.progress, options.threads);
 
   // compare on held-out trials
   double sample_interval = 0.0;

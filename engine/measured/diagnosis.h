@@ -26,6 +26,7 @@
 //   (3) its fitted value is not at a limit of its physical range (then it is not identified).
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,9 +48,11 @@ inline constexpr double kMinBicGain = 10.0;  // "very strong" evidence (Kass & R
 inline constexpr double kCorrelationTimeS = 5e-3;
 
 struct DiagnoseOptions {
-  std::vector<std::string> candidates;   ///< effect names; empty: candidate_effects(model)
-  unsigned threads = 0;                  ///< 0: every core
-  ProgressReporter* progress = nullptr;  ///< one item per candidate scanned
+  std::vector<std::string> candidates;  ///< effect names; empty: candidate_effects(model)
+  unsigned threads = 0;                 ///< 0: every core
+  /// One item per candidate scanned, then one per candidate refined: construct it with
+  /// diagnosis_progress_items(candidates). A cancel throws Cancelled after the running items.
+  ProgressReporter* progress = nullptr;
 };
 
 struct CandidateFit {
@@ -93,6 +96,11 @@ struct Diagnosis {
   double wall_time_s = 0.0;
   int simulations = 0;
 };
+
+/// The items a diagnosis of `candidates` candidates reports (scans, then refinements).
+inline std::size_t diagnosis_progress_items(std::size_t candidates) {
+  return candidates + std::min(kRefinedCandidates, candidates);
+}
 
 /// Runs the diagnosis. Throws InputError when a trial has no usable input, or when the model
 /// cannot run under a trial's input.

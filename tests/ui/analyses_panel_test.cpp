@@ -82,9 +82,14 @@ void AnalysesPanelTest::every_analysis_runs_from_the_window_for_both_actions() {
     pat::ui::AnalysesPanel* panel = window.analyses();
     QVERIFY(panel->analysis_names().size() >= 2);
     for (const QString& name : panel->analysis_names()) {
+      // the studies that take settings (measured files, long sweeps) run with short settings
+      // in analysis_studies_test
+      if (name == "Repetition-frequency sweep" || name == "Upright vs grand" ||
+          name == "Diagnosis of measured data")
+        continue;
       QVERIFY2(panel->run(name), qPrintable(name));
-      // the sensitivity table takes about a minute per action on two free cores; a loaded machine
-      // (the sanitizer build alongside) takes longer
+      // the grand's sensitivity table is the longest: about 80 s of CPU on two cores, twice
+      // that in wall time when other builds share the machine
       QVERIFY2(wait_until([&] { return !panel->runner()->running(); }, 300000), qPrintable(name));
       const QString summary = panel->summary();
       QVERIFY2(!summary.contains("failed") && !summary.contains("cancelled"), qPrintable(summary));
