@@ -12,8 +12,11 @@ namespace {
 constexpr double kSliderStepsPerMm = 100.0;  // 0.01 mm per slider step
 
 QString format_value(double value, const std::string& unit) {
-  if (unit == "fraction") return QString::number(value, 'f', 3);
-  return QString::number(value, 'f', 2) + " " + QString::fromStdString(unit);
+  const int decimals = unit == "fraction" ? 3 : 2;
+  // a value that rounds to zero reads "0.00", not "-0.00"
+  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
+  const QString number = QString::number(value, 'f', decimals);
+  return unit == "fraction" ? number : number + " " + QString::fromStdString(unit);
 }
 
 }  // namespace
