@@ -97,7 +97,8 @@ TEST(Sensitivity, BackcheckTooCloseSlowsTheHammer) {
   EXPECT_GE(velocity_slope("grand", "checking"), 0.0);
   // ... 2 mm closer (checking about 12 mm) the tail brushes it on the way up
   auto impact_velocity = [](const ActionModel& model) {
-    const auto impacts = test::events_of(test::run(model, "force:const:20", 0.2), "impact");
+    const SimulationResult run = test::run(model, "force:const:20", 0.2);
+    const auto impacts = test::events_of(run, "impact");  // pointers into `run`
     return impacts.empty() ? NAN : impacts.front()->hammer_velocity;
   };
   const ActionModel regulated = test::shipped("grand");
