@@ -1,6 +1,7 @@
 #include "measurement_service.h"
 
 #include <QMetaObject>
+#include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
@@ -41,7 +42,16 @@ void MeasurementService::start_next() {
   }
   running_ = true;
   const int generation = generation_.load();
-  future_ = QtConcurrent::run([this, model, generation] { run(model, generation); });
+  future_ = QtConcurrent::run([this, model, generation] {
+    // the live readings yield the cores to the window and the simulation worker (Qt runs an
+    // idle-priority thread under SCHED_IDLE on Linux): on two cores they would otherwise delay
+    // the event loop by up to 0.2 s; the pool thread gets its priority back afterwards
+    QThread* thread = QThread::currentThread();
+    const QThread::Priority previous = thread->priority();
+    thread->setPriority(QThread::IdlePriority);
+    run(model, generation);
+    thread->setPriority(previous == QThread::InheritPriority ? QThread::NormalPriority : previous);
+  });
 }
 
 void MeasurementService::run(std::shared_ptr<const ActionModel> model, int generation) {
