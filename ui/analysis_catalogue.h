@@ -8,6 +8,7 @@
 #include <QVariantMap>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "analysis_result.h"
@@ -35,6 +36,17 @@ struct AnalysisParameter {
   /// files: "file: problem" for each file that cannot be used with this model (empty: all good)
   std::function<QStringList(const QStringList& paths, const ActionModel&)> check_files;
   QString file_filter;  ///< files: the dialog's filter, e.g. "CSV (*.csv)"
+
+  /// A choice among `choices` (the first is the default).
+  static AnalysisParameter choice(QString key, QString label, QString tooltip,
+                                  QStringList choices) {
+    AnalysisParameter p;
+    p.key = std::move(key);
+    p.label = std::move(label);
+    p.tooltip = std::move(tooltip);
+    p.choices = std::move(choices);
+    return p;
+  }
 };
 
 /// key → value: QString (choice), double (number), QStringList (files, checklist).

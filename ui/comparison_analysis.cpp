@@ -111,18 +111,15 @@ AnalysisEntry action_comparison_entry() {
       "The same blow on the window's action and on the shipped action of the other kind: key "
       "and hammer motion overlaid, when and how fast each hammer strikes, and how fast each "
       "can repeat (full and half stroke)");
-  AnalysisParameter input;
-  input.key = "input";
-  input.label = QObject::tr("Blow");
-  input.tooltip = QObject::tr(
-      "force:pulse:N:MS is N newtons on the key front for MS milliseconds; mass:1kg is a 1 kg "
-      "mass laid on the key");
-  input.choices = kInputs;
-  AnalysisParameter limits;
-  limits.key = "limits";
-  limits.label = QObject::tr("Repetition limits");
-  limits.tooltip = QObject::tr("also sweep each action's repetition frequency (a few seconds)");
-  limits.choices = {QObject::tr("with"), QObject::tr("without")};
+  const AnalysisParameter input = AnalysisParameter::choice(
+      "input", QObject::tr("Blow"),
+      QObject::tr("force:pulse:N:MS is N newtons on the key front for MS milliseconds; mass:1kg "
+                  "is a 1 kg mass laid on the key"),
+      kInputs);
+  const AnalysisParameter limits = AnalysisParameter::choice(
+      "limits", QObject::tr("Repetition limits"),
+      QObject::tr("also sweep each action's repetition frequency (a few seconds)"),
+      {QObject::tr("with"), QObject::tr("without")});
   AnalysisParameter f_max;
   f_max.key = "f_max_hz";
   f_max.label = QObject::tr("Sweep up to");

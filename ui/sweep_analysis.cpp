@@ -204,20 +204,16 @@ AnalysisEntry repetition_sweep_entry() {
       "The key played faster and faster (a chirp at 1 Hz/s, or steady sines in steps): the "
       "highest frequency at which every cycle still gives exactly one strike (fact F4: the "
       "grand repeats faster than the upright, above all with a half stroke)");
-  AnalysisParameter stroke;
-  stroke.key = "stroke";
-  stroke.label = QObject::tr("Stroke");
-  stroke.tooltip = QObject::tr(
-      "full: the key comes back to rest every cycle; half: it comes up only halfway, where "
-      "the grand's repetition lever resets the jack");
-  stroke.choices = {"full", "half"};
-  AnalysisParameter mode;
-  mode.key = "mode";
-  mode.label = QObject::tr("Mode");
-  mode.tooltip = QObject::tr(
-      "chirp: one run whose frequency rises 1 Hz each second (with its key and hammer trace); "
-      "steps: one steady run per frequency, 0.5 Hz apart");
-  mode.choices = {"chirp", "steps"};
+  const AnalysisParameter stroke = AnalysisParameter::choice(
+      "stroke", QObject::tr("Stroke"),
+      QObject::tr("full: the key comes back to rest every cycle; half: it comes up only halfway, "
+                  "where the grand's repetition lever resets the jack"),
+      {"full", "half"});
+  const AnalysisParameter mode = AnalysisParameter::choice(
+      "mode", QObject::tr("Mode"),
+      QObject::tr("chirp: one run whose frequency rises 1 Hz each second (with its key and hammer "
+                  "trace); steps: one steady run per frequency, 0.5 Hz apart"),
+      {"chirp", "steps"});
   AnalysisParameter f_start;
   f_start.key = "f_start_hz";
   f_start.label = QObject::tr("From");
