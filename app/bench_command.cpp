@@ -2,19 +2,48 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "analysis/bench.h"
 #include "command_line.h"
 #include "commands.h"
+#include "plot_output.h"
 
 namespace pat::app {
+namespace {
+
+/// Speed and error of each case side by side (the work–precision comparison of the methods).
+std::vector<PlotSpec> bench_plots(const std::vector<BenchCase>& cases) {
+  PlotSpec speed = category_plot("Speed", "× real time", "case", "case_index");
+  PlotSpec error = category_plot("Error against rodas (rtol 1e-9)",
+                                 "max hammer error (% of its range)", "case", "case_index");
+  PlotCurve factor = point_curve("real-time factor", "realtime_factor");
+  PlotCurve percent = point_curve("error", "max_error_percent_of_range");
+  for (std::size_t i = 0; i < cases.size(); ++i) {
+    const BenchCase& c = cases[i];
+    speed.x_categories.push_back(c.action + " " + c.integrator + " " + c.setting);
+    factor.x.push_back(double(i));
+    factor.y.push_back(c.realtime_factor);
+    percent.x.push_back(double(i));
+    percent.y.push_back(100.0 * c.max_error_deg / c.hammer_range_deg);
+  }
+  error.x_categories = speed.x_categories;
+  speed.curves = {std::move(factor)};
+  error.curves = {std::move(percent)};
+  return {speed, error};
+}
+
+}  // namespace
 
 int run_bench(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--duration", "--input"}, {"--json"});
+  const CommandLine cl(args, {"--duration", "--input", "--plot"}, {"--json"});
+  const PlotOption plot(cl.value_or("--plot", ""));
   BenchOptions options;
   options.duration_s = cl.positive_number_or("--duration", 1.0);
   options.input = cl.value_or("--input", options.input);
   const std::vector<BenchCase> cases = run_bench(options);
+  if (plot.write(bench_plots(cases)) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const BenchCase& c : cases)

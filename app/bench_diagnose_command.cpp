@@ -5,22 +5,33 @@
 #include <chrono>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "action_setup.h"
 #include "commands.h"
 #include "measured/hidden_effects.h"
 #include "model/preset_loader.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_bench_diagnose(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--seeds", "--null-seeds", "--family", "--threads"},
-                       {"--json"});
+  const CommandLine cl(
+      args, {"--action", "--seeds", "--null-seeds", "--family", "--threads", "--plot"}, {"--json"});
   const ActionModel model = load_action(cl.value_or("--action", "grand"));
   const int seeds = static_cast<int>(cl.positive_number_or("--seeds", 3));
   const int null_seeds = static_cast<int>(cl.positive_number_or("--null-seeds", 3));
   const std::vector<std::string> only = cl.values("--family");
+  const PlotOption plot(cl.value_or("--plot", ""));
   nlohmann::json cases = nlohmann::json::array();
+  // per case: the gain of the found cause (passed and failed cases apart) and the wall time
+  PlotSpec gains =
+      category_plot("Diagnosis of hidden effects: gain", "gain (%)", "case", "case_index");
+  PlotSpec times = category_plot("Diagnosis of hidden effects: wall time", "wall time (s)", "case",
+                                 "case_index");
+  PlotCurve passed_gain = point_curve("passed", "gain_percent");
+  PlotCurve failed_gain = point_curve("failed", "gain_percent");
+  PlotCurve wall = point_curve("wall time", "wall_time_s");
   int passed = 0, total = 0;
   auto record = [&](const HiddenEffectOutcome& o, unsigned long long seed) {
     ++total;
@@ -41,6 +52,14 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
         {"simulations", d.simulations},
         {"wall_time_s", d.wall_time_s}};
     cases.push_back(item);
+    const double x = double(gains.x_categories.size());
+    gains.x_categories.push_back((o.hidden ? o.hidden->name : std::string("nothing hidden")) +
+                                 " #" + std::to_string(seed));
+    PlotCurve& gain = o.passed ? passed_gain : failed_gain;
+    gain.x.push_back(x);
+    gain.y.push_back(100.0 * d.gain);
+    wall.x.push_back(x);
+    wall.y.push_back(d.wall_time_s);
     if (!cl.has("--json"))
       std::cout << (o.hidden ? o.hidden->name + "=" + std::to_string(o.hidden->value)
                              : std::string("nothing hidden"))
@@ -62,6 +81,11 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
     for (int s = 1; s <= null_seeds; ++s)
       record(run_hidden_effect_case(model, std::nullopt, static_cast<unsigned long long>(100 + s)),
              static_cast<unsigned long long>(100 + s));
+  times.x_categories = gains.x_categories;
+  gains.curves = {std::move(passed_gain), std::move(failed_gain)};
+  times.curves = {std::move(wall)};
+  if (plot.write({gains, times}) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json"))
     std::cout << nlohmann::json{{"cases", cases}, {"passed", passed}, {"total", total}}.dump(1)
               << "\n";

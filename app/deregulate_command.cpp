@@ -3,19 +3,54 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "action_setup.h"
-#include "core/error.h"
 #include "commands.h"
+#include "core/error.h"
 #include "io/csv.h"
+#include "plot_output.h"
 #include "regulation/deregulation.h"
 
 namespace pat::app {
+namespace {
+
+/// The setting measured at each adjuster step (the demo's point: what the technician would read
+/// as the screw turns), the adjuster, then the motion it causes.
+std::vector<PlotSpec> deregulation_plots(const ActionModel& model, const std::string& setting,
+                                         const DeregulationResult& result) {
+  std::string unit = "mm";
+  for (const RegulationSetting& s : model.regulation)
+    if (s.name == setting) unit = s.unit;
+  PlotSpec measured = time_plot("Measured " + setting, setting + " (" + unit + ")");
+  measured.curves.push_back(point_curve(setting, "measured"));
+  PlotSpec adjuster = time_plot("Adjuster " + setting, "adjuster offset (mm)");
+  adjuster.curves.push_back(point_curve("adjuster", "adjuster_mm"));
+  for (const DeregulationSample& s : result.samples) {
+    adjuster.curves[0].x.push_back(s.t);
+    adjuster.curves[0].y.push_back(s.adjuster_mm);
+    if (!std::isfinite(s.measured)) continue;  // not measurable at this step
+    measured.curves[0].x.push_back(s.t);
+    measured.curves[0].y.push_back(s.measured);
+  }
+  std::vector<PlotSpec> plots;
+  add_plot(plots, std::move(measured));
+  add_plot(plots, std::move(adjuster));
+  add_plot(plots, table_plot(result.trace, "Hammer–string gap", "gap (mm)",
+                             {{"hammer_string_gap_mm", "hammer–string gap"}}));
+  add_plot(plots, table_plot(result.trace, "Key, whippen and hammer", "angle (deg)",
+                             {{"key_angle_deg", "key"},
+                              {"whippen_angle_deg", "whippen"},
+                              {"hammer_angle_deg", "hammer"}}));
+  return plots;
+}
+
+}  // namespace
 
 int run_deregulate(const std::vector<std::string>& args) {
   const CommandLine cl(args,
                        {"--action", "--set", "--without", "--setting", "--rate", "--frequency",
-                        "--duration", "--step-interval", "--out"},
+                        "--duration", "--step-interval", "--out", "--plot"},
                        {"--json"});
   const ActionModel model = load_configured_action(cl);
   DeregulationOptions options;
@@ -28,9 +63,11 @@ int run_deregulate(const std::vector<std::string>& args) {
                                 : 0.5;
   if (options.step_interval_s < 0.0)
     throw InputError("--step-interval: must not be negative (0 moves the adjuster continuously)");
+  const PlotOption plot(cl.value_or("--plot", ""));
   const DeregulationResult result = deregulate(model, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) write_csv(out_path, result.trace);
+  plot.write(deregulation_plots(model, options.setting, result));
 
   if (cl.has("--json")) {
     nlohmann::json samples = nlohmann::json::array();
@@ -56,6 +93,7 @@ int run_deregulate(const std::vector<std::string>& args) {
                 << s.measured << "  whippen " << s.whippen_angle_deg << " deg\n";
     std::cout << result.status << " at t = " << result.stop_t << " s"
               << (result.stop_cause.empty() ? "" : ": " + result.stop_cause) << "\n";
+    if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   }
   return 0;
 }

@@ -1,20 +1,72 @@
 // pianoaction diagnose: what the model gets wrong on measured data, the cause among the
 // candidate extensions, and the gain (DESIGN.md sections 4 and 5).
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
 #include "measured/diagnosis.h"
 #include "measured/diagnosis_report.h"
+#include "plot_output.h"
 
 namespace pat::app {
+namespace {
+
+/// Per trial: the measured hammer against the baseline and the extended model, and their
+/// residuals; then the candidate causes ranked by their held-out error.
+std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
+  std::vector<PlotSpec> plots;
+  const std::string extended = d.cause ? "with " + d.cause->name : "extended model";
+  for (const TrialReport& trial : d.trials) {
+    const CsvTable traces = trial_traces_table(trial);
+    const std::string file = std::filesystem::path(trial.path).filename().string();
+    PlotSpec angles =
+        table_plot(traces, "Measured and simulated hammer: " + file, "hammer angle (deg)",
+                   {{"measured_deg", "measured"}, {"baseline_deg", "baseline model"}});
+    PlotSpec residuals = table_plot(traces, "Residuals: " + file, "model − measured (deg)",
+                                    {{"residual_baseline_deg", "baseline model"}});
+    if (traces.column_index("extended_deg") >= 0) {
+      PlotCurve model = line_curve(extended, "extended_deg");
+      model.x = traces.column("time_s");
+      model.y = traces.column("extended_deg");
+      angles.curves.push_back(model);
+      model.column = "residual_extended_deg";
+      model.y = traces.column("residual_extended_deg");
+      residuals.curves.push_back(std::move(model));
+    }
+    add_plot(plots, std::move(angles));
+    add_plot(plots, std::move(residuals));
+  }
+  PlotSpec ranking = category_plot(
+      "Candidate causes", std::string(d.held_out ? "held-out" : "training") + " rms error (deg)",
+      "candidate", "candidate_index");
+  PlotCurve rms = point_curve("fitted candidate", "validated_rms_deg");
+  for (const CandidateFit& c : d.ranking) {
+    if (!c.completed) continue;
+    rms.x.push_back(double(ranking.x_categories.size()));
+    rms.y.push_back(c.validated_rms_deg);
+    ranking.x_categories.push_back(c.effect);
+  }
+  // the baseline error as a flat line across the candidates, for scale
+  PlotCurve baseline = line_curve("baseline model", "baseline_rms_deg");
+  if (!rms.x.empty()) {
+    baseline.x = {-0.5, double(ranking.x_categories.size()) - 0.5};
+    baseline.y = {d.baseline_rms_deg, d.baseline_rms_deg};
+  }
+  ranking.curves = {std::move(rms), std::move(baseline)};
+  add_plot(plots, std::move(ranking));
+  return plots;
+}
+
+}  // namespace
 
 int run_diagnose(const std::vector<std::string>& args) {
-  const CommandLine cl(args,
-                       {"--action", "--measured", "--report", "--candidate", "--threads", "--set"},
-                       {"--json"});
+  const CommandLine cl(
+      args, {"--action", "--measured", "--report", "--candidate", "--threads", "--set", "--plot"},
+      {"--json"});
   const ActionModel model = load_configured_action(cl);
   std::vector<MeasuredTrial> trials;
   for (const std::string& path : cl.values("--measured"))
@@ -25,6 +77,7 @@ int run_diagnose(const std::vector<std::string>& args) {
   options.candidates = cl.values("--candidate");
   if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
   const std::string report = cl.value_or("--report", "");
+  const PlotOption plot(cl.value_or("--plot", ""));
   const Diagnosis d = diagnose(model, trials, options);
   const nlohmann::json json = diagnosis_json(d);
   if (!report.empty()) {
@@ -34,6 +87,7 @@ int run_diagnose(const std::vector<std::string>& args) {
       throw InputError(std::string("--report ") + e.what());
     }
   }
+  plot.write(diagnosis_plots(d));
   if (cl.has("--json")) {
     std::cout << json.dump(1) << "\n";
     return 0;
@@ -56,6 +110,7 @@ int run_diagnose(const std::vector<std::string>& args) {
             << " deg, gain " << d.gain * 100 << " %  (" << d.simulations << " simulations, "
             << d.wall_time_s << " s)\n";
   if (!report.empty()) std::cout << "report written to " << report << "\n";
+  if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   return 0;
 }
 

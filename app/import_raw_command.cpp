@@ -4,20 +4,25 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
+#include <vector>
 
 #include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "io/csv.h"
 #include "measured/raw_import.h"
 #include "model/preset_loader.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 namespace {
 
-const std::set<std::string> kValueOptions = {"--rate", "--column", "--calibration", "--action",
-                                             "--from", "--to",     "--bits",        "--out"};
+const std::set<std::string> kValueOptions = {"--rate",   "--column", "--calibration",
+                                             "--action", "--from",   "--to",
+                                             "--bits",   "--out",    "--plot"};
 
 /// A whole number ≥ `minimum`; names the option.
 int whole_number(const CommandLine& cl, const std::string& option, int fallback, int minimum) {
@@ -50,6 +55,7 @@ int run_import_raw(const std::vector<std::string>& args) {
   if (raw_path.empty())
     throw InputError("missing the raw trace file (import-raw RAW --rate HZ ...)");
   const std::string out_path = cl.value("--out");
+  const PlotOption plot(cl.value_or("--plot", ""));
 
   RawImportOptions o;
   if (!cl.has("--rate")) throw InputError("missing option --rate (samples per second of RAW)");
@@ -66,6 +72,16 @@ int run_import_raw(const std::vector<std::string>& args) {
   o.contact_angle_deg = hammer_contact_angle_deg(model);
   const RawImport result = import_raw(trace, o);
   write_csv(out_path, result.table);
+  std::vector<PlotSpec> plots;
+  PlotSpec angle = table_plot(result.table, "Imported hammer angle", "hammer angle (deg)",
+                              {{"hammer_angle_deg", "hammer"}});
+  if (result.strike)
+    angle.markers.push_back(
+        {result.peak_t_s, "peak " + format_number(result.peak_angle_deg) + " deg"});
+  add_plot(plots, std::move(angle));
+  add_plot(plots, table_plot(result.table, "Raw sensor reading", "reading (fraction of full scale)",
+                             {{"sensor_reading", "reading"}}));
+  plot.write(plots);
 
   const std::size_t samples = result.table.rows.size();
   if (cl.has("--json")) {
@@ -89,6 +105,7 @@ int run_import_raw(const std::vector<std::string>& args) {
   } else {
     std::cout << samples << " samples written to " << out_path << " ("
               << result.table.metadata.at("calibration") << ")\n";
+    if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   }
   return 0;
 }

@@ -6,14 +6,17 @@
 #include "analysis/key_fall.h"
 #include "commands.h"
 #include "core/error.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_keyfall(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--duration"}, {"--json"});
+  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--duration", "--plot"},
+                       {"--json"});
   const ActionModel model = load_configured_action(cl);
   KeyFallOptions options;
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
+  const PlotOption plot(cl.value_or("--plot", ""));
   const KeyFallResult result = key_fall(model, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) {
@@ -22,6 +25,12 @@ int run_keyfall(const std::vector<std::string>& args) {
     table.metadata["analysis"] = "key fall: key alone released from its rest position";
     write_csv(out_path, table);
   }
+  if (plot.write({table_plot(result.trace, "Key front falling", "dip (mm)",
+                             {{"key_front_dip_mm", "key front dip"}}),
+                  table_plot(result.trace, "Front-rail punching", "force (N)",
+                             {{"punching_force_n", "punching force"}})}) &&
+      !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   const bool touched = result.fall_time_s >= 0.0;
   if (cl.has("--json")) {
     nlohmann::json out{

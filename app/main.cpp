@@ -21,35 +21,39 @@ usage:
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
                         [--without PART]... [--effect NAME=VALUE]... [--out CSV] [--plot FILE]
                         [--sample-interval S] [--json]
-  pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--json]
+  pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--plot FILE]
+                        [--json]
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
-                        [--json]
+                        [--plot FILE] [--json]
   pianoaction sweep     --action A --stroke full|half [--mode chirp|steps] [--fmax HZ]
                         [--fstart HZ] [--rate HZ_PER_S] [--step-hz HZ] [--window CYCLES]
                         [--set ADJUSTER=MM]... [--out CSV] [--plot FILE] [--json]
-  pianoaction study compare [--input SPEC] [--duration S] [--fmax HZ] [--out CSV] [--json]
+  pianoaction study compare [--input SPEC] [--duration S] [--fmax HZ] [--no-limits] [--out CSV]
+                        [--plot FILE] [--json]
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
-                        [--out CSV] [--json]
-  pianoaction bench     [--json] [--duration S]
-  pianoaction swing     --action A [--release-deg D] [--out CSV] [--json]
-  pianoaction keyfall   --action A [--duration S] [--out CSV] [--json]
+                        [--out CSV] [--plot FILE] [--json]
+  pianoaction bench     [--duration S] [--plot FILE] [--json]
+  pianoaction swing     --action A [--release-deg D] [--out CSV] [--plot FILE] [--json]
+  pianoaction keyfall   --action A [--duration S] [--out CSV] [--plot FILE] [--json]
   pianoaction touchweight --action A [--spring-factor SPRING=F]... [--key-lead-g G]
-                        [--set ADJUSTER=MM]... [--without PART]... [--out CSV] [--json]
-  pianoaction study double-blow --action upright [--force N] [--pulse-ms MS] [--gap-ms MS]
-                        [--duration S] [--out CSV] [--json]
-  pianoaction practice new   (--action A --seed N [--level 1|2] | --exercise FILE) [--reveal]
+                        [--set ADJUSTER=MM]... [--without PART]... [--out CSV] [--plot FILE]
                         [--json]
+  pianoaction study double-blow --action upright [--force N] [--pulse-ms MS] [--gap-ms MS]
+                        [--duration S] [--out CSV] [--plot FILE] [--json]
+  pianoaction practice new   (--action A --seed N [--level 1|2] | --exercise FILE) [--reveal]
+                        [--plot FILE] [--json]
   pianoaction practice check (--action A --seed N [--level 1|2] | --exercise FILE)
                         --answer SETTING:more|less[,SETTING:more|less] [--reveal] [--json]
   pianoaction synth     --action A --input SPEC --duration S [--effect NAME=VALUE]...
                         [--noise-deg X] [--fps N] [--time-offset-ms X] [--angle-offset-deg X]
-                        [--seed N] --out CSV
+                        [--seed N] --out CSV [--plot FILE]
   pianoaction diagnose  --action A --measured CSV... [--candidate NAME]... [--threads N]
-                        [--report DIR] [--json]
-  pianoaction bench-diagnose [--action A] [--seeds N] [--null-seeds N] [--family NAME]... [--json]
+                        [--report DIR] [--plot FILE] [--json]
+  pianoaction bench-diagnose [--action A] [--seeds N] [--null-seeds N] [--family NAME]...
+                        [--plot FILE] [--json]
   pianoaction import-raw RAW --rate HZ [--column N] [--calibration CSV] [--action grand|upright]
-                        [--from S] [--to S] [--bits N] --out CSV [--json]
+                        [--from S] [--to S] [--bits N] --out CSV [--plot FILE] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -59,8 +63,10 @@ effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
   joint_friction.JOINT=FACTOR  repetition_spring=FACTOR (grand)  butt_spring=FACTOR (upright)
   felt_stiffness.CONTACT=FACTOR  regulation_offset.SETTING=MM
 
---plot FILE writes the plots (key and hammer angles, hammer-string gap, finger force); the
-format comes from the extension: .png .pdf .svg, or .csv for the plotted columns.
+--plot FILE writes the command's plots, stacked (simulate: key and hammer angles, hammer-string
+gap, finger force; the others: what they computed, e.g. the measured setting over time, strikes
+per cycle against frequency, each setting's effect); the format comes from the extension:
+.png .pdf .svg, or .csv for the plotted columns (plots over one x axis).
 --screenshot PNG opens the window, plays a blow until just after escapement, saves a
 screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";

@@ -1,22 +1,51 @@
 #include "plot_output.h"
 
+#include <utility>
+
 #include "core/error.h"
 #ifdef PAT_HAVE_UI
 #include <QString>
 
+#include "analysis_plots.h"
+#include "analysis_result.h"
 #include "plot_export.h"
-#include "trace_plots.h"
 #endif
 
 namespace pat::app {
+namespace {
+
+#ifdef PAT_HAVE_UI
+QString text(const std::string& s) {
+  return QString::fromStdString(s);
+}
+
+ui::AnalysisPlot to_analysis_plot(const PlotSpec& spec) {
+  ui::AnalysisPlot plot;
+  plot.title = text(spec.title);
+  plot.x_title = text(spec.x_title);
+  plot.x_column = text(spec.x_column);
+  plot.x_unit = text(spec.x_unit);
+  plot.y_title = text(spec.y_title);
+  for (const PlotCurve& c : spec.curves)
+    plot.series.push_back({text(c.label), text(c.column), c.x, c.y, c.points});
+  for (const std::string& name : spec.x_categories) plot.x_categories.push_back(text(name));
+  for (const PlotMarker& m : spec.markers) plot.markers.push_back({m.x, text(m.label)});
+  return plot;
+}
+#endif
+
+}  // namespace
 
 #ifdef PAT_HAVE_UI
 void check_plot_path(const std::string& path) {
-  ui::export_format(QString::fromStdString(path));
+  ui::export_format(text(path));
 }
 
-void write_plot(const std::string& path, const CsvTable& trace) {
-  ui::write_trace_plot(trace, QString::fromStdString(path));
+void write_plots(const std::string& path, const std::vector<PlotSpec>& plots) {
+  if (plots.empty()) throw InputError("--plot " + path + ": the run gave nothing to plot");
+  std::vector<ui::AnalysisPlot> converted;
+  for (const PlotSpec& spec : plots) converted.push_back(to_analysis_plot(spec));
+  ui::write_analysis_plots(converted, text(path));
 }
 #else
 void check_plot_path(const std::string& path) {
@@ -25,9 +54,19 @@ void check_plot_path(const std::string& path) {
                    "PAT_ENGINE_ONLY)");
 }
 
-void write_plot(const std::string& path, const CsvTable&) {
+void write_plots(const std::string& path, const std::vector<PlotSpec>&) {
   check_plot_path(path);
 }
 #endif
+
+PlotOption::PlotOption(std::string path) : path_(std::move(path)) {
+  if (given()) check_plot_path(path_);  // a wrong extension fails before any work
+}
+
+bool PlotOption::write(const std::vector<PlotSpec>& plots) const {
+  if (!given()) return false;
+  write_plots(path_, plots);
+  return true;
+}
 
 }  // namespace pat::app

@@ -1,17 +1,34 @@
-// --plot FILE for the headless subcommands: the trace plots exported by the window's export
-// code (ui/plot_export.h); the format comes from the extension.
+// --plot FILE for the headless subcommands: the plots a command built (plot_spec.h), written by
+// the window's export code (ui/plot_export.h); the format comes from the extension (.png .pdf
+// .svg, or .csv for the plotted columns).
 #pragma once
 
 #include <string>
+#include <vector>
 
-#include "io/csv.h"
+#include "plot_spec.h"
 
 namespace pat::app {
 
 /// Throws InputError when the file's extension is not a plot format, or when this build has no
-/// plotting (configured without the window).
+/// plotting (configured without the window). Commands call it before their work.
 void check_plot_path(const std::string& path);
-/// Writes the plots of a trace. Throws InputError naming the file when it cannot be written.
-void write_plot(const std::string& path, const CsvTable& trace);
+/// Writes the plots, stacked top to bottom. Throws InputError naming the file when it cannot
+/// be written or when there is nothing to plot.
+void write_plots(const std::string& path, const std::vector<PlotSpec>& plots);
+
+/// The --plot option of a command: reads it and checks its extension at once (before the
+/// work), and writes the plots afterwards when it was given.
+class PlotOption {
+ public:
+  explicit PlotOption(std::string path);
+  bool given() const { return !path_.empty(); }
+  const std::string& path() const { return path_; }
+  /// Writes when given; returns whether it wrote.
+  bool write(const std::vector<PlotSpec>& plots) const;
+
+ private:
+  std::string path_;
+};
 
 }  // namespace pat::app

@@ -7,12 +7,15 @@
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
 #include "model/preset_loader.h"
+#include "plot_output.h"
 #include "practice/exercise.h"
 #include "practice/observations.h"
 #include "practice/symptoms.h"
@@ -85,8 +88,34 @@ nlohmann::json answer_json(const FaultAnswer& a) {
   return {{"setting", a.setting}, {"direction", a.direction}};
 }
 
+/// How far each observation of the exercise's action is from the regulated action's, one plot
+/// per unit (a teacher's chart of what the tests show); observations named by their short id.
+std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
+                                        const std::vector<Observation>& regulated_seen) {
+  std::map<std::string, PlotSpec> by_unit;
+  for (const Observation& o : seen) {
+    const Observation* reg = find_observation(regulated_seen, o.id);
+    const std::string unit = o.unit.empty() ? "count" : o.unit;
+    PlotSpec& plot = by_unit[unit];
+    if (plot.curves.empty()) {
+      plot = category_plot("Observed minus regulated (" + unit + ")", "difference (" + unit + ")",
+                           "observation", "observation_index");
+      plot.curves = {point_curve("this action − regulated", "difference")};
+    }
+    const double x = double(plot.x_categories.size());
+    plot.x_categories.push_back(o.id.substr(o.id.find('.') + 1));
+    if (!o.value || !reg || !reg->value) continue;  // not observed (the text says why)
+    plot.curves[0].x.push_back(x);
+    plot.curves[0].y.push_back(*o.value - *reg->value);
+  }
+  std::vector<PlotSpec> plots;
+  for (auto& [unit, plot] : by_unit) add_plot(plots, std::move(plot));
+  return plots;
+}
+
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
+  const PlotOption plot(cl.value_or("--plot", ""));
   const ActionModel hidden = hidden_model(loaded.model, loaded.exercise);
   std::vector<Observation> regulated_seen, seen;
   try {
@@ -105,6 +134,8 @@ int run_new(const CommandLine& cl) {
   }
   const std::vector<Symptom> symptoms = describe_symptoms(seen, regulated_seen);
   const std::vector<FaultAnswer> answers = exercise_answers(loaded.exercise);
+  if (plot.write(observation_plots(seen, regulated_seen)) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
 
   if (cl.has("--json")) {
     nlohmann::json out = exercise_header(loaded.exercise);
@@ -176,8 +207,8 @@ int run_practice(const std::vector<std::string>& args) {
     throw InputError("practice: expected 'new' or 'check' (practice new --action A --seed N)");
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "new")
-    return run_new(
-        CommandLine(rest, {"--action", "--seed", "--level", "--exercise"}, {"--reveal", "--json"}));
+    return run_new(CommandLine(rest, {"--action", "--seed", "--level", "--exercise", "--plot"},
+                               {"--reveal", "--json"}));
   return run_check(CommandLine(rest, {"--action", "--seed", "--level", "--exercise", "--answer"},
                                {"--reveal", "--json"}));
 }

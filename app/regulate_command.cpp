@@ -2,10 +2,12 @@
 #include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "action_setup.h"
-#include "core/error.h"
 #include "commands.h"
+#include "core/error.h"
+#include "plot_output.h"
 #include "regulation/regulation.h"
 
 namespace pat::app {
@@ -15,10 +17,62 @@ nlohmann::json number_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
+/// Tolerance of a setting (for plotting distances from the target in tolerances).
+double tolerance_of(const ActionModel& model, const std::string& setting) {
+  for (const RegulationSetting& s : model.regulation)
+    if (s.name == setting) return s.tolerance;
+  return 1.0;
+}
+
+/// The steps in the technician's order (each setting's distance from its target, in
+/// tolerances, and the adjuster chosen; a marker where each pass begins), then every setting
+/// as left.
+std::vector<PlotSpec> regulation_plots(const ActionModel& model, const RegulationResult& r) {
+  PlotSpec off = category_plot("Regulation steps: distance from the target",
+                               "measured − target (tolerances)", "step", "step_index");
+  PlotSpec adjusters = category_plot("Regulation steps: adjuster chosen", "adjuster offset (mm)",
+                                     "step", "step_index");
+  PlotCurve distance = point_curve("measured − target", "off_target_tolerances");
+  PlotCurve adjuster = point_curve("adjuster", "adjuster_mm");
+  for (std::size_t i = 0; i < r.steps.size(); ++i) {
+    const RegulationStep& s = r.steps[i];
+    off.x_categories.push_back(s.setting);
+    if (i == 0 || r.steps[i - 1].pass != s.pass)
+      off.markers.push_back({double(i) - 0.5, "pass " + std::to_string(s.pass)});
+    adjuster.x.push_back(double(i));
+    adjuster.y.push_back(s.adjuster_mm);
+    if (!std::isfinite(s.measured)) continue;  // not measurable in that position
+    distance.x.push_back(double(i));
+    distance.y.push_back((s.measured - s.target) / tolerance_of(model, s.setting));
+  }
+  adjusters.x_categories = off.x_categories;
+  adjusters.markers = off.markers;
+  off.curves.push_back(std::move(distance));
+  adjusters.curves.push_back(std::move(adjuster));
+
+  PlotSpec settings =
+      category_plot(r.converged ? "Settings after regulation" : "Settings where regulation stopped",
+                    "measured − target (tolerances)", "setting", "setting_index");
+  PlotCurve final_distance = point_curve("measured − target", "off_target_tolerances");
+  for (std::size_t i = 0; i < r.settings.size(); ++i) {
+    const SettingReading& s = r.settings[i];
+    settings.x_categories.push_back(s.name);
+    if (!std::isfinite(s.measured)) continue;
+    final_distance.x.push_back(double(i));
+    final_distance.y.push_back((s.measured - s.target) / s.tolerance);
+  }
+  settings.curves.push_back(std::move(final_distance));
+  std::vector<PlotSpec> plots;
+  add_plot(plots, std::move(off));
+  add_plot(plots, std::move(adjusters));
+  add_plot(plots, std::move(settings));
+  return plots;
+}
+
 }  // namespace
 
 int run_regulate(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--max-passes"},
+  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--max-passes", "--plot"},
                        {"--json", "--quiet"});
   const ActionModel model = load_configured_action(cl);
   if (model.regulation.empty())
@@ -29,14 +83,18 @@ int run_regulate(const std::vector<std::string>& args) {
   if (text && !cl.has("--quiet")) {
     options.on_step = [](const RegulationStep& s) {
       std::cout << "pass " << s.pass << "  " << s.setting << ": adjuster " << s.adjuster_mm
-                << " mm -> " << s.measured << " (target " << s.target << ", "
-                << s.evaluations << " measurements)";
+                << " mm -> " << s.measured << " (target " << s.target << ", " << s.evaluations
+                << " measurements)";
       if (!s.note.empty()) std::cout << "  [" << s.note << "]";
       std::cout << "\n";
       return true;
     };
   }
+  const PlotOption plot(cl.value_or("--plot", ""));
   const RegulationResult result = regulate(model, options);
+  // a regulation that failed is plotted too: its steps show where it got stuck
+  if (plot.write(regulation_plots(model, result)) && text)
+    std::cout << "plot written to " << plot.path() << "\n";
   const std::string out_path = cl.value_or("--out", "");
   // a regulation that did not converge writes nothing: the previous file stays as it was
   if (result.converged && !out_path.empty()) write_preset(result.model, out_path);
@@ -62,21 +120,21 @@ int run_regulate(const std::vector<std::string>& args) {
       if (!s.note.empty()) step["note"] = s.note;
       steps.push_back(step);
     }
-    nlohmann::json out{{"converged", result.converged},
-                       {"action", model.kind},
-                       {"settings", settings},
-                       {"steps", steps},
-                       {"passes", result.passes},
-                       {"wall_time_s", result.wall_time_s},
-                       {"message", result.converged ? nlohmann::json(nullptr)
-                                                    : nlohmann::json(result.message)}};
+    nlohmann::json out{
+        {"converged", result.converged},
+        {"action", model.kind},
+        {"settings", settings},
+        {"steps", steps},
+        {"passes", result.passes},
+        {"wall_time_s", result.wall_time_s},
+        {"message", result.converged ? nlohmann::json(nullptr) : nlohmann::json(result.message)}};
     if (result.converged && !out_path.empty()) out["written"] = out_path;
     std::cout << out.dump(1) << "\n";
   } else {
     for (const SettingReading& r : result.settings)
-      std::cout << "  " << r.name << ": " << r.measured << " " << r.unit << " (target "
-                << r.target << " ± " << r.tolerance << ", adjuster " << r.adjuster_mm
-                << " mm)" << (r.within_tolerance() ? "" : "  OUT OF TOLERANCE") << "\n";
+      std::cout << "  " << r.name << ": " << r.measured << " " << r.unit << " (target " << r.target
+                << " ± " << r.tolerance << ", adjuster " << r.adjuster_mm << " mm)"
+                << (r.within_tolerance() ? "" : "  OUT OF TOLERANCE") << "\n";
     std::cout << (result.converged ? "regulated" : "not regulated") << " in " << result.passes
               << " passes, " << result.wall_time_s << " s\n";
     if (result.converged && !out_path.empty())

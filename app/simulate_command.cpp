@@ -37,12 +37,11 @@ int run_simulate(const std::vector<std::string>& args) {
   const RestState rest = find_rest_state(model);
   const auto input = parse_input_spec(cl.value("--input"), input_context(model, rest));
   const std::string out_path = cl.value_or("--out", "");
-  const std::string plot_path = cl.value_or("--plot", "");
-  if (!plot_path.empty()) check_plot_path(plot_path);  // a wrong extension fails before the run
+  const PlotOption plot(cl.value_or("--plot", ""));
 
   const SimulationResult result = simulate(model, input.get(), options, &rest);
   if (!out_path.empty()) write_csv(out_path, result.trace);
-  if (!plot_path.empty()) write_plot(plot_path, result.trace);
+  plot.write(trace_plots(result.trace));
 
   if (cl.has("--json")) {
     nlohmann::json out{{"status", result.status},
@@ -72,7 +71,7 @@ int run_simulate(const std::vector<std::string>& args) {
     }
     std::cout << "  " << result.steps << " steps, " << result.realtime_factor << "x real time\n";
     if (!out_path.empty()) std::cout << "  trace written to " << out_path << "\n";
-    if (!plot_path.empty()) std::cout << "  plot written to " << plot_path << "\n";
+    if (plot.given()) std::cout << "  plot written to " << plot.path() << "\n";
   }
   return 0;
 }

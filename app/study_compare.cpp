@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "core/format.h"
 #include "model/preset_loader.h"
+#include "plot_output.h"
 #include "sweep_report.h"
 
 namespace pat::app {
@@ -25,10 +26,46 @@ nlohmann::json limit_json(const std::optional<SweepResult>& sweep) {
                                                 : nlohmann::json(nullptr)}};
 }
 
+/// The overlaid motions, gaps and touch of both actions under the common input, then their
+/// repetition limits side by side (when the sweeps ran).
+std::vector<PlotSpec> comparison_plots(const ComparisonResult& result) {
+  std::vector<PlotSpec> plots;
+  add_plot(plots, table_plot(result.overlay, "Key and hammer, grand and upright", "angle (deg)",
+                             {{"grand_hammer_angle_deg", "grand hammer"},
+                              {"upright_hammer_angle_deg", "upright hammer"},
+                              {"grand_key_angle_deg", "grand key"},
+                              {"upright_key_angle_deg", "upright key"}}));
+  add_plot(plots, table_plot(result.overlay, "Hammer–string gap", "gap (mm)",
+                             {{"grand_hammer_string_gap_mm", "grand"},
+                              {"upright_hammer_string_gap_mm", "upright"}}));
+  add_plot(plots,
+           table_plot(result.overlay, "Finger force (the touch)", "force (N)",
+                      {{"grand_finger_force_n", "grand"}, {"upright_finger_force_n", "upright"}}));
+  PlotSpec limits =
+      category_plot("Repetition limits", "maximum frequency (Hz)", "action", "action_index");
+  PlotCurve full = point_curve("full stroke", "full_stroke_max_hz");
+  PlotCurve half = point_curve("half stroke", "half_stroke_max_hz");
+  for (std::size_t a = 0; a < result.actions.size(); ++a) {
+    const ActionComparison& c = result.actions[a];
+    limits.x_categories.push_back(c.action);
+    if (c.full_stroke && c.full_stroke->max_frequency_hz) {
+      full.x.push_back(double(a));
+      full.y.push_back(*c.full_stroke->max_frequency_hz);
+    }
+    if (c.half_stroke && c.half_stroke->max_frequency_hz) {
+      half.x.push_back(double(a));
+      half.y.push_back(*c.half_stroke->max_frequency_hz);
+    }
+  }
+  limits.curves = {std::move(full), std::move(half)};
+  add_plot(plots, std::move(limits));
+  return plots;
+}
+
 }  // namespace
 
 int run_study_compare(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--input", "--duration", "--fmax", "--out"},
+  const CommandLine cl(args, {"--input", "--duration", "--fmax", "--out", "--plot"},
                        {"--json", "--no-limits"});
   ComparisonOptions options;
   options.input = cl.value_or("--input", options.input);
@@ -38,9 +75,12 @@ int run_study_compare(const std::vector<std::string>& args) {
     options.f_max_full_hz = options.f_max_half_hz = cl.positive_number("--fmax");
   const ActionModel grand = load_action("grand");
   const ActionModel upright = load_action("upright");
+  const PlotOption plot(cl.value_or("--plot", ""));
   const ComparisonResult result = compare_actions({&grand, &upright}, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) write_csv(out_path, result.overlay);
+  if (plot.write(comparison_plots(result)) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
 
   if (cl.has("--json")) {
     nlohmann::json actions = nlohmann::json::array();

@@ -6,12 +6,14 @@
 #include "analysis/double_blow_study.h"
 #include "commands.h"
 #include "core/error.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_study_double_blow(const std::vector<std::string>& args) {
   const CommandLine cl(
-      args, {"--action", "--set", "--out", "--force", "--pulse-ms", "--gap-ms", "--duration"},
+      args,
+      {"--action", "--set", "--out", "--force", "--pulse-ms", "--gap-ms", "--duration", "--plot"},
       {"--json"});
   const ActionModel model = load_configured_action(cl);
   DoubleBlowOptions options;
@@ -22,6 +24,7 @@ int run_study_double_blow(const std::vector<std::string>& args) {
     if (options.gap_ms < 0.0) throw InputError("--gap-ms must not be negative");
   }
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
+  const PlotOption plot(cl.value_or("--plot", ""));
   const DoubleBlowStudy study = double_blow_study(model, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) {
@@ -30,6 +33,13 @@ int run_study_double_blow(const std::vector<std::string>& args) {
     table.metadata["analysis"] = "double blow with and without bridle strap and butt spring";
     write_csv(out_path, table);
   }
+  if (plot.write({table_plot(study.trace, "Hammer under a double blow", "hammer angle (deg)",
+                             {{"both_hammer_angle_deg", "bridle and butt spring"},
+                              {"no_bridle_hammer_angle_deg", "no bridle"},
+                              {"no_butt_spring_hammer_angle_deg", "no butt spring"},
+                              {"neither_hammer_angle_deg", "neither"}})}) &&
+      !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   auto or_null = [](bool known, double value) {
     return known ? nlohmann::json(value) : nlohmann::json(nullptr);
   };

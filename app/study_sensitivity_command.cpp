@@ -5,12 +5,15 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "action_setup.h"
 #include "analysis/sensitivity.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "io/csv.h"
+#include "plot_output.h"
 
 namespace pat::app {
 namespace {
@@ -19,15 +22,44 @@ nlohmann::json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
 
+/// One plot per metric: its change from the regulated action with each adjuster moved by
+/// −step and +step, settings side by side (the window's sensitivity plots).
+std::vector<PlotSpec> sensitivity_plots(const SensitivityResult& r, double step_mm) {
+  std::vector<std::string> settings;
+  for (const SensitivityRow& row : r.rows) settings.push_back(row.setting);
+  const std::string step = format_number(step_mm);
+  std::vector<PlotSpec> plots;
+  for (std::size_t m = 0; m < r.metrics.size(); ++m) {
+    const std::string& metric = r.metrics[m];
+    PlotSpec plot = category_plot(metric, "change of " + metric, "setting", "setting_index");
+    plot.x_categories = settings;
+    PlotCurve minus = point_curve("adjuster −" + step + " mm", metric + "_minus");
+    PlotCurve plus = point_curve("adjuster +" + step + " mm", metric + "_plus");
+    for (std::size_t s = 0; s < r.rows.size(); ++s) {
+      for (auto [curve, value] :
+           {std::pair{&minus, r.rows[s].minus[m]}, std::pair{&plus, r.rows[s].plus[m]}}) {
+        const double change = value - r.baseline[m];
+        if (!std::isfinite(change)) continue;  // not measurable on that side
+        curve->x.push_back(double(s));
+        curve->y.push_back(change);
+      }
+    }
+    plot.curves = {std::move(minus), std::move(plus)};
+    add_plot(plots, std::move(plot));
+  }
+  return plots;
+}
+
 }  // namespace
 
 int run_study_sensitivity(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--set", "--without", "--step", "--force", "--out"},
-                       {"--json"});
+  const CommandLine cl(
+      args, {"--action", "--set", "--without", "--step", "--force", "--out", "--plot"}, {"--json"});
   const ActionModel model = load_configured_action(cl);
   SensitivityOptions options;
   options.step_mm = cl.positive_number_or("--step", 0.5);
   options.groups = sensitivity_metric_groups(cl.positive_number_or("--force", 20.0));
+  const PlotOption plot(cl.value_or("--plot", ""));
   const SensitivityResult result = sensitivity(model, options);
 
   const std::string out_path = cl.value_or("--out", "");
@@ -52,6 +84,9 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
     table.metadata["action"] = model.name;
     write_csv(out_path, table);
   }
+
+  if (plot.write(sensitivity_plots(result, options.step_mm)) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
 
   if (cl.has("--json")) {
     nlohmann::json settings = nlohmann::json::array();

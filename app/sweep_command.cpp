@@ -33,17 +33,13 @@ int run_sweep(const std::vector<std::string>& args) {
     options.window_cycles = static_cast<int>(window);
   }
   const std::string out_path = cl.value_or("--out", "");
-  const std::string plot_path = cl.value_or("--plot", "");
-  if (!plot_path.empty()) {
-    if (options.mode != SweepMode::chirp)
-      throw InputError("--plot: plots the chirp run's key and hammer motion; use --mode chirp");
-    check_plot_path(plot_path);  // an engine-only build or a wrong extension fails before the run
-    options.trace_interval_s = 5e-4;
-  }
+  const PlotOption plot(cl.value_or("--plot", ""));
+  // the chirp run is traced for its plot: a sample every 0.5 ms, ten or more per cycle
+  if (plot.given() && options.mode == SweepMode::chirp) options.trace_interval_s = 5e-4;
 
   const SweepResult result = run_repetition_sweep(model, options);
   if (!out_path.empty()) write_csv(out_path, sweep_cycles_table(result, model));
-  if (!plot_path.empty()) write_plot(plot_path, result.trace);
+  plot.write(sweep_plots(result));
 
   if (cl.has("--json")) {
     nlohmann::json out = sweep_json(result);
@@ -54,7 +50,7 @@ int run_sweep(const std::vector<std::string>& args) {
               << sweep_mode_name(result.mode) << ": " << sweep_summary(result) << "\n";
     std::cout << "  " << result.simulated_s << " s simulated in " << result.wall_s << " s\n";
     if (!out_path.empty()) std::cout << "  cycles written to " << out_path << "\n";
-    if (!plot_path.empty()) std::cout << "  plot written to " << plot_path << "\n";
+    if (plot.given()) std::cout << "  plot written to " << plot.path() << "\n";
   }
   return 0;
 }

@@ -3,8 +3,10 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "analysis/repetition_sweep.h"
+#include "plot_spec.h"
 
 namespace pat::app {
 
@@ -16,6 +18,10 @@ nlohmann::json sweep_json(const SweepResult& result);
 /// One row per cycle: t_s (cycle start), frequency_hz, strikes, success (1/0), and the run's
 /// frequency for the steps mode (step_frequency_hz). Metadata: action, stroke, mode.
 CsvTable sweep_cycles_table(const SweepResult& result, const ActionModel& model);
+
+/// The plots of `--plot`: strikes per judged cycle and the hammer speed at each strike over
+/// the frequency, the maximum marked; the chirp run's key and hammer motion when traced.
+std::vector<PlotSpec> sweep_plots(const SweepResult& result);
 
 /// "maximum 13.2 Hz (first failure: missed strike at 13.4 Hz, t = 11.4 s)" and the like.
 std::string sweep_summary(const SweepResult& result);

@@ -7,11 +7,12 @@
 #include "analysis/swing_test.h"
 #include "commands.h"
 #include "core/error.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_swing(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--release-deg"},
+  const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--release-deg", "--plot"},
                        {"--json"});
   const ActionModel model = load_configured_action(cl);
   SwingOptions options;
@@ -20,6 +21,7 @@ int run_swing(const std::vector<std::string>& args) {
     if (degrees > 179.0) throw InputError("--release-deg: at most 179 degrees from hanging");
     options.release_angle_rad = degrees * M_PI / 180.0;
   }
+  const PlotOption plot(cl.value_or("--plot", ""));
   const SwingResult result = swing_test(model, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) {
@@ -30,6 +32,12 @@ int run_swing(const std::vector<std::string>& args) {
                                  " deg from hanging";
     write_csv(out_path, table);
   }
+  if (plot.write({table_plot(result.trace, "Hammer swing", "angle from hanging (deg)",
+                             {{"swing_angle_deg", "angle"}}),
+                  table_plot(result.trace, "Swing rate", "rate (deg/s)",
+                             {{"swing_rate_deg_per_s", "rate"}})}) &&
+      !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json")) {
     nlohmann::json out{{"round_trips", result.round_trips},
                        {"half_swings", result.half_swings},

@@ -10,14 +10,16 @@
 #include "measured/synth.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_synth(const std::vector<std::string>& args) {
-  const CommandLine cl(args,
-                       {"--action", "--input", "--duration", "--effect", "--noise-deg", "--fps",
-                        "--time-offset-ms", "--angle-offset-deg", "--seed", "--set", "--out"},
-                       {"--json"});
+  const CommandLine cl(
+      args,
+      {"--action", "--input", "--duration", "--effect", "--noise-deg", "--fps", "--time-offset-ms",
+       "--angle-offset-deg", "--seed", "--set", "--out", "--plot"},
+      {"--json"});
   const std::string out_path = cl.value("--out");
   // --set adjusts the base model; the effects go into SynthOptions so that they are recorded
   ActionModel model = load_action(cl.value("--action"));
@@ -39,8 +41,13 @@ int run_synth(const std::vector<std::string>& args) {
       throw InputError("--seed must be a whole number ≥ 0");
     o.seed = static_cast<unsigned long long>(seed);
   }
+  const PlotOption plot(cl.value_or("--plot", ""));
   const CsvTable table = synthesize(model, cl.value("--input"), o);
   write_csv(out_path, table);
+  if (plot.write({table_plot(table, "Synthetic measurement", "angle (deg)",
+                             {{"hammer_angle_deg", "hammer"}, {"key_angle_deg", "key"}})}) &&
+      !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json"))
     std::cout << nlohmann::json{{"out", out_path},
                                 {"samples", table.rows.size()},

@@ -7,12 +7,14 @@
 #include "commands.h"
 #include "core/error.h"
 #include "model/model_variations.h"
+#include "plot_output.h"
 
 namespace pat::app {
 
 int run_touchweight(const std::vector<std::string>& args) {
   const CommandLine cl(
-      args, {"--action", "--set", "--without", "--out", "--spring-factor", "--key-lead-g"},
+      args,
+      {"--action", "--set", "--without", "--out", "--spring-factor", "--key-lead-g", "--plot"},
       {"--json"});
   ActionModel model = load_configured_action(cl);
   for (const std::string& assignment : cl.values("--spring-factor")) {
@@ -25,6 +27,7 @@ int run_touchweight(const std::vector<std::string>& args) {
   }
   if (cl.has("--key-lead-g"))
     model = with_key_front_lead(model, parse_number(cl.value("--key-lead-g"), "--key-lead-g"));
+  const PlotOption plot(cl.value_or("--plot", ""));
   const TouchweightResult result = measure_touchweight(model);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) {
@@ -33,6 +36,14 @@ int run_touchweight(const std::vector<std::string>& args) {
     table.metadata["analysis"] = "quasi-static touchweight at the key front (Coulomb friction)";
     write_csv(out_path, table);
   }
+  if (plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",
+                             {{"down_weight_g", "downweight"},
+                              {"up_weight_g", "upweight"},
+                              {"balance_weight_g", "balance weight"},
+                              {"friction_weight_g", "friction weight"}},
+                             "dip_mm", "key dip (mm)", "mm")}) &&
+      !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json")) {
     nlohmann::json out{{"downweight_g", result.downweight_g},
                        {"upweight_g", result.upweight_g},

@@ -20,6 +20,7 @@
 #include <QTextStream>
 #include <QVBoxLayout>
 
+#include "analysis_plots.h"
 #include "analysis_runner.h"
 #include "core/error.h"
 #include "plot_export.h"
@@ -27,9 +28,6 @@
 
 namespace pat::ui {
 namespace {
-
-const QColor kSeriesColours[] = {QColor(31, 119, 180),  QColor(214, 39, 40),  QColor(44, 160, 44),
-                                 QColor(148, 103, 189), QColor(255, 127, 14), QColor(23, 190, 207)};
 
 QString csv_field(const QString& text) {
   if (!text.contains(',') && !text.contains('"')) return text;
@@ -446,18 +444,7 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
   }
   table_->resizeColumnToContents(0);
   for (const AnalysisPlot& p : result.plots) {
-    auto* panel = new PlotPanel(p.title, p.y_title, plot_tabs_);
-    panel->set_x_axis(p.x_title, p.x_column, "x", p.x_unit, 1.0);
-    for (std::size_t s = 0; s < p.series.size(); ++s) {
-      const AnalysisSeries& series = p.series[s];
-      const int id = panel->add_series(series.label, series.column,
-                                       kSeriesColours[s % std::size(kSeriesColours)]);
-      panel->set_data(id, series.x, series.y);
-      if (series.points) panel->set_points_only(id);
-    }
-    if (!p.x_categories.empty()) panel->set_x_categories(p.x_categories);
-    for (const AnalysisMarker& m : p.markers) panel->add_marker(m.x, m.label);
-    panel->fit_all();
+    PlotPanel* panel = make_analysis_plot_panel(p, plot_tabs_);
     plots_.push_back(panel);
     plot_tabs_->addTab(panel, p.tab.isEmpty() ? p.title : p.tab);
     plot_tabs_->setTabToolTip(plot_tabs_->count() - 1, p.title);

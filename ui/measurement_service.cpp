@@ -4,12 +4,35 @@
 #include <QThread>
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
+#ifdef __linux__
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
 
 #include "regulation/measurements.h"
 
 namespace pat::ui {
+namespace {
 
-MeasurementService::MeasurementService(QObject* parent) : QObject(parent) {}
+// The live readings yield the cores to the window and the simulation worker: on two cores they
+// would otherwise delay the event loop by up to 0.2 s. Nice 10 (scheduler weight 110 against
+// 1024) rather than SCHED_IDLE: an idle-class thread can wait seconds for a core on a busy
+// machine, and if it waits while holding a lock the window needs (Qt's event queue, when it
+// posts a reading), the window freezes that long. Raising one's own nice needs no privilege.
+void lower_this_threads_priority() {
+#ifdef __linux__
+  setpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)), 10);
+#else
+  QThread::currentThread()->setPriority(QThread::LowPriority);
+#endif
+}
+
+}  // namespace
+
+MeasurementService::MeasurementService(QObject* parent) : QObject(parent) {
+  pool_.setMaxThreadCount(1);
+}
 
 MeasurementService::~MeasurementService() {
   generation_.store(-1000000);  // the running job stops after its current measurement
@@ -42,15 +65,9 @@ void MeasurementService::start_next() {
   }
   running_ = true;
   const int generation = generation_.load();
-  future_ = QtConcurrent::run([this, model, generation] {
-    // the live readings yield the cores to the window and the simulation worker (Qt runs an
-    // idle-priority thread under SCHED_IDLE on Linux): on two cores they would otherwise delay
-    // the event loop by up to 0.2 s; the pool thread gets its priority back afterwards
-    QThread* thread = QThread::currentThread();
-    const QThread::Priority previous = thread->priority();
-    thread->setPriority(QThread::IdlePriority);
+  future_ = QtConcurrent::run(&pool_, [this, model, generation] {
+    lower_this_threads_priority();  // a new pool thread after an idle spell starts at nice 0
     run(model, generation);
-    thread->setPriority(previous == QThread::InheritPriority ? QThread::NormalPriority : previous);
   });
 }
 

@@ -7,6 +7,7 @@
 #include <QFuture>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -41,6 +42,9 @@ class MeasurementService : public QObject {
   std::mutex mutex_;
   std::shared_ptr<const ActionModel> pending_;
   bool running_ = false;
+  /// One thread of its own, run at a lower priority (nice 10) than the window and the simulation
+  /// worker; a pool of its own so that the shared pool's threads keep their priority.
+  QThreadPool pool_;
   QFuture<void> future_;
 };
 

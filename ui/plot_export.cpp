@@ -26,11 +26,18 @@ std::vector<std::pair<PlotPanel*, QRect>> stacked(const std::vector<PlotPanel*>&
   return out;
 }
 
-// one table: the time column, then every plot's series; rows at the first plot's times where
-// every series has a value
-CsvTable merged_table(const std::vector<PlotPanel*>& plots) {
+// one table: the x column the plots share (time_s, frequency_hz, ...), then every plot's series;
+// rows at the first plot's x values where every series has a value. Plots over different x
+// axes cannot share the rows of one table: refused, naming the file.
+CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path) {
   CsvTable merged;
-  merged.columns.push_back("time_s");
+  const QString x_column = plots.empty() ? QString("time_s") : plots.front()->x_column();
+  for (const PlotPanel* plot : plots)
+    if (plot->x_column() != x_column)
+      throw InputError(path.toStdString() + ": the plots have different x axes (" +
+                       x_column.toStdString() + ", " + plot->x_column().toStdString() +
+                       "); a CSV holds one: export the plots one at a time, or as PNG, PDF or SVG");
+  merged.columns.push_back(x_column.toStdString());
   std::map<double, std::vector<double>> rows;
   std::size_t width = 0;
   for (std::size_t p = 0; p < plots.size(); ++p) {
@@ -52,10 +59,11 @@ CsvTable merged_table(const std::vector<PlotPanel*>& plots) {
     merged.rows.push_back(std::move(row));
   }
   if (!merged.rows.empty()) {
-    merged.metadata["range_s"] =
-        std::to_string(merged.rows.front()[0]) + " to " + std::to_string(merged.rows.back()[0]);
+    merged.metadata["range"] = std::to_string(merged.rows.front()[0]) + " to " +
+                               std::to_string(merged.rows.back()[0]) + " (" +
+                               x_column.toStdString() + ")";
   }
-  merged.metadata["exported_by"] = "pianoaction (visible time range of the plots)";
+  merged.metadata["exported_by"] = "pianoaction (visible range of the plots)";
   return merged;
 }
 
@@ -111,7 +119,7 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
       break;
     }
     case ExportFormat::Csv:
-      write_csv(path.toStdString(), merged_table(plots));
+      write_csv(path.toStdString(), merged_table(plots, path));
       break;
   }
 }

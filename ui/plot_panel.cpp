@@ -293,7 +293,15 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   auto ticker = QSharedPointer<QCPAxisTickerText>::create();
   for (std::size_t i = 0; i < names.size(); ++i) ticker->addTick(double(i), names[i]);
   plot_->xAxis->setTicker(ticker);
-  plot_->xAxis->setTickLabelRotation(names.size() > 4 ? 30 : 0);
+  const bool rotated = names.size() > 4;
+  plot_->xAxis->setTickLabelRotation(rotated ? 30 : 0);
+  if (rotated && !names.empty()) {
+    // a rotated label runs right of its tick; QCustomPlot drops a label that would cross the
+    // widget's edge, so the last category needs room on the right
+    const QFontMetrics metrics(plot_->xAxis->tickLabelFont());
+    const int run = int(std::ceil(metrics.horizontalAdvance(names.back()) * std::cos(M_PI / 6)));
+    plot_->axisRect()->setMinimumMargins(QMargins(0, 0, run, 0));
+  }
   categories_ = names.size();
   // a few points often sit right where an inset legend would be: the legend goes under the plot
   if (plot_->axisRect()->insetLayout()->take(plot_->legend)) {

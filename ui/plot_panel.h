@@ -56,6 +56,8 @@ class PlotPanel : public QWidget {
   int marker_count() const { return static_cast<int>(markers_.size()); }
 
   QString title() const { return title_; }
+  /// The x axis' CSV column (time_s unless set_x_axis named another).
+  QString x_column() const { return x_column_; }
   void set_x_range(double lo, double hi);
   std::pair<double, double> x_range() const;
   std::pair<double, double> value_range() const;

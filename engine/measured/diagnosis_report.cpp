@@ -87,6 +87,37 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
           {"wall_time_s", d.wall_time_s}};
 }
 
+CsvTable trial_traces_table(const TrialReport& r) {
+  const auto& phases = phase_names();
+  std::string phase_list;
+  for (const std::string& p : phases) phase_list += (phase_list.empty() ? "" : " ") + p;
+  CsvTable traces;
+  traces.metadata["file"] = r.path;
+  traces.metadata["phases"] = phase_list;
+  traces.columns = {"time_s", "measured_deg", "baseline_deg", "residual_baseline_deg",
+                    "phase_index"};
+  const bool extended = !r.extended.hammer_deg.empty();
+  if (extended) {
+    traces.columns.push_back("extended_deg");
+    traces.columns.push_back("residual_extended_deg");
+  }
+  const Alignment& base = r.baseline_alignment;
+  for (std::size_t i = 0; i < r.data.t.size(); ++i) {
+    const double measured = r.data.hammer_deg[i];
+    const double index = static_cast<double>(
+        std::find(phases.begin(), phases.end(), r.discrepancies.phase_of_sample[i]) -
+        phases.begin());
+    std::vector<double> row{r.data.t[i], measured, measured - base.residual[i], base.residual[i],
+                            index};
+    if (extended) {
+      row.push_back(measured - r.extended_alignment.residual[i]);
+      row.push_back(r.extended_alignment.residual[i]);
+    }
+    traces.rows.push_back(std::move(row));
+  }
+  return traces;
+}
+
 void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
   const nlohmann::json json = diagnosis_json(d);
   namespace fs = std::filesystem;
@@ -133,32 +164,8 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
       phase_table.rows.push_back({static_cast<double>(j + 1), index, static_cast<double>(p.samples),
                                   p.rms_deg, p.mean_deg});
     }
-    CsvTable traces;
-    traces.metadata["file"] = r.path;
-    traces.metadata["phases"] = phase_list;
-    traces.columns = {"time_s", "measured_deg", "baseline_deg", "residual_baseline_deg",
-                      "phase_index"};
-    const bool extended = !r.extended.hammer_deg.empty();
-    if (extended) {
-      traces.columns.push_back("extended_deg");
-      traces.columns.push_back("residual_extended_deg");
-    }
-    const Alignment& base = r.baseline_alignment;
-    for (std::size_t i = 0; i < r.data.t.size(); ++i) {
-      const double measured = r.data.hammer_deg[i];
-      const double index = static_cast<double>(
-          std::find(phases.begin(), phases.end(), r.discrepancies.phase_of_sample[i]) -
-          phases.begin());
-      std::vector<double> row{r.data.t[i], measured, measured - base.residual[i], base.residual[i],
-                              index};
-      if (extended) {
-        row.push_back(measured - r.extended_alignment.residual[i]);
-        row.push_back(r.extended_alignment.residual[i]);
-      }
-      traces.rows.push_back(std::move(row));
-    }
     write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
-              traces);
+              trial_traces_table(r));
   }
   write_csv((fs::path(dir) / "phases.csv").string(), phase_table);
 }

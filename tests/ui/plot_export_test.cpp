@@ -7,11 +7,12 @@
 #include <QImage>
 #include <QTemporaryDir>
 #include <QTest>
+#include <memory>
 
+#include "analysis_plots.h"
 #include "core/error.h"
 #include "io/csv.h"
 #include "plot_panel.h"
-#include "trace_plots.h"
 
 using pat::ui::PlotPanel;
 
@@ -23,7 +24,7 @@ class PlotExportTest : public QObject {
   void csv_holds_the_visible_range_only();
   void cursors_give_delta_t_and_delta_value();
   void unknown_extension_and_bad_folder_are_refused();
-  void trace_plots_of_a_simulation_trace();
+  void analysis_plots_are_written_headless();
   void flat_series_keeps_a_bounded_value_axis();
 
  private:
@@ -127,19 +128,27 @@ void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
       pat::ui::export_plots({gap_.get()}, "/nonexistent/dir/p.png", QSize(400, 300)));
 }
 
-void PlotExportTest::trace_plots_of_a_simulation_trace() {
-  pat::CsvTable trace;
-  trace.columns = {"time_s", "key_angle_deg", "hammer_angle_deg", "hammer_string_gap_mm",
-                   "finger_force_n"};
-  for (int i = 0; i < 50; ++i)
-    trace.rows.push_back({i * 1e-3, 0.05 * i, 0.5 * i, 45 - 0.9 * i, 5.0});
-  const auto plots = pat::ui::make_trace_plots(trace);
-  QCOMPARE(plots.size(), std::size_t(3));
-  QCOMPARE(plots[0]->series_count(), 2);
-  QCOMPARE(plots[0]->point_count(1), std::size_t(50));
-  const QString path = dir_.filePath("trace.pdf");
-  pat::ui::write_trace_plot(trace, path);
-  QVERIFY(head(path).startsWith("%PDF"));
+// The command line's --plot path: plots of series over any x axis, stacked in one file.
+void PlotExportTest::analysis_plots_are_written_headless() {
+  pat::ui::AnalysisPlot angles{"Key and hammer", "time (s)", "time_s", "s", "angle (deg)", {}};
+  pat::ui::AnalysisSeries hammer{"hammer", "hammer_angle_deg", {}, {}};
+  for (int i = 0; i < 50; ++i) {
+    hammer.x.push_back(i * 1e-3);
+    hammer.y.push_back(0.5 * i);
+  }
+  angles.series.push_back(hammer);
+  pat::ui::AnalysisPlot strikes{"Strikes", "setting", "setting_index", "", "strikes", {}};
+  strikes.series.push_back({"strikes", "strikes", {0, 1, 2}, {1, 2, 1}, true});
+  strikes.x_categories = {"key_dip", "let_off", "drop"};
+  std::unique_ptr<PlotPanel> panel(pat::ui::make_analysis_plot_panel(angles));
+  QCOMPARE(panel->series_count(), 1);
+  QCOMPARE(panel->point_count(0), std::size_t(50));
+  const QString pdf = dir_.filePath("plots.pdf");
+  pat::ui::write_analysis_plots({angles, strikes}, pdf);
+  QVERIFY(head(pdf).startsWith("%PDF"));
+  const QString png = dir_.filePath("plots.png");
+  pat::ui::write_analysis_plots({angles, strikes}, png);
+  QCOMPARE(QImage(png).size(), pat::ui::stacked_plot_size(2));  // 300 px per stacked plot
 }
 
 QTEST_MAIN(PlotExportTest)

@@ -1,0 +1,54 @@
+#include "analysis_plots.h"
+
+#include <QApplication>
+#include <algorithm>
+#include <memory>
+
+#include "plot_export.h"
+#include "plot_panel.h"
+#include "plot_styles.h"
+
+namespace pat::ui {
+
+PlotPanel* make_analysis_plot_panel(const AnalysisPlot& p, QWidget* parent) {
+  auto* panel = new PlotPanel(p.title, p.y_title, parent);
+  panel->set_x_axis(p.x_title, p.x_column, "x", p.x_unit, 1.0);
+  for (std::size_t s = 0; s < p.series.size(); ++s) {
+    const AnalysisSeries& series = p.series[s];
+    const int id = panel->add_series(series.label, series.column, series_colour(int(s)));
+    panel->set_data(id, series.x, series.y);
+    if (series.points) panel->set_points_only(id);
+  }
+  if (!p.x_categories.empty()) panel->set_x_categories(p.x_categories);
+  for (const AnalysisMarker& m : p.markers) panel->add_marker(m.x, m.label);
+  panel->fit_all();
+  return panel;
+}
+
+QSize stacked_plot_size(std::size_t count) {
+  return QSize(1000, 300 * static_cast<int>(std::max<std::size_t>(count, 1)));
+}
+
+void write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path, QSize size) {
+  export_format(path);  // a wrong extension is reported before any work
+  std::unique_ptr<QApplication> app;
+  if (!QApplication::instance()) {
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    static int argc = 1;
+    static char name[] = "pianoaction";
+    static char* argv[] = {name, nullptr};
+    app = std::make_unique<QApplication>(argc, argv);
+  }
+  if (!size.isValid()) size = stacked_plot_size(plots.size());
+  std::vector<std::unique_ptr<PlotPanel>> panels;
+  std::vector<PlotPanel*> raw;
+  for (const AnalysisPlot& p : plots) {
+    panels.emplace_back(make_analysis_plot_panel(p));
+    panels.back()->resize(size.width(),
+                          size.height() / int(std::max<std::size_t>(plots.size(), 1)));
+    raw.push_back(panels.back().get());
+  }
+  export_plots(raw, path, size);
+}
+
+}  // namespace pat::ui
