@@ -1,5 +1,6 @@
 #include "regulation/measurements.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -53,6 +54,27 @@ double jack_position_mm(const ActionModel& model, const RestState& rest) {
   return (edge - core).dot(along) * 1e3;
 }
 
+/// Repetition lever height (grand, mm): the knuckle–jack gap at rest while the lever carries the
+/// knuckle. A lever screwed below the point where the knuckle settles on the jack (the gap then
+/// stays at minus the felt's compression under the hammer, whatever the screw) is read as the
+/// technician sees it: the lever top stands clear below the knuckle, and that gap counts
+/// negative. Both parts are contact gaps, so the reading is continuous where the knuckle passes
+/// from the lever onto the jack.
+double lever_height_mm(const ActionModel& model, const RestState& rest) {
+  const double jack_gap = contact_gap(model, model.landmarks.escapement_contact, rest.q);
+  // the knuckle–lever contact: between the hammer and the body the height screw holds
+  const int screw = adjusted_contact(model, "lever_height");
+  const int lever = screw >= 0 ? model.contacts[screw].body_a : -1;
+  const int hammer = model.landmarks.hammer;
+  for (std::size_t i = 0; i < model.contacts.size(); ++i) {
+    const Contact& c = model.contacts[i];
+    if (lever >= 0 && c.body_a == hammer && c.body_b == lever)
+      return (jack_gap - std::max(contact_gap(model, static_cast<int>(i), rest.q), 0.0)) * 1e3;
+  }
+  throw std::runtime_error(
+      "lever_height needs a contact between the hammer and the repetition lever");
+}
+
 /// Bridle strap slack at rest (mm): how much farther apart its ends can move before it pulls.
 double bridle_slack_mm(const ActionModel& model, const RestState& rest) {
   const int strap_index = model.strap_index("bridle");
@@ -85,14 +107,13 @@ double measure_setting(const ActionModel& model, const std::string& name,
   if (name == "key_dip")
     return key_front_travel(model, rest, key_full_dip_angle(model, rest)) * 1e3;
   if (name == "hammer_blow") return rest.hammer_string_gap * 1e3;
-  if (name == "lever_height" || name == "lost_motion")
-    return contact_gap(model, marks.escapement_contact, rest.q) * 1e3;
+  if (name == "lever_height") return lever_height_mm(model, rest);
+  if (name == "lost_motion") return contact_gap(model, marks.escapement_contact, rest.q) * 1e3;
   if (name == "jack_position") return jack_position_mm(model, rest);
   if (name == "bridle") return bridle_slack_mm(model, rest);
   if (name == "let_off" || name == "drop" || name == "damper_lift") {
-    const SlowPressReading press =
-        slow_press(model, rest, name == "damper_lift" ? adjusted_contact(model, name) : -1,
-                   name != "drop");
+    const SlowPressReading press = slow_press(
+        model, rest, name == "damper_lift" ? adjusted_contact(model, name) : -1, name != "drop");
     if (name == "let_off") return press.let_off_gap * 1e3;
     if (name == "drop") return press.drop_gap * 1e3;
     return press.damper_lift_fraction;

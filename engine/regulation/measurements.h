@@ -1,7 +1,8 @@
 // The technician's measurements of the seven regulation settings (DESIGN.md section 3), taken
 // on the simulated action the way they are taken on a real one:
 //   rest geometry        key dip (key-front travel to the punching), hammer blow (hammer–string
-//                        distance at rest), lever height (knuckle–jack gap at rest), jack
+//                        distance at rest), lever height (knuckle–jack gap at rest; with the
+//                        knuckle down on the jack, minus the lever top's gap below it), jack
 //                        position (jack edge vs knuckle core), lost motion (jack–butt gap),
 //                        bridle (strap slack at rest);
 //   slow key press       let-off (hammer–string distance at escapement), drop (distance after

@@ -104,6 +104,12 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     if (!damper_lifted) {
       const double damper = gap_of(damper_contact);
       if (damper <= 0.0) {
+        // the hammer's travel tells the lift only while the key drives the hammer: a damper
+        // lifting after let-off, with the hammer falling back from its closest carried
+        // approach, would read an ever earlier fraction the later it lifts
+        if (jack_carried && gap > closest_carried_gap + kFallBack)
+          throw std::runtime_error(
+              "in a slow key press the damper starts to lift only after the jack has escaped");
         const double at_lift = at_crossing(previous_gap, gap, previous_damper, damper);
         reading.damper_lift_fraction = (rest.hammer_string_gap - at_lift) / rest.hammer_string_gap;
         damper_lifted = true;

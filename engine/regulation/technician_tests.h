@@ -27,7 +27,8 @@ inline constexpr double kSlowPressHoldSeconds = 0.4;
 
 /// Presses the key slowly (quasi-static: the hammer's speed stays below ~0.05 m/s) to full dip
 /// and holds it. `damper_contact` (-1: none) is the contact whose first touch marks the damper
-/// lift. Throws std::runtime_error naming what did not happen (no escapement, a stopped run).
+/// lift. Throws std::runtime_error naming what did not happen (no escapement, a stopped run, a
+/// damper that lifts only after the jack has escaped).
 /// With `until_escapement`, the press ends once the jack escapes (let-off only: drop_gap and
 /// checked_at_end are then not read).
 SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int damper_contact,

@@ -77,34 +77,99 @@ struct MonotoneCase {
   const char* action;
   const char* setting;
   double from_mm, to_mm;
+  double step_mm = 0.5;
+  /// Measured as the preset's regulation measures it when the setting asks another adjuster out
+  /// of the way first (its clear_first: the grand's let-off with the drop screw screwed down).
+  bool other_cleared = false;
 };
 
 class MeasurementResponse : public ::testing::TestWithParam<MonotoneCase> {};
 
 // Each measurement responds monotonically to its own adjuster over the range tested (strictly:
-// every 0.5 mm step changes it by more than 1 µm, always in the same direction).
+// every step changes it by more than 1 µm, or 0.001 of a fraction, always in the same
+// direction). 1 µm is fifty times below the 0.05 mm regulation tolerance, and two orders of
+// magnitude above the procedures' repeatability (about 1e-2 µm at rest, 1 µm in a press).
 TEST_P(MeasurementResponse, IsMonotoneInItsAdjuster) {
   const MonotoneCase c = GetParam();
-  const ActionModel model = shipped(c.action);
+  ActionModel model = shipped(c.action);
+  if (c.other_cleared) {
+    const RegulationSetting& s = model.regulation[model.setting_index(c.setting)];
+    ASSERT_FALSE(s.clear_adjuster.empty()) << c.setting << " has no clear_first in the preset";
+    model = with_adjuster(model, s.clear_adjuster, s.clear_position);
+  }
   std::vector<double> values;
-  for (double x = c.from_mm; x <= c.to_mm + 1e-9; x += 0.5)
+  for (double x = c.from_mm; x <= c.to_mm + 1e-9; x += c.step_mm)
     values.push_back(measure_at(model, c.setting, x));
   const double direction = values.back() > values.front() ? 1.0 : -1.0;
   for (std::size_t i = 1; i < values.size(); ++i)
     EXPECT_GT(direction * (values[i] - values[i - 1]), 1e-3)
-        << c.action << " " << c.setting << " at step " << i;
+        << c.action << " " << c.setting << " at step " << i << " ("
+        << c.from_mm + c.step_mm * (i - 1) << " → " << c.from_mm + c.step_mm * i
+        << " mm: " << values[i - 1] << " → " << values[i] << ")";
 }
 
+// The ranges are those over which each adjuster acts on the shipped presets (adjuster mm from
+// the regulated position; readings measured with measure_setting in 0.25 mm steps, finer for
+// the damper spoon). Where a range is narrower than the adjuster's physical range, the comment
+// names the part that takes over beyond it.
 INSTANTIATE_TEST_SUITE_P(
     Settings, MeasurementResponse,
-    // not yet here (known limits, see README): grand jack_position, lever_height, let_off,
-    // drop, checking and upright lost_motion, let_off, checking, damper_lift
-    ::testing::Values(MonotoneCase{"grand", "key_dip", -2, 2},
-                      MonotoneCase{"grand", "hammer_blow", -1, 1},
-                      MonotoneCase{"upright", "key_dip", -2, 2},
-                      MonotoneCase{"upright", "hammer_blow", -2, 2},
-                      MonotoneCase{"upright", "bridle", -2, 2}),
+    ::testing::Values(
+        MonotoneCase{"grand", "key_dip", -2, 2}, MonotoneCase{"grand", "jack_position", -3, 3},
+        // knuckle–jack gap 0.10 mm at 0, 3.70 mm at +2.5; from about −0.05 mm the knuckle sits
+        // on the jack and the reading is minus the lever top's gap below it (−3.18 mm at −2.5;
+        // as a bare knuckle–jack gap it would stay at −0.07 mm, the felt's compression)
+        MonotoneCase{"grand", "lever_height", -2.5, 2.5},
+        MonotoneCase{"grand", "hammer_blow", -1, 1},
+        // with the drop screw cleared (+1 mm: the lever stops with the hammer 7.5 mm from the
+        // string) let-off reads 0.32 mm at −0.25 and 6.8 mm at +1.0. Below −0.25 mm the jack
+        // lifts the hammer into the string before its toe trips (blocking: at −0.5 mm the head
+        // presses the string and the reading stays at 0.28 mm; no escapement from −0.75);
+        // beyond +1.0 mm the toe trips before the jack takes the knuckle over from the lever,
+        // so the jack never carries the hammer
+        MonotoneCase{"grand", "let_off", -0.25, 1.0, 0.25, true},
+        // 3.0 mm at 0 to 16.6 mm at +3. At −0.25 mm the lever holds the hammer 1.83 mm from
+        // the string, only 0.14 mm below where the jack let it off (1.69 mm): less than the
+        // 0.2 mm fall by which the slow press recognises an escapement, so there is no drop to
+        // read (at −0.2 mm: 2.06 mm); from −0.5 mm the lever carries the knuckle past let-off
+        // and the jack never lifts the hammer. Beyond +3 mm the falling knuckle comes to rest
+        // against the side of the tipped jack, above the lever (17.14 mm at +3.5, 17.01 at +4,
+        // the lever 0.7 mm below the knuckle)
+        MonotoneCase{"grand", "drop", 0, 3},
+        // 17.1 mm at −0.5 to 12.2 mm at +2. From −1 mm the hammer's tail passes below the end
+        // of the backcheck's face and is never caught (README, Limits); from +2.5 mm the tail
+        // brushes the backcheck on the way up and the hammer never reaches the string
+        MonotoneCase{"grand", "checking", -0.5, 2}, MonotoneCase{"upright", "key_dip", -2, 2},
+        MonotoneCase{"upright", "hammer_blow", -2, 2},
+        // 6.0 mm at +0.5 to 33 mm at +4. From 0 mm down the jack slides off the hammer butt
+        // before its toe reaches the button: let-off reads 4.55 mm whatever the button (README,
+        // Limits: the butt's jack face is short)
+        MonotoneCase{"upright", "let_off", 0.5, 4}, MonotoneCase{"upright", "checking", -4, 4},
+        MonotoneCase{"upright", "bridle", -2, 2},
+        // a fraction of the hammer travel, 0.87 at −0.5 to 0.03 at +0.375 (about 1 per mm of
+        // spoon). From +0.5 mm the spoon already holds the damper at rest; below about −0.6 mm
+        // it reaches the damper only after let-off (read as unmeasurable, not as a fraction)
+        MonotoneCase{"upright", "damper_lift", -0.5, 0.375, 0.125}),
+    // not here: upright lost_motion. The upright key is front-heavy for the load on its capstan
+    // (README, Limits): its back floats off the back rail and the key holds the jack against
+    // the butt whatever the capstan, so the jack–butt gap reads −0.0069 to −0.0065 mm for the
+    // capstan from −3 to +0.5 mm (then −0.037 to −0.053 mm up to +3 mm, the felt compressed).
     [](const auto& info) { return std::string(info.param.action) + "_" + info.param.setting; });
+
+// A damper spoon so far back that the damper lifts only after let-off (upright, −0.75 mm) is not
+// read as a fraction of the hammer travel: the hammer is then falling back, and the fraction
+// read from its position would shrink the later the damper lifts (0.72 at −0.75 mm, 0.09 at
+// −1 mm, against 0.87 at −0.5 mm).
+TEST(Regulation, DamperLiftingAfterLetOffIsNotReadAsAFraction) {
+  const ActionModel model = shipped("upright");
+  try {
+    const double fraction = measure_at(model, "damper_lift", -0.75);
+    FAIL() << "read as a fraction: " << fraction;
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("only after the jack has escaped"), std::string::npos)
+        << e.what();
+  }
+}
 
 // A regulated (here: deliberately offset) preset written and read back measures the same, and
 // its adjusters read 0 again. Tolerance 1e-3 mm: offsets are written to 0.1 µm.
