@@ -475,6 +475,9 @@ void MainWindow::set_deregulation_demo(const std::string& setting, double rate_m
 
 void MainWindow::show_deregulation_result(const DeregulationResult& result) {
   const QString setting = deregulation_setting_->currentText();
+  QString unit = tr("mm");
+  for (const RegulationSetting& r : model()->regulation)
+    if (r.name == setting.toStdString() && r.unit != "mm") unit = QString::fromStdString(r.unit);
   AnalysisResult shown;
   shown.summary = result.stop_cause.empty() ? tr("the action held to the end.")
                                             : tr("stopped at t = %1 s: %2")
@@ -491,7 +494,7 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
     gap.x.push_back(s.t);
     gap.y.push_back(s.hammer_string_gap_mm);
     shown.table.push_back({tr("t = %1 s, adjuster %2 mm").arg(s.t, 0, 'f', 2).arg(s.adjuster_mm),
-                           QString::number(s.measured, 'f', 3), tr("setting's unit")});
+                           QString::number(s.measured, 'f', 3), unit});
   }
   shown.plots.push_back({tr("%1 over time").arg(setting),
                          tr("time (s)"),
