@@ -10,6 +10,8 @@
 namespace pat::app {
 
 int run_bench(const std::vector<std::string>& args) {
+  for (const std::string& a : args)
+    if (a == "--window") return run_bench_window(args);
   const CommandLine cl(args, {"--duration", "--input"}, {"--json"});
   BenchOptions options;
   options.duration_s = cl.positive_number_or("--duration", 1.0);

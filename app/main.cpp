@@ -32,6 +32,7 @@ usage:
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--json]
   pianoaction bench     [--json] [--duration S]
+  pianoaction bench --window [--action A] [--input SPEC] [--duration S] [--trials N] [--json]
   pianoaction swing     --action A [--release-deg D] [--out CSV] [--json]
   pianoaction keyfall   --action A [--duration S] [--out CSV] [--json]
   pianoaction touchweight --action A [--spring-factor SPRING=F]... [--key-lead-g G]
