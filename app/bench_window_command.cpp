@@ -44,6 +44,10 @@ int run_bench_window(const std::vector<std::string>& args) {
                                 {"frame_interval_max_ms", r.frame_interval_max_ms},
                                 {"paint_ms_mean", r.paint_ms_mean},
                                 {"paint_ms_max", r.paint_ms_max},
+                                {"paint_cpu_ms_mean", r.paint_cpu_ms_mean},
+                                {"window_thread_cpu_percent", r.window_thread_cpu_percent},
+                                {"plot_replots_per_s", r.replots_per_s},
+                                {"plot_replot_ms_mean", r.replot_ms_mean},
                                 {"realtime_factor", r.realtime_factor},
                                 {"adjuster", options.adjuster},
                                 {"latency_ms", r.latency_ms},
@@ -63,7 +67,11 @@ int run_bench_window(const std::vector<std::string>& args) {
             << " in the worst 1 s; interval p95 " << r.frame_interval_p95_ms << " ms, max "
             << r.frame_interval_max_ms << " ms\n";
   std::cout << "  paintEvent        " << std::setprecision(2) << r.paint_ms_mean << " ms mean, "
-            << r.paint_ms_max << " ms max\n";
+            << r.paint_ms_max << " ms max (wall), " << r.paint_cpu_ms_mean << " ms CPU\n";
+  std::cout << "  window thread     " << std::setprecision(0) << r.window_thread_cpu_percent
+            << " % of one core\n";
+  std::cout << "  plot replots      " << std::setprecision(1) << r.replots_per_s
+            << " /s (of one panel), " << std::setprecision(2) << r.replot_ms_mean << " ms each\n";
   std::cout << "  real-time factor  " << std::setprecision(3) << r.realtime_factor << "\n";
   std::cout << std::setprecision(1) << "  slider latency    " << options.adjuster << " moved "
             << r.latency_ms.size() << " times: median " << r.latency_median_ms << " ms, worst "

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -16,6 +17,8 @@
 #include "core/error.h"
 #include "main_window.h"
 #include "playback_controller.h"
+#include "plot_panel.h"
+#include "plot_stack.h"
 #include "regulation_panel.h"
 #include "regulation_row.h"
 #include "run_controls.h"
@@ -25,6 +28,13 @@ namespace {
 
 constexpr double kWarmUpS = 1.0;         // playback before counting (layout, first replots)
 constexpr int kLatencyTimeoutMs = 2000;  // a slider move not shown by then is an error
+
+/// CPU time of the calling thread, ns.
+qint64 thread_cpu_ns() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<qint64>(t.tv_sec) * 1'000'000'000 + t.tv_nsec;
+}
 
 double load_average() {
   double load[1] = {0.0};
@@ -46,23 +56,28 @@ class PaintTimer : public QObject {
     view->installEventFilter(this);
     connect(view, &ActionView::framePainted, this, [this] {
       const qint64 now = clock_.nsecsElapsed();
-      paints_.push_back(
-          {now, (now - paint_start_ns_) * 1e-6, view_->frame()->t, view_->frame()->model.get()});
+      paints_.push_back({now, (now - paint_start_ns_) * 1e-6,
+                         (thread_cpu_ns() - paint_start_cpu_ns_) * 1e-6, view_->frame()->t,
+                         view_->frame()->model.get()});
     });
     clock_.start();
   }
   struct Paint {
-    qint64 end_ns;      // wall time when the paint finished
-    double paint_ms;    // time spent in paintEvent
-    double t;           // simulated time of the frame painted
-    const void* model;  // the frame's model (a moved adjuster makes a new one)
+    qint64 end_ns;        // wall time when the paint finished
+    double paint_ms;      // wall time spent in paintEvent
+    double paint_cpu_ms;  // CPU time spent in paintEvent
+    double t;             // simulated time of the frame painted
+    const void* model;    // the frame's model (a moved adjuster makes a new one)
   };
   const std::vector<Paint>& paints() const { return paints_; }
   qint64 now_ns() const { return clock_.nsecsElapsed(); }
 
  protected:
   bool eventFilter(QObject* watched, QEvent* event) override {
-    if (watched == view_ && event->type() == QEvent::Paint) paint_start_ns_ = clock_.nsecsElapsed();
+    if (watched == view_ && event->type() == QEvent::Paint) {
+      paint_start_ns_ = clock_.nsecsElapsed();
+      paint_start_cpu_ns_ = thread_cpu_ns();
+    }
     return false;
   }
 
@@ -70,6 +85,7 @@ class PaintTimer : public QObject {
   ActionView* view_;
   QElapsedTimer clock_;
   qint64 paint_start_ns_ = 0;
+  qint64 paint_start_cpu_ns_ = 0;
   std::vector<Paint> paints_;
 };
 
@@ -96,11 +112,13 @@ void summarise_frames(const std::vector<PaintTimer::Paint>& paints, qint64 from_
                       WindowBenchResult& r) {
   std::vector<qint64> shown;  // end of each paint that showed a new instant
   std::vector<double> paint_ms;
+  double paint_cpu_ms = 0.0;
   const PaintTimer::Paint* previous = nullptr;
   for (const PaintTimer::Paint& p : paints) {
     if (p.end_ns >= from_ns && p.end_ns < to_ns) {
       ++r.paints;
       paint_ms.push_back(p.paint_ms);
+      paint_cpu_ms += p.paint_cpu_ms;
       if (!previous || p.t != previous->t || p.model != previous->model) shown.push_back(p.end_ns);
     }
     previous = &p;
@@ -132,6 +150,7 @@ void summarise_frames(const std::vector<PaintTimer::Paint>& paints, qint64 from_
     double sum = 0.0;
     for (double ms : paint_ms) sum += ms;
     r.paint_ms_mean = sum / paint_ms.size();
+    r.paint_cpu_ms_mean = paint_cpu_ms / paint_ms.size();
     r.paint_ms_max = *std::max_element(paint_ms.begin(), paint_ms.end());
   }
 }
@@ -156,6 +175,9 @@ double time_slider_move(MainWindow& window, RegulationRow& row, const std::strin
   since_move.start();
   row.slider()->setValue(static_cast<int>(std::lround(mm * 100.0)));  // 0.01 mm per step
   loop.exec();
+  if (!latency_ms && window.controller()->run_stopped())
+    throw std::runtime_error("the run stopped after " + name + " moved to " + std::to_string(mm) +
+                             " mm: " + window.banner_text().toStdString());
   if (!latency_ms)
     throw std::runtime_error("no frame with the moved " + name + " was painted within " +
                              std::to_string(kLatencyTimeoutMs) + " ms");
@@ -199,11 +221,24 @@ WindowBenchResult run_window_bench(const WindowBenchOptions& options) {
   r.view_width = window.view()->width(), r.view_height = window.view()->height();
 
   // frame rate and real-time factor over the measured span
+  int replots = 0;
+  double replot_ms = 0.0;
+  std::vector<QMetaObject::Connection> replot_counters;
+  for (PlotPanel* panel : window.plots()->panels())
+    replot_counters.push_back(QObject::connect(panel, &PlotPanel::replotted, [&](double ms) {
+      ++replots;
+      replot_ms += ms;
+    }));
   const qint64 from_ns = timer.now_ns();
+  const qint64 cpu_from_ns = thread_cpu_ns();
   const double sim_from = controller->display_time();
   run_events_for(static_cast<int>(options.duration_s * 1000));
   const qint64 to_ns = timer.now_ns();
+  r.window_thread_cpu_percent = 100.0 * (thread_cpu_ns() - cpu_from_ns) / (to_ns - from_ns);
   const double sim_to = controller->display_time();
+  for (const auto& c : replot_counters) QObject::disconnect(c);
+  r.replots_per_s = replots / ((to_ns - from_ns) * 1e-9);
+  r.replot_ms_mean = replots > 0 ? replot_ms / replots : 0.0;
   check_running(*controller, window, options.input);
   summarise_frames(timer.paints(), from_ns, to_ns, r);
   r.realtime_factor = (sim_to - sim_from) / ((to_ns - from_ns) * 1e-9);

@@ -17,7 +17,7 @@ struct WindowBenchOptions {
   double duration_s = 5.0;                   ///< wall seconds over which frames are counted
   int latency_trials = 10;                   ///< slider moves timed
   std::string adjuster = "hammer_blow";      ///< the adjuster whose slider is moved
-  double adjuster_step_mm = 0.2;             ///< slider moves alternate between ±this
+  double adjuster_step_mm = 0.1;             ///< slider moves alternate between ±this
 };
 
 struct WindowBenchResult {
@@ -33,6 +33,14 @@ struct WindowBenchResult {
   double frame_interval_max_ms = 0.0;
   double paint_ms_mean = 0.0;  ///< wall time of one paintEvent (drawing into the backing store)
   double paint_ms_max = 0.0;
+  /// CPU time of one paintEvent, ms: unlike the wall time above, not stretched by other load.
+  double paint_cpu_ms_mean = 0.0;
+  /// CPU time of the window's thread per wall second, % of one core (paints, replots, playback).
+  double window_thread_cpu_percent = 0.0;
+  /// Replots of the live plots (all panels) per wall second and the time of one, ms: they share
+  /// the window's thread with the action view.
+  double replots_per_s = 0.0;
+  double replot_ms_mean = 0.0;
   /// Displayed simulated time per wall second over the measurement (1 = keeps real time).
   double realtime_factor = 0.0;
   /// Slider change to the end of the first paint with the new adjuster position, ms.
