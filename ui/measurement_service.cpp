@@ -9,7 +9,9 @@
 
 namespace pat::ui {
 
-MeasurementService::MeasurementService(QObject* parent) : QObject(parent) {}
+MeasurementService::MeasurementService(QObject* parent) : QObject(parent) {
+  pool_.setMaxThreadCount(1);
+}
 
 MeasurementService::~MeasurementService() {
   generation_.store(-1000000);  // the running job stops after its current measurement
@@ -42,15 +44,14 @@ void MeasurementService::start_next() {
   }
   running_ = true;
   const int generation = generation_.load();
-  future_ = QtConcurrent::run([this, model, generation] {
+  future_ = QtConcurrent::run(&pool_, [this, model, generation] {
     // the live readings yield the cores to the window and the simulation worker (Qt runs an
     // idle-priority thread under SCHED_IDLE on Linux): on two cores they would otherwise delay
-    // the event loop by up to 0.2 s; the pool thread gets its priority back afterwards
-    QThread* thread = QThread::currentThread();
-    const QThread::Priority previous = thread->priority();
-    thread->setPriority(QThread::IdlePriority);
+    // the event loop by up to 0.2 s. The thread is this service's own: QThread::setPriority
+    // cannot bring a thread back from SCHED_IDLE (it keeps the thread's policy), and a shared
+    // pool thread left there delayed the window's painting by up to 0.25 s (bench --window)
+    QThread::currentThread()->setPriority(QThread::IdlePriority);
     run(model, generation);
-    thread->setPriority(previous == QThread::InheritPriority ? QThread::NormalPriority : previous);
   });
 }
 

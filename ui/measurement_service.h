@@ -7,6 +7,7 @@
 #include <QFuture>
 #include <QObject>
 #include <QString>
+#include <QThreadPool>
 #include <atomic>
 #include <memory>
 #include <mutex>
@@ -41,6 +42,10 @@ class MeasurementService : public QObject {
   std::mutex mutex_;
   std::shared_ptr<const ActionModel> pending_;
   bool running_ = false;
+  /// One thread of its own, at idle priority for good: Qt's raster engine splits large fills
+  /// over the global pool and waits for them, so a global-pool thread left at idle priority
+  /// stalls the window's painting while other work keeps the cores busy.
+  QThreadPool pool_;
   QFuture<void> future_;
 };
 
