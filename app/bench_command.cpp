@@ -36,6 +36,8 @@ std::vector<PlotSpec> bench_plots(const std::vector<BenchCase>& cases) {
 }  // namespace
 
 int run_bench(const std::vector<std::string>& args) {
+  for (const std::string& a : args)
+    if (a == "--window") return run_bench_window(args);
   const CommandLine cl(args, {"--duration", "--input", "--plot"}, {"--json"});
   const PlotOption plot(cl.value_or("--plot", ""));
   BenchOptions options;

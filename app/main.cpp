@@ -34,6 +34,7 @@ usage:
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--plot FILE] [--json]
   pianoaction bench     [--duration S] [--plot FILE] [--json]
+  pianoaction bench --window [--action A] [--input SPEC] [--duration S] [--trials N] [--json]
   pianoaction swing     --action A [--release-deg D] [--out CSV] [--plot FILE] [--json]
   pianoaction keyfall   --action A [--duration S] [--out CSV] [--plot FILE] [--json]
   pianoaction touchweight --action A [--spring-factor SPRING=F]... [--key-lead-g G]

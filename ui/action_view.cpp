@@ -126,14 +126,21 @@ void ActionView::resizeEvent(QResizeEvent*) {
 }
 
 void ActionView::paintEvent(QPaintEvent*) {
-  QPainter painter(this);
-  painter.setRenderHint(QPainter::Antialiasing);
-  painter.fillRect(rect(), QColor(250, 250, 246));
-  if (!frame_) {
-    painter.setPen(QColor(90, 90, 90));
-    painter.drawText(rect(), Qt::AlignCenter, tr("Starting the simulation…"));
-    return;
+  {
+    QPainter painter(this);
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.fillRect(rect(), QColor(250, 250, 246));
+    if (!frame_) {
+      painter.setPen(QColor(90, 90, 90));
+      painter.drawText(rect(), Qt::AlignCenter, tr("Starting the simulation…"));
+      return;
+    }
+    paint_frame(painter);
   }
+  emit framePainted();
+}
+
+void ActionView::paint_frame(QPainter& painter) {
   const ActionModel& model = *model_;
   QFont label_font = font();
   label_font.setPointSizeF(std::max(9.0, label_font.pointSizeF()));

@@ -14,6 +14,8 @@
 #include "dynamics/action_dynamics.h"
 #include "frame.h"
 
+class QPainter;
+
 namespace pat::ui {
 
 class ActionView : public QWidget {
@@ -40,6 +42,9 @@ class ActionView : public QWidget {
   /// The key played with the mouse: angle (rad from rest, positive down).
   void keyPlayed(double angle_rad);
   void keyReleased();
+  /// The view finished painting a frame (frame() is the frame painted); the window benchmark
+  /// counts these and times the slider-to-visible-change latency with them.
+  void framePainted();
 
  protected:
   void paintEvent(QPaintEvent* event) override;
@@ -52,6 +57,7 @@ class ActionView : public QWidget {
 
  private:
   void fit();
+  void paint_frame(QPainter& painter);
   QPointF to_screen(const Vec2& p) const;
   Vec2 to_model(const QPointF& p) const;
   Vec2 body_point(int body, const Vec2& rest_point);

@@ -6,6 +6,8 @@
 #include <memory>
 #include <mutex>
 
+#include "background_pool.h"
+
 namespace pat::ui {
 
 AnalysisRunner::AnalysisRunner(QObject* parent) : QObject(parent) {
@@ -21,7 +23,7 @@ void AnalysisRunner::start(const QString& title, AnalysisTask task) {
   if (running_) return;
   running_ = true;
   cancel_requested_.store(false);
-  future_ = QtConcurrent::run([this, title, task = std::move(task)] {
+  future_ = QtConcurrent::run(background_pool(), [this, title, task = std::move(task)] {
     // the task may report from several threads (parallel runs): throttle under a lock
     auto throttle = std::make_shared<std::pair<std::mutex, QElapsedTimer>>();
     throttle->second.start();

@@ -6,6 +6,7 @@
 #include <exception>
 #include <map>
 
+#include "background_pool.h"
 #include "model/model_edits.h"
 #include "sim/simulation.h"
 
@@ -23,7 +24,7 @@ void DeregulationRunner::start(std::shared_ptr<const ActionModel> model,
   if (running_) return;
   running_ = true;
   cancelled_.store(false);
-  future_ = QtConcurrent::run([this, model, options]() mutable {
+  future_ = QtConcurrent::run(background_pool(), [this, model, options]() mutable {
     const double duration = options.duration_s;
     double last_reported = -1.0;
     options.on_progress = [this, duration, &last_reported](double t) {

@@ -87,6 +87,8 @@ class PlotPanel : public QWidget {
  signals:
   /// The user zoomed or panned the time axis (not emitted for set_x_range).
   void userChangedTimeRange(double lo, double hi);
+  /// A replot finished; `ms` is the wall time it took (QCustomPlot's own measure).
+  void replotted(double ms);
 
  private:
   void update_cursor_items();

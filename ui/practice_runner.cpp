@@ -4,6 +4,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
+#include "background_pool.h"
+
 namespace pat::ui {
 
 PracticeRunner::PracticeRunner(QObject* parent) : QObject(parent) {
@@ -30,8 +32,8 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
   const bool have_regulated = cached != regulated_cache_.end();
   std::vector<Observation> regulated_seen =
       have_regulated ? cached->second : std::vector<Observation>{};
-  future_ = QtConcurrent::run([this, hidden, regulated, test, key, have_regulated,
-                               regulated_seen]() mutable {
+  future_ = QtConcurrent::run(background_pool(), [this, hidden, regulated, test, key,
+                                                  have_regulated, regulated_seen]() mutable {
     const QString stage = QString::fromStdString(test_name(test));
     const int runs = have_regulated ? 1 : 2;
     int run_index = 0;
@@ -76,7 +78,7 @@ void PracticeRunner::measure(const PracticeSession& session) {
   running_ = true;
   cancelled_.store(false);
   auto copy = std::make_shared<PracticeSession>(session);
-  future_ = QtConcurrent::run([this, copy] {
+  future_ = QtConcurrent::run(background_pool(), [this, copy] {
     try {
       QMetaObject::invokeMethod(this, [this] { emit progress(0.0, tr("measuring")); });
       std::vector<CorrectionReading> readings = measure_corrections(*copy);

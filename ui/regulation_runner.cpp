@@ -4,6 +4,8 @@
 #include <QtConcurrent/QtConcurrentRun>
 #include <exception>
 
+#include "background_pool.h"
+
 namespace pat::ui {
 
 RegulationRunner::RegulationRunner(QObject* parent) : QObject(parent) {
@@ -19,7 +21,7 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
   if (running_) return;
   running_ = true;
   cancelled_.store(false);
-  future_ = QtConcurrent::run([this, model] {
+  future_ = QtConcurrent::run(background_pool(), [this, model] {
     RegulationOptions options;
     options.on_step = [this](const RegulationStep& s) {
       const QString line =

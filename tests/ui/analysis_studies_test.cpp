@@ -17,6 +17,7 @@
 
 #include "analyses_panel.h"
 #include "analysis_runner.h"
+#include "background_pool.h"
 #include "core/error.h"
 #include "io/csv.h"
 #include "main_window.h"
@@ -114,7 +115,7 @@ void AnalysisStudiesTest::sweep_cancels_and_leaves_no_thread() {
   // no thread left: the task's thread has returned and the pool it ran on is idle (the
   // engine's own threads are joined before the task returns)
   QVERIFY(wait_until([&] { return panel->runner()->task_finished(); }, 2000));
-  QVERIFY(wait_until([] { return QThreadPool::globalInstance()->activeThreadCount() == 0; }, 5000));
+  QVERIFY(wait_until([] { return pat::ui::background_pool()->activeThreadCount() == 0; }, 5000));
   QVERIFY(!panel->runner()->running());
 }
 
