@@ -3,10 +3,12 @@
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <utility>
 
 #include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
+#include "plot_output.h"
 #ifdef PAT_HAVE_UI
 #include "window_bench.h"
 #endif
@@ -15,7 +17,7 @@ namespace pat::app {
 
 int run_bench_window(const std::vector<std::string>& args) {
 #ifdef PAT_HAVE_UI
-  const CommandLine cl(args, {"--duration", "--input", "--action", "--trials"},
+  const CommandLine cl(args, {"--duration", "--input", "--action", "--trials", "--plot"},
                        {"--window", "--json"});
   ui::WindowBenchOptions options;
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
@@ -28,7 +30,22 @@ int run_bench_window(const std::vector<std::string>& args) {
                        cl.value("--trials"));
     options.latency_trials = static_cast<int>(trials);
   }
+  const PlotOption plot(cl.value_or("--plot", ""));
   const ui::WindowBenchResult r = ui::run_window_bench(options);
+  // each slider move's latency, in the order the moves were made
+  PlotSpec latency =
+      time_plot("Slider to visible change (" + options.adjuster + ")", "latency (ms)");
+  latency.x_title = "slider move";
+  latency.x_column = "move";
+  latency.x_unit = "";
+  PlotCurve moves = point_curve("latency", "latency_ms");
+  for (std::size_t i = 0; i < r.latency_ms.size(); ++i) {
+    moves.x.push_back(double(i + 1));
+    moves.y.push_back(r.latency_ms[i]);
+  }
+  latency.curves.push_back(std::move(moves));
+  if (plot.write({latency}) && !cl.has("--json"))
+    std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json")) {
     std::cout << nlohmann::json{{"action", options.action},
                                 {"input", options.input},

@@ -34,7 +34,8 @@ usage:
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--plot FILE] [--json]
   pianoaction bench     [--duration S] [--plot FILE] [--json]
-  pianoaction bench --window [--action A] [--input SPEC] [--duration S] [--trials N] [--json]
+  pianoaction bench --window [--action A] [--input SPEC] [--duration S] [--trials N]
+                        [--plot FILE] [--json]
   pianoaction swing     --action A [--release-deg D] [--out CSV] [--plot FILE] [--json]
   pianoaction keyfall   --action A [--duration S] [--out CSV] [--plot FILE] [--json]
   pianoaction touchweight --action A [--spring-factor SPRING=F]... [--key-lead-g G]

@@ -70,6 +70,7 @@ expect import_raw 2 import-raw raw.txt --rate 2000 --out imported.csv
 # one trial: measured vs both models and the residuals, then the ranking
 expect diagnose 3 diagnose --action grand --measured measured.csv --candidate shank_flex
 expect bench 2 bench --duration 0.02
+expect bench_window 1 bench --window --duration 0.3 --trials 2
 expect practice 2 practice new --action grand --seed 3
 
 # the CSV export of a plot over another x axis: the touchweight against the key dip
