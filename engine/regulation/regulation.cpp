@@ -12,17 +12,31 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "model/model_edits.h"
+#include "regulation/technician_tests.h"
 #include "sim/static_equilibrium.h"
 
 namespace pat {
 namespace {
 
+/// Thrown out of a setting's search when its reading shows that another adjuster must first be
+/// moved out of the way (the setting's clear_adjuster): searching on would only meet the same
+/// failure at every position.
+struct ClearFirst {
+  std::string why;
+};
+
 /// One setting's measurement as a function of its adjuster position (m), with the rest state
 /// carried from one evaluation to the next (Newton continuation).
 class SettingProbe {
  public:
-  SettingProbe(const ActionModel& model, const RegulationSetting& setting, RestState& rest)
-      : model_(model), setting_(setting), rest_(rest) {}
+  /// `may_ask_to_clear`: a reading that shows the hammer carried by another part throws
+  /// ClearFirst when the setting names an adjuster to clear (else it is unmeasurable there).
+  SettingProbe(const ActionModel& model, const RegulationSetting& setting, RestState& rest,
+               bool may_ask_to_clear)
+      : model_(model),
+        setting_(setting),
+        rest_(rest),
+        may_ask_to_clear_(may_ask_to_clear && !setting.clear_adjuster.empty()) {}
 
   /// measured − target (the setting's unit), or nothing when it cannot be measured there.
   std::optional<double> error_at(double adjuster_m, std::string* why = nullptr) {
@@ -33,6 +47,12 @@ class SettingProbe {
       const double value = measure_setting(moved, setting_.name, &rest);
       rest_ = rest;
       return value - setting_.target;
+    } catch (const HammerCarriedElsewhere& e) {
+      // a technician who sees the repetition lever carry the hammer turns the drop screw down
+      // at once, rather than trying every position of the let-off button first
+      if (may_ask_to_clear_) throw ClearFirst{e.what()};
+      if (why) *why = e.what();
+      return std::nullopt;
     } catch (const std::exception& e) {
       if (why) *why = e.what();
       return std::nullopt;
@@ -44,6 +64,7 @@ class SettingProbe {
   const ActionModel& model_;
   const RegulationSetting& setting_;
   RestState& rest_;
+  bool may_ask_to_clear_;
   int evaluations_ = 0;
 };
 
@@ -214,10 +235,10 @@ struct SettingOutcome {
 };
 
 SettingOutcome regulate_setting(ActionModel& model, const RegulationSetting& setting,
-                                RestState& rest, int pass) {
+                                RestState& rest, int pass, bool may_ask_to_clear) {
   SettingOutcome outcome;
   const Adjuster adjuster = model.adjusters[model.adjuster_index(setting.name)];
-  SettingProbe probe(model, setting, rest);
+  SettingProbe probe(model, setting, rest, may_ask_to_clear);
   std::string why;
   double x0 = adjuster.value;
   auto e0 = probe.error_at(x0, &why);
@@ -288,7 +309,13 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
     failures.clear();
     bool all_within = true;
     for (const RegulationSetting& setting : model.regulation) {
-      SettingOutcome outcome = regulate_setting(result.model, setting, rest, pass);
+      SettingOutcome outcome;
+      try {
+        outcome = regulate_setting(result.model, setting, rest, pass, true);
+      } catch (const ClearFirst& clear) {
+        outcome.within = false;
+        outcome.failure = "setting '" + setting.name + "' cannot be measured: " + clear.why;
+      }
       if (!outcome.failure.empty() && !setting.clear_adjuster.empty()) {
         // the technician's way out of a deadlock between two settings (e.g. the drop screw so
         // high that the lever carries the hammer whatever the let-off button): move the other
@@ -296,7 +323,7 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
         result.model = with_adjuster(result.model, setting.clear_adjuster, setting.clear_position);
         rest = rest_state_near(result.model, rest);
         const std::string first = outcome.failure;
-        outcome = regulate_setting(result.model, setting, rest, pass);
+        outcome = regulate_setting(result.model, setting, rest, pass, false);
         outcome.within = false;
         outcome.step.note = "first " + first + "; then with '" + setting.clear_adjuster + "' at " +
                             format_number(setting.clear_position * 1e3) + " mm" +

@@ -135,7 +135,7 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   const bool escaped = letoff_touched && jack_carried && held_gap > closest_carried_gap + kFallBack;
   if (escaped) reading.let_off_gap = closest_carried_gap;
   if (!escaped && !jack_carried)
-    throw std::runtime_error(
+    throw HammerCarriedElsewhere(
         "in a slow key press the jack never lifts the hammer (it is carried by another part, "
         "e.g. the repetition lever when the drop screw is too high)");
   if (!escaped)

@@ -12,6 +12,14 @@ namespace pat {
 /// the parts overlap (minus the penetration). Same geometry as the dynamics (contact_geometry.h).
 double contact_gap(const ActionModel& model, int contact, const DofVector& q);
 
+/// A slow press in which the jack never lifts the hammer: another part carries it (the grand's
+/// repetition lever when the drop screw is too high). The regulation tells it from other
+/// failures: the way out is to move that part out of the way, not to search further.
+class HammerCarriedElsewhere : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct SlowPressReading {
   double let_off_gap = 0.0;           ///< m, hammer–string distance at let-off: the closest
                                       ///< approach while the jack carries the hammer

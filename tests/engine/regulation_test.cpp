@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -214,6 +215,25 @@ TEST(Regulation, F1_GrandRegulatesToEveryTarget) {
   ASSERT_EQ(result.settings.size(), 7u);
   for (const SettingReading& r : result.settings)
     EXPECT_LE(std::abs(r.measured - r.target), r.tolerance) << r.name << " " << r.measured;
+}
+
+// When the slow press shows the repetition lever carrying the hammer (drop screw too high), the
+// let-off regulation turns the drop screw out of the way at once, as a technician would, instead
+// of first trying the let-off button over its whole range (17 slow presses) and calling the
+// target out of reach; the regulation then converges.
+TEST(Regulation, LetOffClearsTheDropScrewAsSoonAsTheLeverCarriesTheHammer) {
+  ActionModel model = shipped("grand");
+  for (const auto& [name, mm] : {std::pair{"lever_height", 0.8}, std::pair{"let_off", 0.5},
+                                 std::pair{"drop", -0.3}, std::pair{"checking", -0.5}})
+    model = with_adjuster(model, name, mm * 1e-3);
+  const RegulationResult result = regulate(model);
+  ASSERT_TRUE(result.converged) << result.message;
+  const auto let_off = std::find_if(result.steps.begin(), result.steps.end(),
+                                    [](const RegulationStep& s) { return s.setting == "let_off"; });
+  ASSERT_NE(let_off, result.steps.end());
+  EXPECT_NE(let_off->note.find("never lifts the hammer"), std::string::npos) << let_off->note;
+  EXPECT_NE(let_off->note.find("then with 'drop'"), std::string::npos) << let_off->note;
+  EXPECT_EQ(let_off->note.find("out of reach"), std::string::npos) << let_off->note;
 }
 
 // The bracketing search on settings measured at rest: from seeded random deregulated starts
