@@ -22,10 +22,8 @@ std::vector<PlotSpec> bench_plots(const std::vector<BenchCase>& cases) {
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const BenchCase& c = cases[i];
     speed.x_categories.push_back(c.action + " " + c.integrator + " " + c.setting);
-    factor.x.push_back(double(i));
-    factor.y.push_back(c.realtime_factor);
-    percent.x.push_back(double(i));
-    percent.y.push_back(100.0 * c.max_error_deg / c.hammer_range_deg);
+    factor.add(double(i), c.realtime_factor);
+    percent.add(double(i), 100.0 * c.max_error_deg / c.hammer_range_deg);
   }
   error.x_categories = speed.x_categories;
   speed.curves = {std::move(factor)};

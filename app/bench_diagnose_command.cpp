@@ -56,10 +56,8 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
     gains.x_categories.push_back((o.hidden ? o.hidden->name : std::string("nothing hidden")) +
                                  " #" + std::to_string(seed));
     PlotCurve& gain = o.passed ? passed_gain : failed_gain;
-    gain.x.push_back(x);
-    gain.y.push_back(100.0 * d.gain);
-    wall.x.push_back(x);
-    wall.y.push_back(d.wall_time_s);
+    gain.add(x, 100.0 * d.gain);
+    wall.add(x, d.wall_time_s);
     if (!cl.has("--json"))
       std::cout << (o.hidden ? o.hidden->name + "=" + std::to_string(o.hidden->value)
                              : std::string("nothing hidden"))

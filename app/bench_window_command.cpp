@@ -40,8 +40,7 @@ int run_bench_window(const std::vector<std::string>& args) {
   latency.x_unit = "";
   PlotCurve moves = point_curve("latency", "latency_ms");
   for (std::size_t i = 0; i < r.latency_ms.size(); ++i) {
-    moves.x.push_back(double(i + 1));
-    moves.y.push_back(r.latency_ms[i]);
+    moves.add(double(i + 1), r.latency_ms[i]);
   }
   latency.curves.push_back(std::move(moves));
   if (plot.write({latency}) && !cl.has("--json"))

@@ -19,19 +19,16 @@ namespace {
 /// as the screw turns), the adjuster, then the motion it causes.
 std::vector<PlotSpec> deregulation_plots(const ActionModel& model, const std::string& setting,
                                          const DeregulationResult& result) {
-  std::string unit = "mm";
-  for (const RegulationSetting& s : model.regulation)
-    if (s.name == setting) unit = s.unit;
+  const int index = model.setting_index(setting);
+  const std::string unit = index >= 0 ? model.regulation[index].unit : "mm";
   PlotSpec measured = time_plot("Measured " + setting, setting + " (" + unit + ")");
   measured.curves.push_back(point_curve(setting, "measured"));
   PlotSpec adjuster = time_plot("Adjuster " + setting, "adjuster offset (mm)");
   adjuster.curves.push_back(point_curve("adjuster", "adjuster_mm"));
   for (const DeregulationSample& s : result.samples) {
-    adjuster.curves[0].x.push_back(s.t);
-    adjuster.curves[0].y.push_back(s.adjuster_mm);
+    adjuster.curves[0].add(s.t, s.adjuster_mm);
     if (!std::isfinite(s.measured)) continue;  // not measurable at this step
-    measured.curves[0].x.push_back(s.t);
-    measured.curves[0].y.push_back(s.measured);
+    measured.curves[0].add(s.t, s.measured);
   }
   std::vector<PlotSpec> plots;
   add_plot(plots, std::move(measured));

@@ -46,8 +46,7 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
   PlotCurve rms = point_curve("fitted candidate", "validated_rms_deg");
   for (const CandidateFit& c : d.ranking) {
     if (!c.completed) continue;
-    rms.x.push_back(double(ranking.x_categories.size()));
-    rms.y.push_back(c.validated_rms_deg);
+    rms.add(double(ranking.x_categories.size()), c.validated_rms_deg);
     ranking.x_categories.push_back(c.effect);
   }
   // the baseline error as a flat line across the candidates, for scale

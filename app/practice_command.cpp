@@ -105,8 +105,7 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
     const double x = double(plot.x_categories.size());
     plot.x_categories.push_back(o.id.substr(o.id.find('.') + 1));
     if (!o.value || !reg || !reg->value) continue;  // not observed (the text says why)
-    plot.curves[0].x.push_back(x);
-    plot.curves[0].y.push_back(*o.value - *reg->value);
+    plot.curves[0].add(x, *o.value - *reg->value);
   }
   std::vector<PlotSpec> plots;
   for (auto& [unit, plot] : by_unit) add_plot(plots, std::move(plot));

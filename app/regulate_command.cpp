@@ -17,13 +17,6 @@ nlohmann::json number_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
-/// Tolerance of a setting (for plotting distances from the target in tolerances).
-double tolerance_of(const ActionModel& model, const std::string& setting) {
-  for (const RegulationSetting& s : model.regulation)
-    if (s.name == setting) return s.tolerance;
-  return 1.0;
-}
-
 /// The steps in the technician's order (each setting's distance from its target, in
 /// tolerances, and the adjuster chosen; a marker where each pass begins), then every setting
 /// as left.
@@ -39,11 +32,10 @@ std::vector<PlotSpec> regulation_plots(const ActionModel& model, const Regulatio
     off.x_categories.push_back(s.setting);
     if (i == 0 || r.steps[i - 1].pass != s.pass)
       off.markers.push_back({double(i) - 0.5, "pass " + std::to_string(s.pass)});
-    adjuster.x.push_back(double(i));
-    adjuster.y.push_back(s.adjuster_mm);
+    adjuster.add(double(i), s.adjuster_mm);
     if (!std::isfinite(s.measured)) continue;  // not measurable in that position
-    distance.x.push_back(double(i));
-    distance.y.push_back((s.measured - s.target) / tolerance_of(model, s.setting));
+    distance.add(double(i), (s.measured - s.target) /
+                                model.regulation[model.setting_index(s.setting)].tolerance);
   }
   adjusters.x_categories = off.x_categories;
   adjusters.markers = off.markers;
@@ -58,8 +50,7 @@ std::vector<PlotSpec> regulation_plots(const ActionModel& model, const Regulatio
     const SettingReading& s = r.settings[i];
     settings.x_categories.push_back(s.name);
     if (!std::isfinite(s.measured)) continue;
-    final_distance.x.push_back(double(i));
-    final_distance.y.push_back((s.measured - s.target) / s.tolerance);
+    final_distance.add(double(i), (s.measured - s.target) / s.tolerance);
   }
   settings.curves.push_back(std::move(final_distance));
   std::vector<PlotSpec> plots;

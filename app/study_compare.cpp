@@ -49,12 +49,10 @@ std::vector<PlotSpec> comparison_plots(const ComparisonResult& result) {
     const ActionComparison& c = result.actions[a];
     limits.x_categories.push_back(c.action);
     if (c.full_stroke && c.full_stroke->max_frequency_hz) {
-      full.x.push_back(double(a));
-      full.y.push_back(*c.full_stroke->max_frequency_hz);
+      full.add(double(a), *c.full_stroke->max_frequency_hz);
     }
     if (c.half_stroke && c.half_stroke->max_frequency_hz) {
-      half.x.push_back(double(a));
-      half.y.push_back(*c.half_stroke->max_frequency_hz);
+      half.add(double(a), *c.half_stroke->max_frequency_hz);
     }
   }
   limits.curves = {std::move(full), std::move(half)};

@@ -40,8 +40,7 @@ std::vector<PlotSpec> sensitivity_plots(const SensitivityResult& r, double step_
            {std::pair{&minus, r.rows[s].minus[m]}, std::pair{&plus, r.rows[s].plus[m]}}) {
         const double change = value - r.baseline[m];
         if (!std::isfinite(change)) continue;  // not measurable on that side
-        curve->x.push_back(double(s));
-        curve->y.push_back(change);
+        curve->add(double(s), change);
       }
     }
     plot.curves = {std::move(minus), std::move(plus)};

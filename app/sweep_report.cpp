@@ -95,29 +95,16 @@ CsvTable sweep_cycles_table(const SweepResult& r, const ActionModel& model) {
 std::vector<PlotSpec> sweep_plots(const SweepResult& r) {
   PlotCurve strikes = point_curve("strikes per cycle", "strikes");
   PlotCurve velocity = point_curve("hammer speed at the strike", "strike_velocity_mps");
-  auto add_cycles = [&](const std::vector<CycleResult>& cycles, double run_frequency_hz) {
-    for (const CycleResult& c : cycles) {
-      if (!c.judged) continue;
-      const double f = run_frequency_hz > 0.0 ? run_frequency_hz : c.frequency_hz;
-      strikes.x.push_back(f);
-      strikes.y.push_back(c.strikes);
-      if (c.strikes == 0) continue;
-      velocity.x.push_back(f);
-      velocity.y.push_back(c.strike_velocity_mps);
-    }
-  };
-  if (r.mode == SweepMode::chirp)
-    add_cycles(r.cycles, 0.0);
-  else
-    for (const FrequencyResult& f : r.frequencies) add_cycles(f.cycles, f.frequency_hz);
+  for (const CyclePoint& p : judged_cycle_points(r)) {
+    strikes.add(p.frequency_hz, p.strikes);
+    if (p.strikes > 0) velocity.add(p.frequency_hz, p.strike_velocity_mps);
+  }
   std::vector<PlotMarker> maximum;
   if (r.max_frequency_hz)
     maximum.push_back(
         {*r.max_frequency_hz, "maximum " + format_number(*r.max_frequency_hz) + " Hz"});
   auto frequency_plot = [&](const std::string& title, const std::string& y_title, PlotCurve c) {
-    PlotSpec plot;
-    plot.title = title;
-    plot.y_title = y_title;
+    PlotSpec plot = time_plot(title, y_title);
     plot.x_title = "frequency (Hz)";
     plot.x_column = "frequency_hz";
     plot.x_unit = "Hz";

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <memory>
 
+#include "gui_application.h"
 #include "plot_export.h"
 #include "plot_panel.h"
 #include "plot_styles.h"
@@ -31,14 +32,9 @@ QSize stacked_plot_size(std::size_t count) {
 
 void write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path, QSize size) {
   export_format(path);  // a wrong extension is reported before any work
-  std::unique_ptr<QApplication> app;
-  if (!QApplication::instance()) {
-    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-    static int argc = 1;
-    static char name[] = "pianoaction";
-    static char* argv[] = {name, nullptr};
-    app = std::make_unique<QApplication>(argc, argv);
-  }
+  if (!QApplication::instance() && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+    qputenv("QT_QPA_PLATFORM", "offscreen");  // the command line needs no display
+  const std::unique_ptr<QApplication> app = application_if_none();
   if (!size.isValid()) size = stacked_plot_size(plots.size());
   std::vector<std::unique_ptr<PlotPanel>> panels;
   std::vector<PlotPanel*> raw;

@@ -475,9 +475,9 @@ void MainWindow::set_deregulation_demo(const std::string& setting, double rate_m
 
 void MainWindow::show_deregulation_result(const DeregulationResult& result) {
   const QString setting = deregulation_setting_->currentText();
-  QString unit = tr("mm");
-  for (const RegulationSetting& r : model()->regulation)
-    if (r.name == setting.toStdString() && r.unit != "mm") unit = QString::fromStdString(r.unit);
+  const int index = model()->setting_index(setting.toStdString());
+  const QString unit =
+      index >= 0 ? QString::fromStdString(model()->regulation[index].unit) : tr("mm");
   AnalysisResult shown;
   shown.summary = result.stop_cause.empty() ? tr("the action held to the end.")
                                             : tr("stopped at t = %1 s: %2")

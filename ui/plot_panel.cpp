@@ -302,7 +302,7 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   plot_->xAxis->setTicker(ticker);
   const bool rotated = names.size() > 4;
   plot_->xAxis->setTickLabelRotation(rotated ? 30 : 0);
-  if (rotated && !names.empty()) {
+  if (rotated) {
     // a rotated label runs right of its tick; QCustomPlot drops a label that would cross the
     // widget's edge, so the last category needs room on the right
     const QFontMetrics metrics(plot_->xAxis->tickLabelFont());

@@ -43,23 +43,6 @@ SweepOptions sweep_options(const AnalysisSettings& settings) {
   return o;
 }
 
-/// Judged cycles as points: strikes per cycle and the hammer speed at each strike, over the
-/// cycle's frequency (chirp) or the run's frequency (steps). Both rise from point to point (a
-/// chirp's cycles shorten with time; the steps come in increasing order), as plots need.
-void add_cycle_points(const std::vector<CycleResult>& cycles, double run_frequency_hz,
-                      AnalysisSeries& strikes, AnalysisSeries& velocity) {
-  for (const CycleResult& c : cycles) {
-    if (!c.judged) continue;
-    const double f = run_frequency_hz > 0.0 ? run_frequency_hz : c.frequency_hz;
-    strikes.x.push_back(f);
-    strikes.y.push_back(c.strikes);
-    if (c.strikes > 0) {
-      velocity.x.push_back(f);
-      velocity.y.push_back(c.strike_velocity_mps);
-    }
-  }
-}
-
 AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
   AnalysisResult result;
   const QString stroke = QString::fromStdString(stroke_name(r.stroke));
@@ -110,9 +93,15 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
   AnalysisSeries strikes{QObject::tr("strikes in the cycle"), "strikes", {}, {}, true};
   AnalysisSeries velocity{
       QObject::tr("hammer speed at the strike"), "strike_velocity_mps", {}, {}, true};
+  for (const CyclePoint& p : judged_cycle_points(r)) {
+    strikes.x.push_back(p.frequency_hz);
+    strikes.y.push_back(p.strikes);
+    if (p.strikes == 0) continue;
+    velocity.x.push_back(p.frequency_hz);
+    velocity.y.push_back(p.strike_velocity_mps);
+  }
   AnalysisGrid grid;
   if (r.mode == SweepMode::chirp) {
-    add_cycle_points(r.cycles, 0.0, strikes, velocity);
     // the trace in the chirp's time, the maximum where its cycle ends
     std::vector<AnalysisMarker> time_marker;
     for (const CycleResult& c : r.cycles)
@@ -150,7 +139,6 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
     AnalysisSeries failed{
         QObject::tr("failed cycles of the window"), "failed_cycles", {}, {}, true};
     for (const FrequencyResult& f : r.frequencies) {
-      add_cycle_points(f.cycles, f.frequency_hz, strikes, velocity);
       failed.x.push_back(f.frequency_hz);
       failed.y.push_back(f.failed_cycles);
     }

@@ -15,6 +15,7 @@
 
 #include "action_view.h"
 #include "core/error.h"
+#include "gui_application.h"
 #include "main_window.h"
 #include "playback_controller.h"
 #include "plot_panel.h"
@@ -189,12 +190,8 @@ double time_slider_move(MainWindow& window, RegulationRow& row, const std::strin
 WindowBenchResult run_window_bench(const WindowBenchOptions& options) {
   if (!(options.duration_s > 0.0)) throw InputError("--duration must be positive");
   if (options.latency_trials < 0) throw InputError("latency trials must not be negative");
-  std::unique_ptr<QApplication> app;
-  if (!QApplication::instance()) {
-    static int argc = 1;
-    static char name[] = "pianoaction";
-    static char* argv[] = {name, nullptr};
-    app = std::make_unique<QApplication>(argc, argv);
+  const std::unique_ptr<QApplication> app = application_if_none();
+  if (app) {
     // the window's settings (layout, last preset) of the user are neither read nor written
     QApplication::setOrganizationName("PianoActionTrainer");
     QApplication::setApplicationName("pianoaction-bench");

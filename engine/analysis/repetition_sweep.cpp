@@ -49,6 +49,21 @@ std::string outcome_name(CycleOutcome outcome) {
   return "?";
 }
 
+std::vector<CyclePoint> judged_cycle_points(const SweepResult& result) {
+  std::vector<CyclePoint> points;
+  auto add = [&points](const std::vector<CycleResult>& cycles, double run_frequency_hz) {
+    for (const CycleResult& c : cycles)
+      if (c.judged)
+        points.push_back({run_frequency_hz > 0.0 ? run_frequency_hz : c.frequency_hz, c.strikes,
+                          c.strike_velocity_mps});
+  };
+  if (result.mode == SweepMode::chirp)
+    add(result.cycles, 0.0);
+  else
+    for (const FrequencyResult& f : result.frequencies) add(f.cycles, f.frequency_hz);
+  return points;
+}
+
 std::vector<double> cycle_boundaries(Stroke stroke, double f0_hz, double rate_hz_per_s,
                                      double t_end_s) {
   // τ at which the phase reaches φ: π r τ² + 2π f0 τ − φ = 0

@@ -128,6 +128,17 @@ struct SweepResult {
   double wall_s = 0.0;       ///< wall time of the whole sweep (s)
 };
 
+/// A judged cycle as a point over frequency, for plots: the cycle's own frequency (chirp) or its
+/// run's (steps). In the order judged_cycle_points gives them the frequencies rise (a chirp's
+/// cycles shorten with time; the steps come in increasing order).
+struct CyclePoint {
+  double frequency_hz = 0.0;
+  int strikes = 0;
+  double strike_velocity_mps = 0.0;  ///< hammer speed at the first strike (0: none)
+};
+/// Every judged cycle of a sweep (settling cycles left out).
+std::vector<CyclePoint> judged_cycle_points(const SweepResult& result);
+
 /// A strike candidate: impact time and hammer velocity (from the Simulator's events).
 struct Impact {
   double t_s = 0.0;

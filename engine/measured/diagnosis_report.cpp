@@ -15,6 +15,13 @@ nlohmann::json finite_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
+/// The phase names in index order, space separated (the "phases" metadata line).
+std::string phase_list() {
+  std::string list;
+  for (const std::string& p : phase_names()) list += (list.empty() ? "" : " ") + p;
+  return list;
+}
+
 }  // namespace
 
 nlohmann::json diagnosis_json(const Diagnosis& d) {
@@ -89,11 +96,9 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
 
 CsvTable trial_traces_table(const TrialReport& r) {
   const auto& phases = phase_names();
-  std::string phase_list;
-  for (const std::string& p : phases) phase_list += (phase_list.empty() ? "" : " ") + p;
   CsvTable traces;
   traces.metadata["file"] = r.path;
-  traces.metadata["phases"] = phase_list;
+  traces.metadata["phases"] = phase_list();
   traces.columns = {"time_s", "measured_deg", "baseline_deg", "residual_baseline_deg",
                     "phase_index"};
   const bool extended = !r.extended.hammer_deg.empty();
@@ -153,9 +158,7 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
   const auto& phases = phase_names();
   CsvTable phase_table;
   phase_table.columns = {"trial", "phase_index", "samples", "rms_deg", "mean_deg"};
-  std::string phase_list;
-  for (const std::string& p : phases) phase_list += (phase_list.empty() ? "" : " ") + p;
-  phase_table.metadata["phases"] = phase_list;
+  phase_table.metadata["phases"] = phase_list();
   for (std::size_t j = 0; j < d.trials.size(); ++j) {
     const TrialReport& r = d.trials[j];
     for (const PhaseResidual& p : r.discrepancies.phases) {

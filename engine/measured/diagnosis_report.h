@@ -13,15 +13,15 @@ namespace pat {
 
 nlohmann::json diagnosis_json(const Diagnosis& diagnosis);
 
-/// Writes into `dir` (created when missing): diagnosis.json (diagnosis_json), ranking.csv,
-/// phases.csv and one <file>_traces.csv per trial (measured, baseline and extended model
-/// aligned, their residuals, the phase index of each sample). Throws InputError naming the
-/// folder or file that cannot be written; diagnosis.json is replaced only once fully written.
 /// One trial's measured, baseline and extended-model hammer angles aligned on the measured
 /// samples: time_s, measured_deg, baseline_deg, residual_baseline_deg, phase_index (metadata
 /// "phases" names them), then extended_deg and residual_extended_deg when a cause was found.
 CsvTable trial_traces_table(const TrialReport& trial);
 
+/// Writes into `dir` (created when missing): diagnosis.json (diagnosis_json), ranking.csv,
+/// phases.csv and one <file>_traces.csv per trial (measured, baseline and extended model
+/// aligned, their residuals, the phase index of each sample). Throws InputError naming the
+/// folder or file that cannot be written; diagnosis.json is replaced only once fully written.
 void write_diagnosis_report(const std::string& dir, const Diagnosis& diagnosis);
 
 }  // namespace pat

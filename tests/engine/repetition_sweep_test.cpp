@@ -98,6 +98,42 @@ TEST(RepetitionCycles, ClassifierCountsStrikesMergesChatterAndFlagsSettling) {
   EXPECT_DOUBLE_EQ(cycles[5].frequency_hz, 1.0);
 }
 
+// The points plotted against frequency: judged cycles only, at the cycle's own frequency in a
+// chirp and at the run's frequency in steps, in the order given.
+TEST(RepetitionCycles, JudgedCyclePointsLeaveOutSettlingAndUseTheRunFrequencyInSteps) {
+  CycleResult settling;
+  settling.judged = false;
+  settling.frequency_hz = 4.9;
+  CycleResult once;
+  once.frequency_hz = 5.1;
+  once.strikes = 1;
+  once.strike_velocity_mps = 2.5;
+  CycleResult missed;
+  missed.frequency_hz = 5.2;
+  missed.outcome = CycleOutcome::missed;
+
+  SweepResult chirp;
+  chirp.cycles = {settling, once, missed};
+  const std::vector<CyclePoint> chirp_points = judged_cycle_points(chirp);
+  ASSERT_EQ(chirp_points.size(), 2u);
+  EXPECT_EQ(chirp_points[0].frequency_hz, 5.1);
+  EXPECT_EQ(chirp_points[0].strikes, 1);
+  EXPECT_EQ(chirp_points[0].strike_velocity_mps, 2.5);
+  EXPECT_EQ(chirp_points[1].frequency_hz, 5.2);
+  EXPECT_EQ(chirp_points[1].strikes, 0);
+
+  SweepResult steps;
+  steps.mode = SweepMode::steps;
+  FrequencyResult at_5{5.0, true, 0, "ok", "", {settling, once}};
+  FrequencyResult at_6{6.0, false, 1, "ok", "", {settling, missed}};
+  steps.frequencies = {at_5, at_6};
+  const std::vector<CyclePoint> step_points = judged_cycle_points(steps);
+  ASSERT_EQ(step_points.size(), 2u);
+  EXPECT_EQ(step_points[0].frequency_hz, 5.0);
+  EXPECT_EQ(step_points[1].frequency_hz, 6.0);
+  EXPECT_EQ(step_points[1].strikes, 0);
+}
+
 TEST(RepetitionCycles, AStoppedRunFailsTheCycleItStoppedIn) {
   const std::vector<double> b{0, 1, 2, 3, 4};
   const auto cycles = classify_cycles(b, {{0.5, 1.0}, {1.5, 1.0}, {2.2, 1.0}}, 3e-3, 0, 2.5, true);
