@@ -18,25 +18,57 @@
 namespace pat {
 namespace {
 
+/// An adjuster moved out of the way, and where to (m from its regulated position).
+struct ClearMove {
+  std::string adjuster;
+  double position = 0.0;
+};
+
 /// Thrown out of a setting's search when its reading shows that another adjuster must first be
-/// moved out of the way (the setting's clear_adjuster): searching on would only meet the same
-/// failure at every position.
+/// moved out of the way: searching on would only meet the same failure at every position.
 struct ClearFirst {
   std::string why;
+  ClearMove move;
 };
+
+/// The adjuster that moves the backcheck (the feature of the check contact) and the end of its
+/// range that takes the backcheck away from the hammer; none when no adjuster moves it. With n
+/// the contact normal (from B toward A), moving B's feature along d by x changes the gap by
+/// −x d·n, moving A's by +x d·n.
+std::optional<ClearMove> backcheck_out_of_the_way(const ActionModel& model) {
+  const int check = model.landmarks.check_contact;
+  if (check < 0) return std::nullopt;
+  const Contact& contact = model.contacts[check];
+  const Vec2 normal = contact.shape == ContactShape::CircleSegment
+                          ? contact.segment_normal
+                          : Vec2((contact.center_a - contact.center_b).normalized());
+  for (const Adjuster& adjuster : model.adjusters)
+    for (const AdjusterEffect& effect : adjuster.effects) {
+      const bool on_b = effect.target == AdjusterEffect::Target::ContactB;
+      if (effect.index != check || !(on_b || effect.target == AdjusterEffect::Target::ContactA))
+        continue;
+      const double opening = (on_b ? -1.0 : 1.0) * effect.direction.dot(normal);
+      return ClearMove{adjuster.name, opening > 0.0 ? adjuster.max : adjuster.min};
+    }
+  return std::nullopt;
+}
 
 /// One setting's measurement as a function of its adjuster position (m), with the rest state
 /// carried from one evaluation to the next (Newton continuation).
 class SettingProbe {
  public:
-  /// `may_ask_to_clear`: a reading that shows the hammer carried by another part throws
-  /// ClearFirst when the setting names an adjuster to clear (else it is unmeasurable there).
+  /// `may_ask_to_clear`: a reading that shows the hammer carried by another part (the setting's
+  /// clear_adjuster, e.g. the drop screw) or stopped by the backcheck on its way up throws
+  /// ClearFirst with the move that frees it (else the setting is unmeasurable there).
   SettingProbe(const ActionModel& model, const RegulationSetting& setting, RestState& rest,
                bool may_ask_to_clear)
-      : model_(model),
-        setting_(setting),
-        rest_(rest),
-        may_ask_to_clear_(may_ask_to_clear && !setting.clear_adjuster.empty()) {}
+      : model_(model), setting_(setting), rest_(rest) {
+    if (!may_ask_to_clear) return;
+    if (!setting.clear_adjuster.empty())
+      carried_cure_ = ClearMove{setting.clear_adjuster, setting.clear_position};
+    backcheck_cure_ = backcheck_out_of_the_way(model);
+    if (backcheck_cure_ && backcheck_cure_->adjuster == setting.name) backcheck_cure_.reset();
+  }
 
   /// measured − target (the setting's unit), or nothing when it cannot be measured there.
   std::optional<double> error_at(double adjuster_m, std::string* why = nullptr) {
@@ -50,7 +82,12 @@ class SettingProbe {
     } catch (const HammerCarriedElsewhere& e) {
       // a technician who sees the repetition lever carry the hammer turns the drop screw down
       // at once, rather than trying every position of the let-off button first
-      if (may_ask_to_clear_) throw ClearFirst{e.what()};
+      if (carried_cure_) throw ClearFirst{e.what(), *carried_cure_};
+      if (why) *why = e.what();
+      return std::nullopt;
+    } catch (const BackcheckStopsTheRisingHammer& e) {
+      // one who sees the backcheck rub the rising hammer bends it back first
+      if (backcheck_cure_) throw ClearFirst{e.what(), *backcheck_cure_};
       if (why) *why = e.what();
       return std::nullopt;
     } catch (const std::exception& e) {
@@ -64,7 +101,7 @@ class SettingProbe {
   const ActionModel& model_;
   const RegulationSetting& setting_;
   RestState& rest_;
-  bool may_ask_to_clear_;
+  std::optional<ClearMove> carried_cure_, backcheck_cure_;
   int evaluations_ = 0;
 };
 
@@ -292,6 +329,55 @@ SettingOutcome regulate_setting(ActionModel& model, const RegulationSetting& set
   return outcome;
 }
 
+/// A setting's turn in a pass, the way a technician clears a deadlock between two settings:
+/// when its reading shows another part in the way (the repetition lever carrying the hammer
+/// because the drop screw is too high, a backcheck that stops the rising hammer), or it fails
+/// and the preset names an adjuster to clear first, that adjuster is moved out of the way and
+/// the setting is tried again (each adjuster once); the moved one is set later in the pass.
+/// `model` and `rest` follow every move.
+SettingOutcome regulate_clearing_the_way(ActionModel& model, const RegulationSetting& setting,
+                                         RestState& rest, int pass) {
+  SettingOutcome outcome;
+  std::vector<std::string> cleared;  // adjusters moved out of the way for this setting
+  std::string notes;
+  bool may_ask_to_clear = true;
+  for (;;) {
+    std::optional<ClearMove> cure;
+    bool asked = false;
+    try {
+      outcome = regulate_setting(model, setting, rest, pass, may_ask_to_clear);
+    } catch (const ClearFirst& clear) {
+      outcome = SettingOutcome{};
+      outcome.within = false;
+      const Adjuster& adjuster = model.adjusters[model.adjuster_index(setting.name)];
+      outcome.step = RegulationStep{
+          pass, setting.name, adjuster.value * 1e3, std::nan(""), setting.target, 0, {}};
+      outcome.failure = "setting '" + setting.name + "' cannot be measured: " + clear.why;
+      cure = clear.move;
+      asked = true;
+    }
+    // the preset's clear_first also answers failures that do not say what is in the way
+    if (!cure && !outcome.failure.empty() && !setting.clear_adjuster.empty())
+      cure = ClearMove{setting.clear_adjuster, setting.clear_position};
+    if (!cure) break;
+    if (std::find(cleared.begin(), cleared.end(), cure->adjuster) != cleared.end()) {
+      if (!asked || !may_ask_to_clear) break;
+      may_ask_to_clear = false;  // moved already: search as it is
+      continue;
+    }
+    cleared.push_back(cure->adjuster);
+    model = with_adjuster(model, cure->adjuster, cure->position);
+    rest = rest_state_near(model, rest);
+    notes += (notes.empty() ? "first " : "; then ") + outcome.failure + "; then with '" +
+             cure->adjuster + "' at " + format_number(cure->position * 1e3) + " mm";
+  }
+  if (!notes.empty()) {
+    outcome.within = false;
+    outcome.step.note = notes + (outcome.step.note.empty() ? "" : ": " + outcome.step.note);
+  }
+  return outcome;
+}
+
 }  // namespace
 
 RegulationResult regulate(const ActionModel& model, const RegulationOptions& options) {
@@ -309,26 +395,7 @@ RegulationResult regulate(const ActionModel& model, const RegulationOptions& opt
     failures.clear();
     bool all_within = true;
     for (const RegulationSetting& setting : model.regulation) {
-      SettingOutcome outcome;
-      try {
-        outcome = regulate_setting(result.model, setting, rest, pass, true);
-      } catch (const ClearFirst& clear) {
-        outcome.within = false;
-        outcome.failure = "setting '" + setting.name + "' cannot be measured: " + clear.why;
-      }
-      if (!outcome.failure.empty() && !setting.clear_adjuster.empty()) {
-        // the technician's way out of a deadlock between two settings (e.g. the drop screw so
-        // high that the lever carries the hammer whatever the let-off button): move the other
-        // adjuster out of the way and try once more; that setting follows later in the pass
-        result.model = with_adjuster(result.model, setting.clear_adjuster, setting.clear_position);
-        rest = rest_state_near(result.model, rest);
-        const std::string first = outcome.failure;
-        outcome = regulate_setting(result.model, setting, rest, pass, false);
-        outcome.within = false;
-        outcome.step.note = "first " + first + "; then with '" + setting.clear_adjuster + "' at " +
-                            format_number(setting.clear_position * 1e3) + " mm" +
-                            (outcome.step.note.empty() ? "" : ": " + outcome.step.note);
-      }
+      SettingOutcome outcome = regulate_clearing_the_way(result.model, setting, rest, pass);
       if (!outcome.within) all_within = false;
       if (!outcome.failure.empty()) failures.push_back(outcome.failure);
       const RegulationStep& step = outcome.step;

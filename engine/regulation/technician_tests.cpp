@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "core/format.h"
 #include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "sim/key_travel.h"
@@ -97,6 +98,11 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     const double gap = sim.hammer_string_gap(sim.q());
     const double escapement = gap_of(marks.escapement_contact);
     if (gap_of(marks.letoff_contact) <= 0.0) letoff_touched = true;
+    if (!letoff_touched && marks.check_contact >= 0 && gap_of(marks.check_contact) <= 0.0)
+      throw BackcheckStopsTheRisingHammer(
+          "in a slow key press the hammer's tail meets the backcheck on its way up, " +
+          format_number((rest.hammer_string_gap - gap) * 1e3) +
+          " mm above rest, before let-off (the backcheck is too close)");
     if (escapement <= 0.0) {
       jack_carried = true;
       closest_carried_gap = std::min(closest_carried_gap, gap);

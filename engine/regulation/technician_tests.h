@@ -20,6 +20,15 @@ class HammerCarriedElsewhere : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A slow press in which the hammer's tail meets the backcheck on its way up, before the jack
+/// trips on the let-off button: the backcheck is bent so close that it stops the rising hammer,
+/// and what the press would read is where the backcheck holds it. The regulation bends the
+/// backcheck back first.
+class BackcheckStopsTheRisingHammer : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 struct SlowPressReading {
   double let_off_gap = 0.0;           ///< m, hammer–string distance at let-off: the closest
                                       ///< approach while the jack carries the hammer
@@ -36,7 +45,8 @@ inline constexpr double kSlowPressHoldSeconds = 0.4;
 /// Presses the key slowly (quasi-static: the hammer's speed stays below ~0.05 m/s) to full dip
 /// and holds it. `damper_contact` (-1: none) is the contact whose first touch marks the damper
 /// lift. Throws std::runtime_error naming what did not happen (no escapement, a stopped run, a
-/// damper that lifts only after the jack has escaped).
+/// damper that lifts only after the jack has escaped), HammerCarriedElsewhere or
+/// BackcheckStopsTheRisingHammer.
 /// With `until_escapement`, the press ends once the jack escapes (let-off only: drop_gap and
 /// checked_at_end are then not read).
 SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int damper_contact,

@@ -236,9 +236,6 @@ TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
 // A regulated action strikes once in a forte blow with the key held: the backcheck holds the
 // hammer.
 TEST(PracticeObservations, RegulatedForteBlowStrikesOnce) {
-  GTEST_SKIP() << "Known model limit (README, Limits): on the regulated grand the hammer's tail "
-                  "glances off the lower end of the backcheck on the rebound of a 40 N blow and "
-                  "the repetition lever throws it to the string again";
   const ActionModel grand = test::shipped("grand");
   const RestState rest = find_rest_state(grand);
   const std::vector<Observation> seen = run_test(grand, rest, PracticeTest::ForteBlow);

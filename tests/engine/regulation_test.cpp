@@ -16,6 +16,7 @@
 #include "model/model_edits.h"
 #include "regulation/deregulation.h"
 #include "regulation/measurements.h"
+#include "regulation/technician_tests.h"
 #include "sim/static_equilibrium.h"
 #include "test_support.h"
 
@@ -137,10 +138,10 @@ INSTANTIATE_TEST_SUITE_P(
         // against the side of the tipped jack, above the lever (17.14 mm at +3.5, 17.01 at +4,
         // the lever 0.7 mm below the knuckle)
         MonotoneCase{"grand", "drop", 0, 3},
-        // 17.1 mm at −0.5 to 12.2 mm at +2. From −1 mm the hammer's tail passes below the end
-        // of the backcheck's face and is never caught (README, Limits); from +2.5 mm the tail
-        // brushes the backcheck on the way up and the hammer never reaches the string
-        MonotoneCase{"grand", "checking", -0.5, 2}, MonotoneCase{"upright", "key_dip", -2, 2},
+        // 19.3 mm at −1.5 to 13.2 mm at +1.5. From −1.75 mm the hammer's tail passes below
+        // the lower end of the backcheck's face and is never caught; from +1.75 mm the face
+        // stops the rising tail and the hammer never reaches the string
+        MonotoneCase{"grand", "checking", -1.5, 1.5}, MonotoneCase{"upright", "key_dip", -2, 2},
         MonotoneCase{"upright", "hammer_blow", -2, 2},
         // 6.0 mm at +0.5 to 33 mm at +4. From 0 mm down the jack slides off the hammer butt
         // before its toe reaches the button: let-off reads 4.55 mm whatever the button (README,
@@ -234,6 +235,26 @@ TEST(Regulation, LetOffClearsTheDropScrewAsSoonAsTheLeverCarriesTheHammer) {
   EXPECT_NE(let_off->note.find("never lifts the hammer"), std::string::npos) << let_off->note;
   EXPECT_NE(let_off->note.find("then with 'drop'"), std::string::npos) << let_off->note;
   EXPECT_EQ(let_off->note.find("out of reach"), std::string::npos) << let_off->note;
+}
+
+// A backcheck bent 2 mm toward the hammer rubs the hammer's tail on its way up: the slow press
+// says so (a typed failure, not a let-off of some 14 mm), and the regulation bends the
+// backcheck back to the end of its range first, then sets let-off, drop and, last, checking.
+TEST(Regulation, LetOffBendsTheBackcheckBackWhenItStopsTheRisingHammer) {
+  const ActionModel close = with_adjuster(shipped("grand"), "checking", 2e-3);
+  EXPECT_THROW(measure_setting(close, "let_off"), BackcheckStopsTheRisingHammer);
+  EXPECT_NO_THROW(measure_setting(shipped("grand"), "let_off"));
+  const RegulationResult result = regulate(close);
+  ASSERT_TRUE(result.converged) << result.message;
+  const auto let_off = std::find_if(result.steps.begin(), result.steps.end(),
+                                    [](const RegulationStep& s) { return s.setting == "let_off"; });
+  ASSERT_NE(let_off, result.steps.end());
+  EXPECT_NE(let_off->note.find("meets the backcheck on its way up"), std::string::npos)
+      << let_off->note;
+  EXPECT_NE(let_off->note.find("then with 'checking' at -4 mm"), std::string::npos)
+      << let_off->note;
+  for (const SettingReading& r : result.settings)
+    EXPECT_LE(std::abs(r.measured - r.target), r.tolerance) << r.name;
 }
 
 // The bracketing search on settings measured at rest: from seeded random deregulated starts
