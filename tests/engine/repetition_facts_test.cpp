@@ -91,32 +91,26 @@ void expect_stable_when_rate_halved(std::size_t i) {
   EXPECT_NEAR(limit(sweep(i, 0.5)), limit(sweep(i, 1.0)), 0.5);
 }
 
+/// Why the grand's F4 tests skip (README, Limits).
+constexpr const char* kGrandF4NotReproduced =
+    "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand the full "
+    "stroke repeats to about 17.9 Hz and the half stroke only to about 13.2 Hz; stronger springs "
+    "(jack -38, repetition -45 N mm) give 17.5 and 19.9 Hz";
+
 TEST(RepetitionFacts, F4_UprightFullStrokeAbout11To13Hz) {
   expect_in_f4_range(0);
 }
 TEST(RepetitionFacts, F4_GrandFullStrokeAbout13To14Hz) {
-  GTEST_SKIP() << "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand "
-                  "the full stroke repeats to about 14.5 Hz and the half stroke only to "
-                  "about 13.6 Hz; stronger springs (jack -38, repetition -45 N mm) give 13.7 and "
-                  "19.5 Hz but make two of 20 random regulation starts fail on drop (the hammer "
-                  "hangs on the side of the jack after let-off)";
+  GTEST_SKIP() << kGrandF4NotReproduced;
   expect_in_f4_range(1);
 }
 TEST(RepetitionFacts, F4_GrandHalfStrokeAbout19To20Hz) {
-  GTEST_SKIP() << "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand "
-                  "the full stroke repeats to about 14.5 Hz and the half stroke only to "
-                  "about 13.6 Hz; stronger springs (jack -38, repetition -45 N mm) give 13.7 and "
-                  "19.5 Hz but make two of 20 random regulation starts fail on drop (the hammer "
-                  "hangs on the side of the jack after let-off)";
+  GTEST_SKIP() << kGrandF4NotReproduced;
   expect_in_f4_range(2);
 }
 
 TEST(RepetitionFacts, F4_HalfStrokeFasterThanFullAndGrandAtLeastAsFastAsUpright) {
-  GTEST_SKIP() << "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand "
-                  "the full stroke repeats to about 14.5 Hz and the half stroke only to "
-                  "about 13.6 Hz; stronger springs (jack -38, repetition -45 N mm) give 13.7 and "
-                  "19.5 Hz but make two of 20 random regulation starts fail on drop (the hammer "
-                  "hangs on the side of the jack after let-off)";
+  GTEST_SKIP() << kGrandF4NotReproduced;
   compute_sweeps({{0, 1.0}, {1, 1.0}, {2, 1.0}});
   const double upright_full = limit(sweep(0, 1.0)), grand_full = limit(sweep(1, 1.0)),
                grand_half = limit(sweep(2, 1.0));
@@ -128,19 +122,11 @@ TEST(RepetitionFacts, F4_UprightFullStrokeStableWhenTheChirpRateIsHalved) {
   expect_stable_when_rate_halved(0);
 }
 TEST(RepetitionFacts, F4_GrandFullStrokeStableWhenTheChirpRateIsHalved) {
-  GTEST_SKIP() << "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand "
-                  "the full stroke repeats to about 14.5 Hz and the half stroke only to "
-                  "about 13.6 Hz; stronger springs (jack -38, repetition -45 N mm) give 13.7 and "
-                  "19.5 Hz but make two of 20 random regulation starts fail on drop (the hammer "
-                  "hangs on the side of the jack after let-off)";
+  GTEST_SKIP() << kGrandF4NotReproduced;
   expect_stable_when_rate_halved(1);
 }
 TEST(RepetitionFacts, F4_GrandHalfStrokeStableWhenTheChirpRateIsHalved) {
-  GTEST_SKIP() << "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand "
-                  "the full stroke repeats to about 14.5 Hz and the half stroke only to "
-                  "about 13.6 Hz; stronger springs (jack -38, repetition -45 N mm) give 13.7 and "
-                  "19.5 Hz but make two of 20 random regulation starts fail on drop (the hammer "
-                  "hangs on the side of the jack after let-off)";
+  GTEST_SKIP() << kGrandF4NotReproduced;
   expect_stable_when_rate_halved(2);
 }
 
