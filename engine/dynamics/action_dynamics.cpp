@@ -112,6 +112,7 @@ void ActionDynamics::update_positions(const DofVector& q) {
   if (positions_valid_ && positions_q_.size() == q.size() &&
       (positions_q_.array() == q.array()).all())
     return;
+  evaluated_ = false;
   for (int k = 0; k < n_; ++k) {
     const BodyConstants& body = bodies_[k];
     BodyKinematics& kk = kin_[k];
@@ -246,10 +247,11 @@ void ActionDynamics::contact_penetration_bounds(const DofVector& q,
   for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;
 }
 
-void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
+void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector& v,
                               std::vector<ContactReading>* readings,
                               std::vector<double>* tensions) {
   update_kinematics(q, v);
+  evaluated_ = false;
   mass_.setZero();
   forces_.setZero();
 
@@ -335,10 +337,17 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
   }
 
   // the finger force at the key front
-  if (input_ && !input_->is_motion()) {
-    const double f = input_->force_n(t);
-    if (f != 0.0) add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -f), forces_);
-  }
+  if (finger != 0.0)
+    add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -finger), forces_);
+}
+
+void ActionDynamics::remember_evaluation(double finger, const DofVector& v,
+                                         const DofVector& acceleration) {
+  if (key_prescribed_ || !factor_valid_) return;
+  evaluated_ = true;
+  evaluated_finger_ = finger;
+  evaluated_v_ = v;
+  evaluated_acceleration_ = acceleration;
 }
 
 DofMatrix ActionDynamics::assembled_mass() const {
@@ -373,8 +382,15 @@ StateVector ActionDynamics::compress(const DofVector& q, const DofVector& v) con
 
 void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
   expand(t, y, scratch_q_, scratch_v_);
-  assemble(t, scratch_q_, scratch_v_, nullptr, nullptr);
-  solve_accelerations(t, scratch_acceleration_);
+  const double finger = applied_force(t);
+  if (evaluated_) update_positions(scratch_q_);  // clears evaluated_ if q differs
+  if (evaluated_ && finger == evaluated_finger_ &&
+      (scratch_v_.array() == evaluated_v_.array()).all()) {
+    scratch_acceleration_ = evaluated_acceleration_;  // the same inputs: the same result
+  } else {
+    assemble(finger, scratch_q_, scratch_v_, nullptr, nullptr);
+    solve_accelerations(t, scratch_acceleration_);
+  }
   dydt.resize(2 * free_count_);
   dydt.head(free_count_) = y.tail(free_count_);
   for (int i = 0; i < free_count_; ++i)
@@ -406,11 +422,13 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
                               DynamicsReading& out) {
   out.contacts.resize(model_.contacts.size());
   out.strap_tension.resize(model_.straps.size());
-  assemble(t, q, v, &out.contacts, &out.strap_tension);
+  const double finger = applied_force(t);
+  assemble(finger, q, v, &out.contacts, &out.strap_tension);
   // lever arm of a downward finger force at the key front
   const Vec2 front = place(key_, key_front_offset_);
   const double arm = cross2(front - kin_[key_].origin, Vec2(0.0, -1.0));
   solve_accelerations(t, out.acceleration);
+  remember_evaluation(finger, v, out.acceleration);
   if (!key_prescribed_) {
     if (!input_) {
       out.finger_force = 0.0;
@@ -418,7 +436,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
       // the force the mass exerts on the key: m (g − downward acceleration of the key front)
       out.finger_force = input_->added_mass_kg() * (kGravity - arm * out.acceleration[key_]);
     } else {
-      out.finger_force = input_->force_n(t);
+      out.finger_force = finger;
     }
     return;
   }
@@ -430,7 +448,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
 
 DofMatrix ActionDynamics::mass_matrix(const DofVector& q) {
   const DofVector v = DofVector::Zero(n_);
-  assemble(0.0, q, v, nullptr, nullptr);
+  assemble(0.0, q, v, nullptr, nullptr);  // M does not depend on the finger
   return assembled_mass();
 }
 

@@ -64,7 +64,10 @@ class ActionDynamics : public OdeSystem {
   bool velocity_jacobian(StateMatrix& jacobian) override;
 
   /// Extra viscous joint damping (N·m·s/rad) used only to settle the action to rest.
-  void set_settling_damping(double damping) { settling_damping_ = damping; }
+  void set_settling_damping(double damping) {
+    settling_damping_ = damping;
+    evaluated_ = false;
+  }
 
   const ActionModel& model() const { return model_; }
   bool key_prescribed() const { return key_prescribed_; }
@@ -171,9 +174,17 @@ class ActionDynamics : public OdeSystem {
   /// Adds ∂(v_A(P) − v_B(P))/∂q̇ (a = body_a, b = body_b; P a world point) to the rows gx, gy.
   void add_relative_velocity_rows(int body_a, int body_b, const Vec2& point, SmallVector& gx,
                                   SmallVector& gy) const;
-  /// Fills mass_ and forces_ at (t, q, q̇); readings and tensions may be null.
-  void assemble(double t, const DofVector& q, const DofVector& v,
+  /// Downward finger force (N) at the key front at time t: the force input's, else 0.
+  double applied_force(double t) const {
+    return input_ && !input_->is_motion() ? input_->force_n(t) : 0.0;
+  }
+  /// Fills mass_ and forces_ at (q, q̇) with the applied finger force `finger` (N, the only
+  /// explicit time dependence of a force-driven action); readings and tensions may be null.
+  void assemble(double finger, const DofVector& q, const DofVector& v,
                 std::vector<ContactReading>* readings, std::vector<double>* tensions);
+  /// Records evaluate()'s accelerations at (q̇, finger) for rhs() to reuse (force inputs only:
+  /// with a prescribed key the motion's time enters too).
+  void remember_evaluation(double finger, const DofVector& v, const DofVector& acceleration);
   /// q̈ of every joint from mass_ and forces_ (prescribed key included).
   void solve_accelerations(double t, DofVector& acceleration);
   /// Signed distance and normal of a contact at the current positions; `center_a` receives the
@@ -216,6 +227,12 @@ class ActionDynamics : public OdeSystem {
   TreeLdl tree_;
   SmallMatrix factor_ = SmallMatrix::Zero();
   bool factor_valid_ = false;  // factor_ holds the factor of the latest assembled M_ff
+  // evaluate()'s assembly and solve, at the memoized positions: a trace sample at a step end
+  // followed by the next step's f(t, y) at the same state evaluates once. Cleared by a new
+  // position update, a new assembly, or a change of the settling damping.
+  bool evaluated_ = false;
+  double evaluated_finger_ = 0.0;
+  DofVector evaluated_v_, evaluated_acceleration_;
   // scratch, so that rhs() does not allocate
   DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };
