@@ -97,10 +97,14 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
         if (b.chain[k] == joint) return true;
       return false;
     };
-    int joints[kMaxDof], count = 0;
-    for (int j = 0; j < n_; ++j)
-      if (on_chain(contacts_[c].body_a, j) != on_chain(contacts_[c].body_b, j)) joints[count++] = j;
-    culls_[c].set_joints(joints, count);
+    ContactConstants& contact = contacts_[c];
+    for (int j = 0; j < n_; ++j) {
+      const bool on_a = on_chain(contact.body_a, j);
+      if (on_a == on_chain(contact.body_b, j)) continue;
+      contact.joint_sign[contact.joint_count] = on_a ? 1.0 : -1.0;
+      contact.joints[contact.joint_count++] = j;
+    }
+    culls_[c].set_joints(contact.joints, contact.joint_count);
   }
   update_kinematics(DofVector::Zero(n_), DofVector::Zero(n_));  // the drawing configuration
   scratch_q_.resize(n_);

@@ -132,6 +132,11 @@ class ActionDynamics : public OdeSystem {
     /// segment s0, u = s1 − s0, unit normal m (B's frame)
     Vec2 start = Vec2::Zero(), direction = Vec2::Zero(), normal = Vec2::Zero();
     double inverse_length2 = 0.0;  ///< 1 / |u|², 1/m²
+    /// The joints that move one body and not the other, ascending, with +1 where the joint is on
+    /// A's chain and −1 on B's: the relative velocity v_A(P) − v_B(P) depends on these rates only.
+    int joint_count = 0;
+    int joints[kMaxDof] = {};
+    double joint_sign[kMaxDof] = {};
   };
   struct BodyKinematics {
     double angle = 0.0, cos = 1.0, sin = 0.0, omega = 0.0;
