@@ -113,9 +113,7 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
 }
 
 void ActionDynamics::update_positions(const DofVector& q) {
-  if (positions_valid_ && positions_q_.size() == q.size() &&
-      (positions_q_.array() == q.array()).all())
-    return;
+  if (positions_valid_ && same_positions(q)) return;
   evaluated_ = false;
   for (int k = 0; k < n_; ++k) {
     const BodyConstants& body = bodies_[k];

@@ -148,6 +148,14 @@ class ActionDynamics : public OdeSystem {
   /// geometry of the Jacobian's velocity columns and of a step-end penetration pass followed by
   /// the next step's first evaluation.
   void update_positions(const DofVector& q);
+  /// q equals the memoized positions_q_ (a plain loop that stops at the first difference: it
+  /// runs on every evaluation).
+  bool same_positions(const DofVector& q) const {
+    if (positions_q_.size() != q.size()) return false;
+    for (Eigen::Index i = 0; i < q.size(); ++i)
+      if (positions_q_[i] != q[i]) return false;
+    return true;
+  }
   /// Body rates at q̇ (after update_positions).
   void update_rates(const DofVector& v);
   void update_kinematics(const DofVector& q, const DofVector& v) {
