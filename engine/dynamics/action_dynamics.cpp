@@ -265,6 +265,12 @@ void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector
     const Vec2 c = kk.origin + r;
     const Vec2 bias = kk.origin_bias_acceleration - kk.omega * kk.omega * r;
     const Vec2 load = b.mass * (model_.gravity - bias);
+    if (b.chain_length == 1) {  // a body on the frame (most of them): one joint
+      const Vec2 arm = c - kk.origin;
+      forces_[k] += cross2(arm, load);
+      mass_(k, k) += b.inertia + b.mass * arm.dot(arm);
+      continue;
+    }
     Vec2 arm[kMaxDof];  // c − o_i along the chain
     for (int a = 0; a < b.chain_length; ++a) {
       const int i = b.chain[a];
