@@ -129,20 +129,29 @@ void ActionDynamics::update_positions(const DofVector& q) {
     }
     table_sincos(kk.angle, kk.cos, kk.sin);
   }
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  // the per-contact arrays by pointer: the flags are chars, whose stores may alias anything, and
+  // would make the compiler reload every vector's data pointer after each of them
+  ContactCull* const culls = culls_.data();
+  ContactDistance* const distances = distances_.data();
+  ContactPatch* const patches = patches_.data();
+  const ContactConstants* const contacts = contacts_.data();
+  char* const touching = touching_.data();
+  char* const exact = exact_.data();
+  const std::size_t count = contacts_.size();
+  for (std::size_t c = 0; c < count; ++c) {
     double bound = 0.0;
-    if (culls_[c].still_open(q, bound)) {  // certainly apart: no force, no patch
-      distances_[c].penetration = bound;
-      touching_[c] = 0;
-      exact_[c] = 0;
+    if (culls[c].still_open(q, bound)) {  // certainly apart: no force, no patch
+      distances[c].penetration = bound;
+      touching[c] = 0;
+      exact[c] = 0;
       continue;
     }
     Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
-    distances_[c] = contact_distance(contacts_[c], center_a);
-    touching_[c] = patch_at(distances_[c], center_a, contacts_[c].radius_a, patches_[c]);
-    exact_[c] = 1;
-    if (touching_[c])
-      culls_[c].disarm();
+    distances[c] = contact_distance(contacts[c], center_a);
+    touching[c] = patch_at(distances[c], center_a, contacts[c].radius_a, patches[c]);
+    exact[c] = 1;
+    if (touching[c])
+      culls[c].disarm();
     else
       arm_cull(c, q, center_a);
   }
