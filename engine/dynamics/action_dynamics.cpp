@@ -97,10 +97,14 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
         if (b.chain[k] == joint) return true;
       return false;
     };
-    int joints[kMaxDof], count = 0;
-    for (int j = 0; j < n_; ++j)
-      if (on_chain(contacts_[c].body_a, j) != on_chain(contacts_[c].body_b, j)) joints[count++] = j;
-    culls_[c].set_joints(joints, count);
+    ContactConstants& contact = contacts_[c];
+    for (int j = 0; j < n_; ++j) {
+      const bool on_a = on_chain(contact.body_a, j);
+      if (on_a == on_chain(contact.body_b, j)) continue;
+      contact.joint_sign[contact.joint_count] = on_a ? 1.0 : -1.0;
+      contact.joints[contact.joint_count++] = j;
+    }
+    culls_[c].set_joints(contact.joints, contact.joint_count);
   }
   update_kinematics(DofVector::Zero(n_), DofVector::Zero(n_));  // the drawing configuration
   scratch_q_.resize(n_);
@@ -109,9 +113,8 @@ ActionDynamics::ActionDynamics(const ActionModel& model, const KeyInput* input)
 }
 
 void ActionDynamics::update_positions(const DofVector& q) {
-  if (positions_valid_ && positions_q_.size() == q.size() &&
-      (positions_q_.array() == q.array()).all())
-    return;
+  if (positions_valid_ && same_positions(q)) return;
+  evaluated_ = false;
   for (int k = 0; k < n_; ++k) {
     const BodyConstants& body = bodies_[k];
     BodyKinematics& kk = kin_[k];
@@ -126,20 +129,29 @@ void ActionDynamics::update_positions(const DofVector& q) {
     }
     table_sincos(kk.angle, kk.cos, kk.sin);
   }
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+  // the per-contact arrays by pointer: the flags are chars, whose stores may alias anything, and
+  // would make the compiler reload every vector's data pointer after each of them
+  ContactCull* const culls = culls_.data();
+  ContactDistance* const distances = distances_.data();
+  ContactPatch* const patches = patches_.data();
+  const ContactConstants* const contacts = contacts_.data();
+  char* const touching = touching_.data();
+  char* const exact = exact_.data();
+  const std::size_t count = contacts_.size();
+  for (std::size_t c = 0; c < count; ++c) {
     double bound = 0.0;
-    if (culls_[c].still_open(q, bound)) {  // certainly apart: no force, no patch
-      distances_[c].penetration = bound;
-      touching_[c] = 0;
-      exact_[c] = 0;
+    if (culls[c].still_open(q, bound)) {  // certainly apart: no force, no patch
+      distances[c].penetration = bound;
+      touching[c] = 0;
+      exact[c] = 0;
       continue;
     }
     Vec2 center_a;  // the circle of A in the world, placed once for the distance and the patch
-    distances_[c] = contact_distance(contacts_[c], center_a);
-    touching_[c] = patch_at(distances_[c], center_a, contacts_[c].radius_a, patches_[c]);
-    exact_[c] = 1;
-    if (touching_[c])
-      culls_[c].disarm();
+    distances[c] = contact_distance(contacts[c], center_a);
+    touching[c] = patch_at(distances[c], center_a, contacts[c].radius_a, patches[c]);
+    exact[c] = 1;
+    if (touching[c])
+      culls[c].disarm();
     else
       arm_cull(c, q, center_a);
   }
@@ -246,10 +258,11 @@ void ActionDynamics::contact_penetration_bounds(const DofVector& q,
   for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;
 }
 
-void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
+void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector& v,
                               std::vector<ContactReading>* readings,
                               std::vector<double>* tensions) {
   update_kinematics(q, v);
+  evaluated_ = false;
   mass_.setZero();
   forces_.setZero();
 
@@ -261,6 +274,12 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
     const Vec2 c = kk.origin + r;
     const Vec2 bias = kk.origin_bias_acceleration - kk.omega * kk.omega * r;
     const Vec2 load = b.mass * (model_.gravity - bias);
+    if (b.chain_length == 1) {  // a body on the frame (most of them): one joint
+      const Vec2 arm = c - kk.origin;
+      forces_[k] += cross2(arm, load);
+      mass_(k, k) += b.inertia + b.mass * arm.dot(arm);
+      continue;
+    }
     Vec2 arm[kMaxDof];  // c − o_i along the chain
     for (int a = 0; a < b.chain_length; ++a) {
       const int i = b.chain[a];
@@ -335,10 +354,17 @@ void ActionDynamics::assemble(double t, const DofVector& q, const DofVector& v,
   }
 
   // the finger force at the key front
-  if (input_ && !input_->is_motion()) {
-    const double f = input_->force_n(t);
-    if (f != 0.0) add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -f), forces_);
-  }
+  if (finger != 0.0)
+    add_point_force(key_, place(key_, key_front_offset_), Vec2(0.0, -finger), forces_);
+}
+
+void ActionDynamics::remember_evaluation(double finger, const DofVector& v,
+                                         const DofVector& acceleration) {
+  if (key_prescribed_ || !factor_valid_) return;
+  evaluated_ = true;
+  evaluated_finger_ = finger;
+  evaluated_v_ = v;
+  evaluated_acceleration_ = acceleration;
 }
 
 DofMatrix ActionDynamics::assembled_mass() const {
@@ -373,8 +399,15 @@ StateVector ActionDynamics::compress(const DofVector& q, const DofVector& v) con
 
 void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
   expand(t, y, scratch_q_, scratch_v_);
-  assemble(t, scratch_q_, scratch_v_, nullptr, nullptr);
-  solve_accelerations(t, scratch_acceleration_);
+  const double finger = applied_force(t);
+  if (evaluated_) update_positions(scratch_q_);  // clears evaluated_ if q differs
+  if (evaluated_ && finger == evaluated_finger_ &&
+      (scratch_v_.array() == evaluated_v_.array()).all()) {
+    scratch_acceleration_ = evaluated_acceleration_;  // the same inputs: the same result
+  } else {
+    assemble(finger, scratch_q_, scratch_v_, nullptr, nullptr);
+    solve_accelerations(t, scratch_acceleration_);
+  }
   dydt.resize(2 * free_count_);
   dydt.head(free_count_) = y.tail(free_count_);
   for (int i = 0; i < free_count_; ++i)
@@ -406,11 +439,13 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
                               DynamicsReading& out) {
   out.contacts.resize(model_.contacts.size());
   out.strap_tension.resize(model_.straps.size());
-  assemble(t, q, v, &out.contacts, &out.strap_tension);
+  const double finger = applied_force(t);
+  assemble(finger, q, v, &out.contacts, &out.strap_tension);
   // lever arm of a downward finger force at the key front
   const Vec2 front = place(key_, key_front_offset_);
   const double arm = cross2(front - kin_[key_].origin, Vec2(0.0, -1.0));
   solve_accelerations(t, out.acceleration);
+  remember_evaluation(finger, v, out.acceleration);
   if (!key_prescribed_) {
     if (!input_) {
       out.finger_force = 0.0;
@@ -418,7 +453,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
       // the force the mass exerts on the key: m (g − downward acceleration of the key front)
       out.finger_force = input_->added_mass_kg() * (kGravity - arm * out.acceleration[key_]);
     } else {
-      out.finger_force = input_->force_n(t);
+      out.finger_force = finger;
     }
     return;
   }
@@ -430,7 +465,7 @@ void ActionDynamics::evaluate(double t, const DofVector& q, const DofVector& v,
 
 DofMatrix ActionDynamics::mass_matrix(const DofVector& q) {
   const DofVector v = DofVector::Zero(n_);
-  assemble(0.0, q, v, nullptr, nullptr);
+  assemble(0.0, q, v, nullptr, nullptr);  // M does not depend on the finger
   return assembled_mass();
 }
 

@@ -64,7 +64,10 @@ class ActionDynamics : public OdeSystem {
   bool velocity_jacobian(StateMatrix& jacobian) override;
 
   /// Extra viscous joint damping (N·m·s/rad) used only to settle the action to rest.
-  void set_settling_damping(double damping) { settling_damping_ = damping; }
+  void set_settling_damping(double damping) {
+    settling_damping_ = damping;
+    evaluated_ = false;
+  }
 
   const ActionModel& model() const { return model_; }
   bool key_prescribed() const { return key_prescribed_; }
@@ -129,6 +132,11 @@ class ActionDynamics : public OdeSystem {
     /// segment s0, u = s1 − s0, unit normal m (B's frame)
     Vec2 start = Vec2::Zero(), direction = Vec2::Zero(), normal = Vec2::Zero();
     double inverse_length2 = 0.0;  ///< 1 / |u|², 1/m²
+    /// The joints that move one body and not the other, ascending, with +1 where the joint is on
+    /// A's chain and −1 on B's: the relative velocity v_A(P) − v_B(P) depends on these rates only.
+    int joint_count = 0;
+    int joints[kMaxDof] = {};
+    double joint_sign[kMaxDof] = {};
   };
   struct BodyKinematics {
     double angle = 0.0, cos = 1.0, sin = 0.0, omega = 0.0;
@@ -140,6 +148,14 @@ class ActionDynamics : public OdeSystem {
   /// geometry of the Jacobian's velocity columns and of a step-end penetration pass followed by
   /// the next step's first evaluation.
   void update_positions(const DofVector& q);
+  /// q equals the memoized positions_q_ (a plain loop that stops at the first difference: it
+  /// runs on every evaluation).
+  bool same_positions(const DofVector& q) const {
+    if (positions_q_.size() != q.size()) return false;
+    for (Eigen::Index i = 0; i < q.size(); ++i)
+      if (positions_q_[i] != q[i]) return false;
+    return true;
+  }
   /// Body rates at q̇ (after update_positions).
   void update_rates(const DofVector& v);
   void update_kinematics(const DofVector& q, const DofVector& v) {
@@ -171,9 +187,17 @@ class ActionDynamics : public OdeSystem {
   /// Adds ∂(v_A(P) − v_B(P))/∂q̇ (a = body_a, b = body_b; P a world point) to the rows gx, gy.
   void add_relative_velocity_rows(int body_a, int body_b, const Vec2& point, SmallVector& gx,
                                   SmallVector& gy) const;
-  /// Fills mass_ and forces_ at (t, q, q̇); readings and tensions may be null.
-  void assemble(double t, const DofVector& q, const DofVector& v,
+  /// Downward finger force (N) at the key front at time t: the force input's, else 0.
+  double applied_force(double t) const {
+    return input_ && !input_->is_motion() ? input_->force_n(t) : 0.0;
+  }
+  /// Fills mass_ and forces_ at (q, q̇) with the applied finger force `finger` (N, the only
+  /// explicit time dependence of a force-driven action); readings and tensions may be null.
+  void assemble(double finger, const DofVector& q, const DofVector& v,
                 std::vector<ContactReading>* readings, std::vector<double>* tensions);
+  /// Records evaluate()'s accelerations at (q̇, finger) for rhs() to reuse (force inputs only:
+  /// with a prescribed key the motion's time enters too).
+  void remember_evaluation(double finger, const DofVector& v, const DofVector& acceleration);
   /// q̈ of every joint from mass_ and forces_ (prescribed key included).
   void solve_accelerations(double t, DofVector& acceleration);
   /// Signed distance and normal of a contact at the current positions; `center_a` receives the
@@ -216,6 +240,12 @@ class ActionDynamics : public OdeSystem {
   TreeLdl tree_;
   SmallMatrix factor_ = SmallMatrix::Zero();
   bool factor_valid_ = false;  // factor_ holds the factor of the latest assembled M_ff
+  // evaluate()'s assembly and solve, at the memoized positions: a trace sample at a step end
+  // followed by the next step's f(t, y) at the same state evaluates once. Cleared by a new
+  // position update, a new assembly, or a change of the settling damping.
+  bool evaluated_ = false;
+  double evaluated_finger_ = 0.0;
+  DofVector evaluated_v_, evaluated_acceleration_;
   // scratch, so that rhs() does not allocate
   DofVector scratch_q_, scratch_v_, scratch_acceleration_;
 };

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/table_exp.h"
 #include "model/action_model.h"
 
 namespace pat {
@@ -26,7 +27,7 @@ inline double smooth_tanh(double x) {
                                  x2 * (62.0 / 2835.0 +
                                        x2 * (-1382.0 / 155925.0 + x2 * (21844.0 / 6081075.0)))))));
   } else if (magnitude < 19.0) {
-    const double e = std::exp(-2.0 * magnitude);
+    const double e = table_exp(-2.0 * magnitude);
     y = (1.0 - e) / (1.0 + e);
   } else {
     y = 1.0;
@@ -34,13 +35,14 @@ inline double smooth_tanh(double x) {
   return std::copysign(y, x);
 }
 
-/// F(x) = a x e^(b x) + c x  (paper eq. 2); x = penetration (m) ≥ 0, F in N.
+/// F(x) = a x e^(b x) + c x  (paper eq. 2); x = penetration (m) ≥ 0, F in N. The exponential
+/// within about one unit in the last place (core/table_exp.h), for speed.
 inline double felt_curve_force(const FeltCurve& curve, double x) {
-  return curve.a * x * std::exp(curve.b * x) + curve.c * x;
+  return curve.a * x * table_exp(curve.b * x) + curve.c * x;
 }
 /// dF/dx of the curve above, N/m.
 inline double felt_curve_stiffness(const FeltCurve& curve, double x) {
-  return curve.a * std::exp(curve.b * x) * (1.0 + curve.b * x) + curve.c;
+  return curve.a * table_exp(curve.b * x) * (1.0 + curve.b * x) + curve.c;
 }
 
 /// Normal force of a hysteretic felt contact (paper eq. 3), N, never negative:

@@ -32,6 +32,17 @@ void ActionDynamics::add_relative_velocity_rows(int body_a, int body_b, const Ve
 
 namespace {
 
+/// K −= s · a bᵀ on the rows and columns `joints` (a and b given there, count entries).
+void subtract_outer(SmallMatrix& k, double s, const double* a, const double* b, const int* joints,
+                    int count) {
+  if (s == 0.0) return;
+  for (int i = 0; i < count; ++i) {
+    if (a[i] == 0.0) continue;
+    const double sa = s * a[i];
+    for (int j = 0; j < count; ++j) k(joints[i], joints[j]) -= sa * b[j];
+  }
+}
+
 /// K −= s · a bᵀ over the leading n×n block.
 void subtract_outer(SmallMatrix& k, double s, const SmallVector& a, const SmallVector& b, int n) {
   if (s == 0.0) return;
@@ -55,21 +66,31 @@ bool ActionDynamics::velocity_jacobian(StateMatrix& jacobian) {
     if (!touching_[c]) continue;
     const ContactConstants& contact = contacts_[c];
     const ContactPatch& patch = patches_[c];
-    SmallVector gx = SmallVector::Zero(), gy = SmallVector::Zero();
-    add_relative_velocity_rows(contact.body_a, contact.body_b, patch.point, gx, gy);
+    // j_n and j_t on the contact's joints only (elsewhere G is zero: a joint on neither chain,
+    // or on both, where the two chains' terms cancel exactly); the same sums in the same order
+    // as over every joint
     const Vec2 tangent = perp(patch.normal);
-    const SmallVector j_n = patch.normal.x() * gx + patch.normal.y() * gy;
-    const SmallVector j_t = tangent.x() * gx + tangent.y() * gy;
+    const int count = contact.joint_count;
+    double j_n[kMaxDof], j_t[kMaxDof];
     double rate = 0.0, slip = 0.0;
-    for (int j = 0; j < n_; ++j) rate -= j_n[j] * v[j], slip += j_t[j] * v[j];
+    for (int k = 0; k < count; ++k) {
+      const int j = contact.joints[k];
+      // ∂(v_A(P) − v_B(P))/∂q̇_j = ± ẑ × (P − o_j)
+      const Vec2 lever = perp(patch.point - kin_[j].origin);
+      const double gx = contact.joint_sign[k] * lever.x(), gy = contact.joint_sign[k] * lever.y();
+      j_n[k] = patch.normal.x() * gx + patch.normal.y() * gy;
+      j_t[k] = tangent.x() * gx + tangent.y() * gy;
+      rate -= j_n[k] * v[j];
+      slip += j_t[k] * v[j];
+    }
     const Contact& law = model_.contacts[c];
     const double damping = felt_normal_damping(law.law, patch.penetration, rate);
-    subtract_outer(k_v, damping, j_n, j_n, n_);
+    subtract_outer(k_v, damping, j_n, j_n, contact.joints, count);
     if (law.friction.mu > 0.0) {
       const double normal_force = felt_normal_force(law.law, patch.penetration, rate);
       const FrictionSlope slope = friction_slope(law.friction, normal_force, slip);
-      subtract_outer(k_v, slope.per_normal_force * damping, j_t, j_n, n_);
-      subtract_outer(k_v, -slope.per_slip_velocity, j_t, j_t, n_);
+      subtract_outer(k_v, slope.per_normal_force * damping, j_t, j_n, contact.joints, count);
+      subtract_outer(k_v, -slope.per_slip_velocity, j_t, j_t, contact.joints, count);
     }
   }
 

@@ -19,24 +19,27 @@ class SmallLu {
 
   /// Factors the leading n×n block of a. Returns false for an exactly singular matrix.
   bool compute(const Matrix& a, int n) {
-    n_ = n;
-    lu_ = a;
-    for (int k = 0; k < n; ++k) {
-      int pivot = k;
-      for (int i = k + 1; i < n; ++i)
-        if (std::abs(lu_(i, k)) > std::abs(lu_(pivot, k))) pivot = i;
-      row_of_[k] = pivot;
-      if (pivot != k)
-        for (int j = 0; j < n; ++j) std::swap(lu_(k, j), lu_(pivot, j));
-      if (lu_(k, k) == 0.0) return false;
-      const double inverse = 1.0 / lu_(k, k);
-      for (int i = k + 1; i < n; ++i) {
-        const double l = lu_(i, k) * inverse;
-        lu_(i, k) = l;
-        for (int j = k + 1; j < n; ++j) lu_(i, j) -= l * lu_(k, j);
-      }
+    switch (n) {
+      case 1:
+        return compute_fixed<1>(a);
+      case 2:
+        return compute_fixed<2>(a);
+      case 3:
+        return compute_fixed<3>(a);
+      case 4:
+        return compute_fixed<4>(a);
+      case 5:
+        return compute_fixed<5>(a);
+      case 6:
+        return compute_fixed<6>(a);
+      case 7:
+        return compute_fixed<7>(a);
+      case 8:
+        return compute_fixed<8>(a);
+      default:
+        n_ = 0;
+        return false;
     }
-    return true;
   }
 
   /// Solves A x = b in place on the first n entries of b.
@@ -64,6 +67,29 @@ class SmallLu {
   }
 
  private:
+  /// The factorization for n = N, a compile-time size so that the loops unroll.
+  template <int N>
+  bool compute_fixed(const Matrix& a) {
+    n_ = N;
+    lu_ = a;
+    for (int k = 0; k < N; ++k) {
+      int pivot = k;
+      for (int i = k + 1; i < N; ++i)
+        if (std::abs(lu_(i, k)) > std::abs(lu_(pivot, k))) pivot = i;
+      row_of_[k] = pivot;
+      if (pivot != k)
+        for (int j = 0; j < N; ++j) std::swap(lu_(k, j), lu_(pivot, j));
+      if (lu_(k, k) == 0.0) return false;
+      const double inverse = 1.0 / lu_(k, k);
+      for (int i = k + 1; i < N; ++i) {
+        const double l = lu_(i, k) * inverse;
+        lu_(i, k) = l;
+        for (int j = k + 1; j < N; ++j) lu_(i, j) -= l * lu_(k, j);
+      }
+    }
+    return true;
+  }
+
   /// The solve for n = N, a compile-time size so that the loops unroll (it runs twice per step).
   template <int N>
   void solve_fixed(Vector& b) const {
@@ -86,6 +112,6 @@ class SmallLu {
   int n_ = 0;
 };
 
-static_assert(kMaxDof == 8, "extend SmallLu::solve_in_place's dispatch");
+static_assert(kMaxDof == 8, "extend SmallLu::compute's and solve_in_place's dispatch");
 
 }  // namespace pat

@@ -43,7 +43,22 @@ void schur_solve(const SmallLu& lu, const SmallLu::Matrix& hg_a_q, double hg, co
     x[N + i] = schur_rhs[i];
   }
 }
-static_assert(kMaxDof == 8, "extend WMethod2::solve's dispatch");
+
+/// S = I − hγ A_v − hγ (hγ A_q) and hγ A_q (w_method.h) for n = N dofs, from J's lower rows; then
+/// S's LU factors. A compile-time size, like schur_solve.
+template <int N>
+void schur_factor(const StateMatrix& jacobian, double hg, SmallLu::Matrix& hg_a_q, SmallLu& lu) {
+  SmallLu::Matrix s = SmallLu::Matrix::Zero();
+  for (int j = 0; j < N; ++j) {
+    for (int i = 0; i < N; ++i) {
+      hg_a_q(i, j) = hg * jacobian(N + i, j);
+      s(i, j) = (i == j ? 1.0 : 0.0) - hg * jacobian(N + i, N + j) - hg * hg_a_q(i, j);
+    }
+  }
+  lu.compute(s, N);  // a singular S gives non-finite K, reported by step()
+}
+
+static_assert(kMaxDof == 8, "extend WMethod2::solve's and factor's dispatch");
 
 }  // namespace
 
@@ -134,15 +149,32 @@ void WMethod2::evaluate_jacobian(std::uint64_t regime) {
 void WMethod2::factor(double h) {
   const double hg = kGamma * h;
   if (use_schur_) {
-    const int n = dofs_;
-    SmallLu::Matrix s = SmallLu::Matrix::Zero();
-    for (int i = 0; i < n; ++i) {
-      for (int j = 0; j < n; ++j) {
-        hg_a_q_(i, j) = hg * jacobian_(n + i, j);
-        s(i, j) = (i == j ? 1.0 : 0.0) - hg * jacobian_(n + i, n + j) - hg * hg_a_q_(i, j);
-      }
+    switch (dofs_) {
+      case 1:
+        schur_factor<1>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 2:
+        schur_factor<2>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 3:
+        schur_factor<3>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 4:
+        schur_factor<4>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 5:
+        schur_factor<5>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 6:
+        schur_factor<6>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      case 7:
+        schur_factor<7>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
+      default:
+        schur_factor<8>(jacobian_, hg, hg_a_q_, lu_schur_);
+        break;
     }
-    lu_schur_.compute(s, n);  // a singular S gives non-finite K, reported by step()
   } else {
     lu_full_.compute(StateMatrix::Identity(dim_, dim_) - hg * jacobian_);
   }

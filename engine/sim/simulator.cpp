@@ -36,6 +36,9 @@ void Simulator::restart_integrator() {
     rhs_done_before_ += integrator_->stats().rhs_evaluations;
   }
   dynamics_ = std::make_unique<ActionDynamics>(*model_, input_.get());
+  penetration_limit_.clear();
+  for (const Contact& contact : model_->contacts)
+    penetration_limit_.push_back(contact.max_penetration);
   dynamics_->set_key_rest_angle(rest_.q[model_->landmarks.key]);
   integrator_ = make_integrator(options_.integrator, options_.integrator_options);
   integrator_->initialize(*dynamics_, t1_, dynamics_->compress(q1_, v1_));
@@ -125,9 +128,9 @@ bool Simulator::advance_to(double t) {
 
 void Simulator::check_penetrations() {
   const ActionModel& model = *model_;
-  for (std::size_t c = 0; c < model.contacts.size(); ++c) {
-    const Contact& contact = model.contacts[c];
-    if (next_penetration_[c] > contact.max_penetration) {
+  for (std::size_t c = 0; c < penetration_limit_.size(); ++c) {
+    if (next_penetration_[c] > penetration_limit_[c]) {
+      const Contact& contact = model.contacts[c];
       stop("unphysical penetration in contact '" + contact.name + "' (" +
            part_name(model, contact.body_a) + " into " + part_name(model, contact.body_b) +
            "): " + format_number(next_penetration_[c] * 1e3) + " mm, limit " +
@@ -143,28 +146,37 @@ void Simulator::detect_events() {
   const std::vector<double>& current = next_penetration_;
   const std::size_t before = events_.size();
   auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
-  const double gap = dynamics_->hammer_string_gap(q1_);
+  // the hammer–string gap goes with each event (rare: computed only then)
+  double gap = 0.0;
+  bool have_gap = false;
+  auto gap_now = [&] {
+    if (!have_gap) {
+      gap = dynamics_->hammer_string_gap(q1_);
+      have_gap = true;
+    }
+    return gap;
+  };
 
   if (marks.letoff_contact >= 0 && current[marks.letoff_contact] > 0.0) last_letoff_active_ = t1_;
   // escapement: the jack leaves the knuckle (butt) within 2 ms of touching the let-off button
   if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
       current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
       t1_ - last_letoff_active_ < 2e-3) {
-    events_.push_back({"escapement", t1_, 0.0, gap});
+    events_.push_back({"escapement", t1_, 0.0, gap_now()});
   }
   if (became_active(marks.string_contact)) {
     // strike-point speed toward the string just before contact
     const Vec2 vel = dynamics_->point_velocity(marks.hammer, marks.strike_point, q0_, v0_);
-    events_.push_back({"impact", t1_, -marks.string_normal.dot(vel), gap});
+    events_.push_back({"impact", t1_, -marks.string_normal.dot(vel), gap_now()});
     impact_since_check_ = true;
   }
   if (became_active(marks.check_contact) && impact_since_check_) {
-    events_.push_back({"check", t1_, 0.0, gap});
+    events_.push_back({"check", t1_, 0.0, gap_now()});
     impact_since_check_ = false;
   }
   if (became_active(marks.key_bottom_contact)) {
     if (last_key_bottom_ < 0.0 || t1_ - last_key_bottom_ > 5e-3)
-      events_.push_back({"key_bottom", t1_, 0.0, gap});
+      events_.push_back({"key_bottom", t1_, 0.0, gap_now()});
     last_key_bottom_ = t1_;
   } else if (marks.key_bottom_contact >= 0 && current[marks.key_bottom_contact] > 0.0) {
     last_key_bottom_ = t1_;

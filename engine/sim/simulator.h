@@ -101,7 +101,8 @@ class Simulator {
   // for the events and the limit check; contact_penetrations() makes them exact on demand)
   std::vector<double> penetration_;
   bool penetration_exact_ = false;
-  std::vector<double> next_penetration_;  // scratch: at the end of the step being taken
+  std::vector<double> next_penetration_;   // scratch: at the end of the step being taken
+  std::vector<double> penetration_limit_;  // each contact's max_penetration, m
   bool stopped_ = false;
   std::string stop_cause_;
   std::vector<SimEvent> events_;
