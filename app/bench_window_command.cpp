@@ -8,7 +8,11 @@
 #include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
+#include "inputs/key_input.h"
+#include "model/preset_loader.h"
 #include "plot_output.h"
+#include "sim/key_travel.h"
+#include "sim/simulation.h"
 #ifdef PAT_HAVE_UI
 #include "window_bench.h"
 #endif
@@ -31,6 +35,12 @@ int run_bench_window(const std::vector<std::string>& args) {
     options.latency_trials = static_cast<int>(trials);
   }
   const PlotOption plot(cl.value_or("--plot", ""));
+  {
+    // a bad action or input SPEC is refused before the window opens, where it would only show
+    // in the banner of a run that never starts
+    const ActionModel model = load_action(options.action);
+    parse_input_spec(options.input, input_context(model, find_rest_state(model)));
+  }
   const ui::WindowBenchResult r = ui::run_window_bench(options);
   // each slider move's latency, in the order the moves were made
   PlotSpec latency =

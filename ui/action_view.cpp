@@ -42,6 +42,18 @@ void draw_arrow(QPainter& painter, const QPointF& from, const QPointF& to, const
   painter.drawPolygon(tip);
 }
 
+/// The point of a closed outline polygon (body rest coordinates, m) nearest to `p`.
+Vec2 nearest_outline_point(const std::vector<Vec2>& outline, const Vec2& p) {
+  Vec2 best = outline.empty() ? p : outline.front();
+  for (std::size_t i = 0; i < outline.size(); ++i) {
+    const Vec2& a = outline[i];
+    const Vec2 ab = outline[(i + 1) % outline.size()] - a;
+    const double t = std::clamp((p - a).dot(ab) / std::max(ab.squaredNorm(), 1e-18), 0.0, 1.0);
+    const Vec2 q = a + t * ab;
+    if ((q - p).squaredNorm() < (best - p).squaredNorm()) best = q;
+  }
+  return best;
+}
 }  // namespace
 
 ActionView::ActionView(QWidget* parent) : QWidget(parent) {
@@ -167,7 +179,29 @@ void ActionView::paint_frame(QPainter& painter) {
     painter.setBrush(fill);
     painter.drawPolygon(polygon);
   }
-  // contact features: felts, buttons, capstan, jack top, backcheck (moved by the adjusters)
+  // the backcheck: its head behind the check face, on a wire down to the body that carries it
+  const int check = model.landmarks.check_contact;
+  std::optional<QPointF> backcheck_label_at;
+  if (check >= 0 && model.contacts[check].shape == ContactShape::CircleSegment &&
+      model.contacts[check].body_b >= 0) {
+    const Contact& c = model.contacts[check];
+    constexpr double kHeadDepth = 4e-3;  // m, drawn thickness of the head behind its face
+    const Vec2 back = -kHeadDepth * c.segment_normal;
+    QPolygonF head;
+    for (const Vec2& p :
+         {c.segment_start, c.segment_end, Vec2(c.segment_end + back), Vec2(c.segment_start + back)})
+      head << to_screen(body_point(c.body_b, p));
+    const Vec2 wire_top = c.segment_start + 0.5 * back;
+    const Vec2 wire_foot = nearest_outline_point(model.bodies[c.body_b].outline, wire_top);
+    painter.setPen(QPen(QColor(90, 90, 90), 2.0, Qt::SolidLine, Qt::RoundCap));
+    painter.drawLine(to_screen(body_point(c.body_b, wire_top)),
+                     to_screen(body_point(c.body_b, wire_foot)));
+    painter.setPen(QPen(QColor(95, 60, 30), 1.5));
+    painter.setBrush(QColor(170, 120, 70, 230));
+    painter.drawPolygon(head);
+    backcheck_label_at = to_screen(body_point(c.body_b, c.segment_end + back));
+  }
+  // contact features: felts, buttons, capstan, jack top, backcheck face (moved by the adjusters)
   painter.setBrush(Qt::NoBrush);
   for (const Contact& c : model.contacts) {
     const QColor ink(60, 60, 60, 170);
@@ -258,6 +292,9 @@ void ActionView::paint_frame(QPainter& painter) {
                       QColor(70, 70, 70), true};
     (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
   }
+  if (backcheck_label_at)
+    fixture_labels.push_back(
+        {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true});
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());

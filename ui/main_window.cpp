@@ -501,13 +501,19 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
                          "time_s",
                          "s",
                          tr("measured, adjuster (mm)"),
-                         {measured, adjuster}});
+                         {measured, adjuster},
+                         {},
+                         {},
+                         {}});
   shown.plots.push_back({tr("Hammer–string gap at the top of each key cycle"),
                          tr("time (s)"),
                          "time_s",
                          "s",
                          tr("gap (mm)"),
-                         {gap}});
+                         {gap},
+                         {},
+                         {},
+                         {}});
   analyses_->show_result(tr("Deregulation of %1").arg(setting), shown);
   show_analyses();
 }
