@@ -38,8 +38,9 @@ const std::vector<NeglectRange> kGrand = {
      "that the jack never lifts it, instead of a hammer held close to the string"},
     {"checking", 0.5, 1.0, -1,
      "checking 14–16 mm [ANT], ≈5/8 in [PP]: backcheck wires bend with use by a few mm. Model: "
-     "≈−2 mm/mm (the preset's + bends toward the hammer yet the catch comes nearer the string); "
-     "beyond +1.2 mm the forte blow jams the capstan into the whippen"},
+     "≈−2 mm/mm (the preset's + bends toward the hammer, so the catch comes nearer the "
+     "string); from −1.75 mm the tail passes below the backcheck's face, from +1.75 mm the face "
+     "stops the rising hammer"},
 };
 
 const std::vector<NeglectRange> kUpright = {
