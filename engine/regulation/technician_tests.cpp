@@ -154,6 +154,27 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   return reading;
 }
 
+bool BackcheckCatch::update(double t, double gap, double check_gap, bool struck) {
+  const double dt = t - t_;
+  const double speed = dt > 0.0 ? (gap - gap_) / dt : 0.0;  // m/s, + away from the string
+  if (struck && !touching_ && check_gap_ > 0.0 && check_gap <= 0.0) {
+    touching_ = true;
+    touch_gap_ = at_crossing(gap_, gap, check_gap_, check_gap);
+    touch_speed_ = std::max(free_speed_, 0.0);  // the step that closes it may already brake
+  }
+  free_speed_ = speed;
+  t_ = t;
+  gap_ = gap;
+  check_gap_ = check_gap;
+  if (!touching_) return false;
+  if (speed <= kCaughtSpeedFraction * touch_speed_) {
+    caught_gap_ = touch_gap_;
+    return true;
+  }
+  if (check_gap > 0.0) touching_ = false;  // a brush: the backcheck let the hammer go on
+  return false;
+}
+
 SimulationOptions forte_blow_options() {
   SimulationOptions options;
   // the error-controlled CVODE rather than the fixed-step W-method: at 1e-5 s the W-method's
@@ -178,14 +199,12 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
   ForteBlowReading reading;
   bool struck = false;
-  double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_check = gap_of(marks.check_contact);
+  BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
+                             gap_of(marks.check_contact));
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds))
       throw std::runtime_error("the forte blow stopped at t = " + std::to_string(sim.time()) +
                                " s: " + sim.stop_cause());
-    const double gap = sim.hammer_string_gap(sim.q());
-    const double check = gap_of(marks.check_contact);
     if (!struck && sim.new_event_count() > 0) {
       for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
         if (e->type == "impact") {
@@ -194,12 +213,12 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
         }
     }
     // caught: the hammer's tail (catcher) meets the backcheck on its way back from the string
-    if (struck && previous_check > 0.0 && check <= 0.0) {
-      reading.checked_gap = at_crossing(previous_gap, gap, previous_check, check);
+    // and is held back by it
+    if (catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()), gap_of(marks.check_contact),
+                           struck)) {
+      reading.checked_gap = catch_watch.caught_gap();
       return reading;
     }
-    previous_gap = gap;
-    previous_check = check;
   }
   if (!struck) throw std::runtime_error("in a forte blow the hammer never reaches the string");
   throw std::runtime_error("after a forte blow the backcheck never catches the hammer");
