@@ -6,6 +6,7 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
 #include "regulation/technician_tests.h"
@@ -129,6 +130,8 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
   double impact_velocity = 0.0, caught_gap = NAN;
   BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
                              -sim.contact_penetrations()[marks.check_contact]);
+  ActionDynamics dynamics(model, nullptr);  // for the backcheck's share of a closing
+  DofVector q_before = sim.q();
   std::string stop;
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds)) {
@@ -140,10 +143,14 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
         if (strikes == 0) impact_velocity = e->hammer_velocity;
         ++strikes;
       }
+    const auto share = [&] {
+      return closing_share_of_body_b(dynamics, model, marks.check_contact, q_before, sim.q());
+    };
     if (std::isnan(caught_gap) &&
         catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()),
-                           -sim.contact_penetrations()[marks.check_contact], strikes > 0))
+                           -sim.contact_penetrations()[marks.check_contact], strikes > 0, share))
       caught_gap = catch_watch.caught_gap();
+    q_before = sim.q();
     if (progress) {
       progress->partial(sim.time() / kForteHoldSeconds, "forte blow");
       progress->throw_if_cancelled();
