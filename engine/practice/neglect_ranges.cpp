@@ -52,17 +52,15 @@ const std::vector<NeglectRange> kUpright = {
      "Model: 1.0 mm/mm"},
     {"lost_motion", 0.1, 0.3, -1,
      "key and capstan felts compress: lost motion grows from minimal toward 1/16 in (1.6 mm) and "
-     "beyond [JPU][RW]. Model: the rest gap stays ≈ −0.007 mm (the jack touches the butt at "
-     "rest) for any capstan position, and from −0.5 mm the key never reaches its punching, so "
-     "the range stays within ±0.3 mm"},
-    {"let_off", 0.2, 0.6, +1,
-     "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈3 mm/mm upward",
-     +1,
-     "the regulated button sits at the minimum of the let-off distance: moving it either way "
-     "gives a larger let-off, so a closer let-off cannot be made"},
-    {"checking", 1.0, 3.0, -1,
-     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−0.8 mm/mm, and the "
-     "regulated action checks at ≈5 mm"},
+     "beyond [JPU][RW]. Model: ≈1.2 mm of gap per mm of capstan (0.89 mm at −0.5 mm); from "
+     "about +0.25 mm the jack meets the butt at rest"},
+    {"let_off", 0.1, 0.25, +1,
+     "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈5 mm/mm "
+     "(0.67 mm at −0.5 mm, 5.9 mm at +0.5 mm)"},
+    {"checking", 0.15, 0.35, -1,
+     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−5.6 mm/mm (18.8 mm "
+     "at −0.5 mm); from about +0.4 mm the backcheck, carried up by the whippen as a forte key "
+     "bottoms, meets the hammer just after the strike and holds it a few mm from the string"},
     {"bridle", 1.0, 2.5, +1,
      "bridle tapes stretch or are mis-hooked: slack is not specified numerically [JG], a few mm "
      "is visible. Model: 1.0 mm/mm"},

@@ -6,6 +6,7 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
 #include "regulation/technician_tests.h"
@@ -127,27 +128,29 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
   Simulator sim(borrow(model), input, options, &rest);
   int strikes = 0;
   double impact_velocity = 0.0, caught_gap = NAN;
-  double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_check = -sim.contact_penetrations()[marks.check_contact];
+  BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
+                             -sim.contact_penetrations()[marks.check_contact]);
+  ActionDynamics dynamics(model, nullptr);  // for the backcheck's share of a closing
+  DofVector q_before = sim.q();
   std::string stop;
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds)) {
       stop = "the run stopped at t = " + std::to_string(sim.time()) + " s: " + sim.stop_cause();
       break;
     }
-    const double gap = sim.hammer_string_gap(sim.q());
-    const double check = -sim.contact_penetrations()[marks.check_contact];
     for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
       if (e->type == "impact") {
         if (strikes == 0) impact_velocity = e->hammer_velocity;
         ++strikes;
       }
-    if (strikes > 0 && std::isnan(caught_gap) && previous_check > 0.0 && check <= 0.0) {
-      const double s = previous_check / (previous_check - check);
-      caught_gap = previous_gap + s * (gap - previous_gap);
-    }
-    previous_gap = gap;
-    previous_check = check;
+    const auto share = [&] {
+      return closing_share_of_body_b(dynamics, model, marks.check_contact, q_before, sim.q());
+    };
+    if (std::isnan(caught_gap) &&
+        catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()),
+                           -sim.contact_penetrations()[marks.check_contact], strikes > 0, share))
+      caught_gap = catch_watch.caught_gap();
+    q_before = sim.q();
     if (progress) {
       progress->partial(sim.time() / kForteHoldSeconds, "forte blow");
       progress->throw_if_cancelled();

@@ -154,6 +154,51 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   return reading;
 }
 
+bool BackcheckCatch::update(double t, double gap, double check_gap, bool struck,
+                            const std::function<double()>& backcheck_share) {
+  const double dt = t - t_;
+  const double speed = dt > 0.0 ? (gap - gap_) / dt : 0.0;  // m/s, + away from the string
+  const bool closed = struck && check_gap_ > 0.0 && check_gap <= 0.0;
+  const double closed_at = closed ? at_crossing(gap_, gap, check_gap_, check_gap) : 0.0;
+  const double before = free_speed_;  // the step that closes it may already brake
+  t_ = t;
+  gap_ = gap;
+  check_gap_ = check_gap;
+  free_speed_ = speed;
+  if (closed && backcheck_share() <= 0.5) {  // the hammer ran into the backcheck
+    caught_gap_ = closed_at;
+    return true;
+  }
+  if (closed && !touching_) {  // the backcheck ran into the hammer: a catch if it holds it back
+    touching_ = true;
+    touch_gap_ = closed_at;
+    touch_speed_ = std::max(before, 0.0);
+  }
+  if (!touching_) return false;
+  if (speed <= kCaughtSpeedFraction * touch_speed_) {
+    caught_gap_ = touch_gap_;
+    return true;
+  }
+  if (check_gap > 0.0) touching_ = false;  // a brush: the backcheck let the hammer go on
+  return false;
+}
+
+double closing_share_of_body_b(ActionDynamics& dynamics, const ActionModel& model, int contact,
+                               const DofVector& before, const DofVector& after) {
+  std::vector<double> penetration;
+  dynamics.contact_penetrations(before, penetration);
+  const double gap_before = -penetration[contact];
+  dynamics.contact_penetrations(after, penetration);
+  const double gap_after = -penetration[contact];
+  if (gap_after >= gap_before) return 0.0;
+  DofVector held = after;  // body B and its ancestors where they were
+  for (int b = model.contacts[contact].body_b; b >= 0; b = model.bodies[b].parent)
+    held[b] = before[b];
+  dynamics.contact_penetrations(held, penetration);
+  const double gap_held = -penetration[contact];
+  return std::clamp((gap_held - gap_after) / (gap_before - gap_after), 0.0, 1.0);
+}
+
 SimulationOptions forte_blow_options() {
   SimulationOptions options;
   // the error-controlled CVODE rather than the fixed-step W-method: at 1e-5 s the W-method's
@@ -178,14 +223,14 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
   ForteBlowReading reading;
   bool struck = false;
-  double previous_gap = sim.hammer_string_gap(sim.q());
-  double previous_check = gap_of(marks.check_contact);
+  BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
+                             gap_of(marks.check_contact));
+  ActionDynamics dynamics(model, nullptr);  // for the backcheck's share of a closing
+  DofVector q_before = sim.q();
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds))
       throw std::runtime_error("the forte blow stopped at t = " + std::to_string(sim.time()) +
                                " s: " + sim.stop_cause());
-    const double gap = sim.hammer_string_gap(sim.q());
-    const double check = gap_of(marks.check_contact);
     if (!struck && sim.new_event_count() > 0) {
       for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
         if (e->type == "impact") {
@@ -194,12 +239,16 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
         }
     }
     // caught: the hammer's tail (catcher) meets the backcheck on its way back from the string
-    if (struck && previous_check > 0.0 && check <= 0.0) {
-      reading.checked_gap = at_crossing(previous_gap, gap, previous_check, check);
+    // (not brushed by it)
+    const auto share = [&] {
+      return closing_share_of_body_b(dynamics, model, marks.check_contact, q_before, sim.q());
+    };
+    if (catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()), gap_of(marks.check_contact),
+                           struck, share)) {
+      reading.checked_gap = catch_watch.caught_gap();
       return reading;
     }
-    previous_gap = gap;
-    previous_check = check;
+    q_before = sim.q();
   }
   if (!struck) throw std::runtime_error("in a forte blow the hammer never reaches the string");
   throw std::runtime_error("after a forte blow the backcheck never catches the hammer");

@@ -3,10 +3,15 @@
 // (checking).
 #pragma once
 
+#include <functional>
+#include <stdexcept>
+
 #include "model/action_model.h"
 #include "sim/simulation.h"
 
 namespace pat {
+
+class ActionDynamics;
 
 /// Signed gap of contact `contact` at q (m): > 0 apart (the distance still to close), < 0 when
 /// the parts overlap (minus the penetration). Same geometry as the dynamics (contact_geometry.h).
@@ -62,12 +67,51 @@ inline constexpr double kForteBlowNewtons = 40.0;
 /// How long the forte blow is followed, key held (s): strike, rebound and check settle in it.
 inline constexpr double kForteHoldSeconds = 0.3;
 
+/// Reads the backcheck's catch on a forte blow's rebound, step by step: the hammer–string gap
+/// where the catcher meets the backcheck on its way back from the string. A contact closed
+/// mostly by the backcheck's own motion (more than half of the gap's closing over the step)
+/// that opens again before it has taken a fifth of the returning hammer's speed is a brush,
+/// not a catch: on the upright the whippen, flung off the capstan as a forte key bottoms,
+/// carries the backcheck against the hammer just after the strike (3.6 mm from the string)
+/// and lets it go on at 94 % of its speed. Any other contact is the catch, read where the gap
+/// closed (the grand's backcheck stands on the resting key: its tail runs into it).
+class BackcheckCatch {
+ public:
+  static constexpr double kCaughtSpeedFraction = 0.8;
+
+  /// `gap`: hammer–string distance (m); `check_gap`: catcher–backcheck gap (m, ≤ 0 touching).
+  BackcheckCatch(double t, double gap, double check_gap)
+      : t_(t), gap_(gap), check_gap_(check_gap) {}
+
+  /// After each step; `struck`: the hammer has reached the string; `backcheck_share()`: the
+  /// part of the step's closing of the check gap due to the backcheck's own motion (0–1; asked
+  /// only on the step that closes it). True once caught.
+  bool update(double t, double gap, double check_gap, bool struck,
+              const std::function<double()>& backcheck_share);
+  /// m, valid once update() returned true.
+  double caught_gap() const { return caught_gap_; }
+
+ private:
+  double t_, gap_, check_gap_;
+  double free_speed_ = 0.0;                     ///< m/s away from the string over the previous step
+  bool touching_ = false;                       ///< in a contact that may still prove a brush
+  double touch_gap_ = 0.0, touch_speed_ = 0.0;  ///< m, m/s away from the string
+  double caught_gap_ = 0.0;
+};
+
+/// The part (0–1) of a contact gap's closing from `before` to `after` that is due to the motion
+/// of its body B (the backcheck's side) and B's ancestors: the gap with them held at `before`,
+/// against the gap's whole change. 0 when the gap did not close.
+double closing_share_of_body_b(ActionDynamics& dynamics, const ActionModel& model, int contact,
+                               const DofVector& before, const DofVector& after);
+
 /// The simulation options of the forte blow (also for other procedures that must read the same
 /// catch, e.g. the practice mode's observations).
 SimulationOptions forte_blow_options();
 
 /// A forte blow with the key held down: the hammer strikes, falls back and is caught by the
-/// backcheck; the distance is read where the catcher first meets the backcheck. Throws
+/// backcheck; the distance is read where the catcher meets the backcheck and is held back by
+/// it (BackcheckCatch: a brush of the backcheck is not a catch). Throws
 /// std::runtime_error when the hammer does not strike or is not caught.
 ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest);
 

@@ -16,11 +16,12 @@ const DoubleBlowVariant& variant(const DoubleBlowStudy& study, const std::string
   return study.variants.front();
 }
 
-TEST(DoubleBlowStudy, ButtSpringBringsTheHammerBack) {
+TEST(DoubleBlowStudy, BridleStrapAndButtSpringEachBringTheHammerBack) {
   // the part of fact F6 (paper section 7.3, Fig. 25) the shipped upright reproduces: with both
-  // parts the hammer is back on its rest rail well within the run, without the butt spring it
-  // comes back later or not at all. (The bridle strap's share does not show yet: with its 3 mm
-  // slack the strap never becomes taut on the return; see the study's header.)
+  // parts the hammer is back on its rest rail well within the run; without the bridle strap it
+  // comes back later (0.204 against 0.198 s after the impact), without the butt spring later
+  // still (0.239 s) and without either not at all. (That the strap matters more does not hold:
+  // the butt spring's share is the larger.)
   const DoubleBlowStudy study = double_blow_study(test::shipped("upright"));
   ASSERT_EQ(study.variants.size(), 4u);
   const DoubleBlowVariant& both = variant(study, "both");
@@ -39,6 +40,8 @@ TEST(DoubleBlowStudy, ButtSpringBringsTheHammerBack) {
   auto later_or_never = [&](const DoubleBlowVariant& v) {
     return v.hammer_return_s < 0.0 || v.hammer_return_s > both.hammer_return_s;
   };
+  const DoubleBlowVariant& no_bridle = variant(study, "no_bridle");
+  EXPECT_TRUE(later_or_never(no_bridle)) << no_bridle.hammer_return_s;
   EXPECT_TRUE(later_or_never(no_spring)) << no_spring.hammer_return_s;
   EXPECT_TRUE(later_or_never(neither)) << neither.hammer_return_s;
   // the CSV has the hammer angle of each variant's double-blow run

@@ -102,6 +102,9 @@ TEST_P(MeasurementResponse, IsMonotoneInItsAdjuster) {
   std::vector<double> values;
   for (double x = c.from_mm; x <= c.to_mm + 1e-9; x += c.step_mm)
     values.push_back(measure_at(model, c.setting, x));
+  std::printf("%s %s from %g mm:", c.action, c.setting, c.from_mm);
+  for (double v : values) std::printf(" %.4g", v);
+  std::printf("\n");
   const double direction = values.back() > values.front() ? 1.0 : -1.0;
   for (std::size_t i = 1; i < values.size(); ++i)
     EXPECT_GT(direction * (values[i] - values[i - 1]), 1e-3)
@@ -143,19 +146,22 @@ INSTANTIATE_TEST_SUITE_P(
         // stops the rising tail and the hammer never reaches the string
         MonotoneCase{"grand", "checking", -1.5, 1.5}, MonotoneCase{"upright", "key_dip", -2, 2},
         MonotoneCase{"upright", "hammer_blow", -2, 2},
-        // 6.0 mm at +0.5 to 33 mm at +4. From 0 mm down the jack slides off the hammer butt
-        // before its toe reaches the button: let-off reads 4.55 mm whatever the button (README,
-        // Limits: the butt's jack face is short)
-        MonotoneCase{"upright", "let_off", 0.5, 4}, MonotoneCase{"upright", "checking", -4, 4},
-        MonotoneCase{"upright", "bridle", -2, 2},
+        // the jack–butt gap at rest, 2.66 mm at −2 to −0.035 mm at +0.5 (about 1.2 mm per mm of
+        // capstan); from about +0.25 mm the jack touches the butt and the reading is the felt's
+        // compression, −0.038 mm at +1
+        MonotoneCase{"upright", "lost_motion", -2, 1},
+        // 0.67 mm at −0.5 to 37 mm at +4 (about 5 mm per mm near regulation). From −0.75 mm the
+        // jack lifts the hammer into the string before its toe trips (0.36 mm whatever the
+        // button); from −1.5 mm the backcheck meets the rising tail before let-off
+        MonotoneCase{"upright", "let_off", -0.5, 4, 0.25},
+        // 32.8 mm at −3.6 to 13.5 mm at +0.4. From +0.5 mm the backcheck, carried up by the
+        // whippen as the forte key bottoms, meets the hammer just after the strike and takes more
+        // than a fifth of its speed: the reading falls to 2.6 mm (README, Limits)
+        MonotoneCase{"upright", "checking", -3.6, 0.4}, MonotoneCase{"upright", "bridle", -2, 2},
         // a fraction of the hammer travel, 0.87 at −0.5 to 0.03 at +0.375 (about 1 per mm of
         // spoon). From +0.5 mm the spoon already holds the damper at rest; below about −0.6 mm
         // it reaches the damper only after let-off (read as unmeasurable, not as a fraction)
-        MonotoneCase{"upright", "damper_lift", -0.5, 0.375, 0.125}),
-    // not here: upright lost_motion. The upright key is front-heavy for the load on its capstan
-    // (README, Limits): its back floats off the back rail and the key holds the jack against
-    // the butt whatever the capstan, so the jack–butt gap reads −0.0069 to −0.0065 mm for the
-    // capstan from −3 to +0.5 mm (then −0.037 to −0.053 mm up to +3 mm, the felt compressed).
+        MonotoneCase{"upright", "damper_lift", -0.375, 0.375, 0.125}),
     [](const auto& info) { return std::string(info.param.action) + "_" + info.param.setting; });
 
 // A damper spoon so far back that the damper lifts only after let-off (upright, −0.75 mm) is not
@@ -257,6 +263,56 @@ TEST(Regulation, LetOffBendsTheBackcheckBackWhenItStopsTheRisingHammer) {
     EXPECT_LE(std::abs(r.measured - r.target), r.tolerance) << r.name;
 }
 
+// The forte blow's catch (BackcheckCatch) on a made-up rebound: the hammer leaves the string at
+// 3 m/s. A backcheck that runs into the catcher and touches it for 1 ms without slowing it (a
+// brush, 4 mm from the string) is not the catch; the contact the hammer runs into is, read where
+// the gap closed (linear in the step: exact here, the gaps being linear in t).
+TEST(Regulation, ABrushOfTheBackcheckIsNotTheCatch) {
+  const double v = 3.0, dt = 1e-4;  // m/s away from the string; s per step
+  BackcheckCatch watch(0.0, 0.0, 1e-3);
+  double t = 0.0, gap = 0.0;
+  auto check_gap = [](double t) {  // m, linear in t: touching from 1.35 to 2.35 ms, and from 6.05
+    if (t < 3.5e-3) return std::abs(t - 1.85e-3) - 0.5e-3;
+    return 6.05e-3 - t;
+  };
+  bool caught = false;
+  for (int step = 1; step <= 100 && !caught; ++step) {
+    t = step * dt;
+    gap += (step <= 61 ? v : 0.1 * v) * dt;  // the second contact stops the hammer from 6.1 ms
+    // the backcheck closes the first contact, the hammer runs into it the second time
+    caught = watch.update(t, gap, check_gap(t), true, [t] { return t < 3.5e-3 ? 1.0 : 0.0; });
+    EXPECT_FALSE(caught && t < 6e-3) << "caught by the brush at t = " << t;
+  }
+  ASSERT_TRUE(caught);
+  // the contact closed at t = 6.05 ms, when the hammer was 3 m/s × 6.05 ms = 18.15 mm away
+  EXPECT_NEAR(watch.caught_gap(), v * 6.05e-3, 1e-9);
+}
+
+// On the shipped upright the whippen, flung off the capstan as a forte key bottoms, carries
+// the backcheck against the hammer right after the strike; the checking reading is where the
+// backcheck then catches the returning hammer, not that brush.
+TEST(Regulation, UprightCheckingIsReadWhereTheBackcheckHoldsTheHammer) {
+  const ActionModel upright = shipped("upright");
+  const RestState rest = find_rest_state(upright);
+  const double checking = measure_setting(upright, "checking", &rest);
+  const SimulationResult blow =
+      test::run(upright, "force:const:" + std::to_string(kForteBlowNewtons), 0.1, "cvode", 1e-7);
+  const auto force = blow.trace.column("hammer_catcher_backcheck_force_n");
+  const auto gap = blow.trace.column("hammer_string_gap_mm");
+  const auto impacts = test::events_of(blow, "impact");
+  ASSERT_FALSE(impacts.empty());
+  std::vector<double> touches;  // hammer–string distance (mm) where each contact begins
+  for (std::size_t i = 1; i < force.size(); ++i)
+    if (blow.trace.rows[i][0] > impacts[0]->t && force[i - 1] <= 0.0 && force[i] > 0.0)
+      touches.push_back(gap[i]);
+  ASSERT_GE(touches.size(), 2u);
+  std::printf("contacts begin at %.1f and %.1f mm; checking reads %.2f mm\n", touches[0],
+              touches[1], checking);
+  EXPECT_LT(touches[0], 8.0);  // the brush, close to the string
+  // the catch: the second contact, within the trace's sampling (1e-4 s at ≤ 4 m/s: 0.4 mm)
+  EXPECT_NEAR(checking, touches[1], 0.5);
+}
+
 // The bracketing search on settings measured at rest: from seeded random deregulated starts
 // (each adjuster off by up to ±2 mm) the grand's key dip and hammer blow converge to their
 // targets within tolerance.
@@ -282,17 +338,18 @@ TEST(Regulation, RestSettingsConvergeFromRandomDeregulatedStarts) {
 // Issue 3, must-show 2: from 20 seeded random deregulated starts (all seven adjusters off by up
 // to ±2 mm each) the grand regulates, every setting within its tolerance. Four quarters of five
 // starts (separate tests, so that ctest can spread them), each run over the cores.
-class GrandRandomStarts : public ::testing::TestWithParam<int> {};
-
-TEST_P(GrandRandomStarts, AllSevenSettingsConverge) {
-  const ActionModel base = shipped("grand");
+/// Regulates `kStarts` seeded random deregulated starts of the shipped `action` (every adjuster
+/// off by up to ±2 mm; the quarter picks the seed), both cores, and expects every one to reach
+/// every target.
+void expect_random_starts_converge(const std::string& action, int quarter) {
+  const ActionModel base = shipped(action);
 #ifdef PAT_SANITIZED_BUILD
   constexpr int kStarts = 1;  // the sanitizers look for memory errors, not for convergence
 #else
   constexpr int kStarts = 5;
 #endif
   std::vector<ActionModel> starts;
-  std::mt19937 random(20261121 + GetParam());
+  std::mt19937 random(20261121 + quarter);
   std::uniform_real_distribution<double> offset(-2e-3, 2e-3);
   for (int start = 0; start < kStarts; ++start) {
     ActionModel model = base;
@@ -304,7 +361,7 @@ TEST_P(GrandRandomStarts, AllSevenSettingsConverge) {
   run_parallel(kStarts, [&](std::size_t i) { results[i] = regulate(starts[i]); });
   for (int start = 0; start < kStarts; ++start) {
     const RegulationResult& result = results[start];
-    std::printf("quarter %d start %d: %s in %d passes, %.2f s\n", GetParam(), start,
+    std::printf("%s quarter %d start %d: %s in %d passes, %.2f s\n", action.c_str(), quarter, start,
                 result.converged ? "converged" : "NOT converged", result.passes,
                 result.wall_time_s);
     EXPECT_TRUE(result.converged) << "start " << start << ": " << result.message;
@@ -313,7 +370,19 @@ TEST_P(GrandRandomStarts, AllSevenSettingsConverge) {
   }
 }
 
+class GrandRandomStarts : public ::testing::TestWithParam<int> {};
+TEST_P(GrandRandomStarts, AllSevenSettingsConverge) {
+  expect_random_starts_converge("grand", GetParam());
+}
 INSTANTIATE_TEST_SUITE_P(Quarters, GrandRandomStarts, ::testing::Values(0, 1, 2, 3));
+
+// The same for the upright: its seven settings (blow, dip, lost motion, let-off, checking,
+// bridle, damper lift) from 20 seeded random deregulated starts.
+class UprightRandomStarts : public ::testing::TestWithParam<int> {};
+TEST_P(UprightRandomStarts, AllSevenSettingsConverge) {
+  expect_random_starts_converge("upright", GetParam());
+}
+INSTANTIATE_TEST_SUITE_P(Quarters, UprightRandomStarts, ::testing::Values(0, 1, 2, 3));
 
 // A target out of reach gives converged = false and a message naming the setting; nothing
 // throws. Unknown settings and out-of-range adjusters are InputErrors naming them.

@@ -131,15 +131,16 @@ TEST(RepetitionFacts, F4_GrandHalfStrokeStableWhenTheChirpRateIsHalved) {
 }
 
 TEST(RepetitionSweep, StepsModeFindsTheUprightLimitBetweenTwoFrequencies) {
-  // 11 Hz lies inside the upright's repetition range and 15 Hz above it (the shipped upright's
-  // chirp fails from about 14 Hz): the steps mode must pass the first and fail the second with
+  // 11 Hz lies inside the upright's repetition range and 19 Hz well above it (the shipped
+  // upright's chirp fails from about 13 Hz; steady sines of 13 and 17 Hz miss one strike in
+  // eight, 15 Hz none, 19 Hz three): the steps mode must pass the first and fail the second with
   // missed strikes (the jack has not reset under the butt when the key goes down again).
   const ActionModel upright = test::shipped("upright");
   SweepOptions o;
   o.mode = SweepMode::steps;
   o.f_start_hz = 11.0;
-  o.step_hz = 4.0;
-  o.f_max_hz = 15.0;
+  o.step_hz = 8.0;
+  o.f_max_hz = 19.0;
   std::vector<double> fractions;
   const SweepResult r = run_repetition_sweep(upright, o, [&](double f, const std::string&) {
     fractions.push_back(f);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "model/model_variations.h"
@@ -71,6 +72,19 @@ TEST(Touchweight, GrandIsInTheUsualRanges) {
   // strike weight of a mid-range hammer: Stanwood's table spans 3.5–14.8 g
   EXPECT_GT(r.strike_weight_g, 3.5);
   EXPECT_LT(r.strike_weight_g, 14.8);
+}
+
+TEST(Touchweight, UprightIsInTheUsualRanges) {
+  // fact F9's ranges (the domain notes give no separate ones for uprights): downweight 45–55 g,
+  // upweight 20–30 g. The butt spring carries most of the balance weight (parameters.md
+  // section 3: up to 17 g of downweight), the jack sliding under the butt most of the friction
+  const TouchweightResult r = measure_touchweight(test::shipped("upright"));
+  std::printf("upright: DW %.1f g, UW %.1f g, BW %.1f g, F %.1f g\n", r.downweight_g, r.upweight_g,
+              r.balance_weight_g, r.friction_weight_g);
+  EXPECT_GE(r.downweight_g, 45.0);
+  EXPECT_LE(r.downweight_g, 55.0);
+  EXPECT_GE(r.upweight_g, 20.0);
+  EXPECT_LE(r.upweight_g, 30.0);
 }
 
 TEST(Touchweight, StrongerRepetitionSpringMakesTheGrandLighter) {
