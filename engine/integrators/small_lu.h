@@ -6,11 +6,25 @@
 #pragma once
 
 #include <cmath>
+#include <type_traits>
 #include <utility>
 
 #include "core/types.h"
 
 namespace pat {
+
+/// Calls f(std::integral_constant<int, N>{}) with N = n, for 1 ≤ n ≤ kMaxDof (n below 1 is taken
+/// as 1, above kMaxDof as kMaxDof: callers check the range), so that loops over n unroll at
+/// compile time.
+template <int N = 1, class F>
+decltype(auto) with_fixed_size(int n, F&& f) {
+  if constexpr (N >= kMaxDof) {
+    return f(std::integral_constant<int, N>{});
+  } else {
+    if (n <= N) return f(std::integral_constant<int, N>{});
+    return with_fixed_size<N + 1>(n, std::forward<F>(f));
+  }
+}
 
 class SmallLu {
  public:
@@ -19,51 +33,17 @@ class SmallLu {
 
   /// Factors the leading n×n block of a. Returns false for an exactly singular matrix.
   bool compute(const Matrix& a, int n) {
-    switch (n) {
-      case 1:
-        return compute_fixed<1>(a);
-      case 2:
-        return compute_fixed<2>(a);
-      case 3:
-        return compute_fixed<3>(a);
-      case 4:
-        return compute_fixed<4>(a);
-      case 5:
-        return compute_fixed<5>(a);
-      case 6:
-        return compute_fixed<6>(a);
-      case 7:
-        return compute_fixed<7>(a);
-      case 8:
-        return compute_fixed<8>(a);
-      default:
-        n_ = 0;
-        return false;
+    if (n < 1 || n > kMaxDof) {
+      n_ = 0;
+      return false;
     }
+    return with_fixed_size(n, [&](auto size) { return compute_fixed<size.value>(a); });
   }
 
   /// Solves A x = b in place on the first n entries of b.
   void solve_in_place(Vector& b) const {
-    switch (n_) {
-      case 1:
-        return solve_fixed<1>(b);
-      case 2:
-        return solve_fixed<2>(b);
-      case 3:
-        return solve_fixed<3>(b);
-      case 4:
-        return solve_fixed<4>(b);
-      case 5:
-        return solve_fixed<5>(b);
-      case 6:
-        return solve_fixed<6>(b);
-      case 7:
-        return solve_fixed<7>(b);
-      case 8:
-        return solve_fixed<8>(b);
-      default:
-        return;
-    }
+    if (n_ < 1) return;
+    with_fixed_size(n_, [&](auto size) { solve_fixed<size.value>(b); });
   }
 
  private:

@@ -149,32 +149,8 @@ void WMethod2::evaluate_jacobian(std::uint64_t regime) {
 void WMethod2::factor(double h) {
   const double hg = kGamma * h;
   if (use_schur_) {
-    switch (dofs_) {
-      case 1:
-        schur_factor<1>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 2:
-        schur_factor<2>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 3:
-        schur_factor<3>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 4:
-        schur_factor<4>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 5:
-        schur_factor<5>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 6:
-        schur_factor<6>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      case 7:
-        schur_factor<7>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-      default:
-        schur_factor<8>(jacobian_, hg, hg_a_q_, lu_schur_);
-        break;
-    }
+    with_fixed_size(
+        dofs_, [&](auto size) { schur_factor<size.value>(jacobian_, hg, hg_a_q_, lu_schur_); });
   } else {
     lu_full_.compute(StateMatrix::Identity(dim_, dim_) - hg * jacobian_);
   }
@@ -186,24 +162,9 @@ void WMethod2::factor(double h) {
 void WMethod2::solve(const StateVector& r, StateVector& x) {
   if (use_schur_) {
     const double hg = kGamma * factored_h_;
-    switch (dofs_) {
-      case 1:
-        return schur_solve<1>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 2:
-        return schur_solve<2>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 3:
-        return schur_solve<3>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 4:
-        return schur_solve<4>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 5:
-        return schur_solve<5>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 6:
-        return schur_solve<6>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      case 7:
-        return schur_solve<7>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-      default:
-        return schur_solve<8>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
-    }
+    with_fixed_size(dofs_, [&](auto size) {
+      schur_solve<size.value>(lu_schur_, hg_a_q_, hg, r, schur_rhs_, x);
+    });
   } else {
     x = lu_full_.solve(r);
   }
