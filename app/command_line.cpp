@@ -8,7 +8,8 @@
 namespace pat::app {
 
 CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
-                         const std::set<std::string>& flags) {
+                         const std::set<std::string>& flags,
+                         const std::set<std::string>& list_options) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (flags.count(arg)) {
@@ -16,6 +17,9 @@ CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::stri
     } else if (value_options.count(arg)) {
       if (i + 1 >= args.size()) throw InputError("option " + arg + " needs a value");
       values_[arg].push_back(args[++i]);
+      if (list_options.count(arg))
+        while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0)
+          values_[arg].push_back(args[++i]);
     } else if (arg.rfind("--", 0) == 0 && arg.find('=') != std::string::npos &&
                value_options.count(arg.substr(0, arg.find('=')))) {
       values_[arg.substr(0, arg.find('='))].push_back(arg.substr(arg.find('=') + 1));

@@ -1,5 +1,6 @@
 // A small command-line reader for the headless subcommands: "--name value" options, repeatable
-// options and flags, with messages that say which option is wrong.
+// options, list options ("--measured a.csv b.csv", values up to the next "--" option) and flags,
+// with messages that say which option is wrong.
 #pragma once
 
 #include <map>
@@ -11,9 +12,11 @@ namespace pat::app {
 
 class CommandLine {
  public:
-  /// `value_options` take a value, `flags` do not; anything else is an error.
+  /// `value_options` take a value, `flags` do not; a value option also in `list_options` takes
+  /// every following argument up to the next one that starts with "--" (at least one). Anything
+  /// else is an error.
   CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
-              const std::set<std::string>& flags);
+              const std::set<std::string>& flags, const std::set<std::string>& list_options = {});
 
   bool has(const std::string& option) const;
   /// The last value of an option; throws InputError when a required one is missing.

@@ -65,7 +65,7 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
 int run_diagnose(const std::vector<std::string>& args) {
   const CommandLine cl(
       args, {"--action", "--measured", "--report", "--candidate", "--threads", "--set", "--plot"},
-      {"--json"});
+      {"--json"}, {"--measured"});
   const ActionModel model = load_configured_action(cl);
   std::vector<MeasuredTrial> trials;
   for (const std::string& path : cl.values("--measured"))

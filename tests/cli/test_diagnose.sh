@@ -41,6 +41,13 @@ for f in diagnosis.json ranking.csv phases.csv mass_traces.csv sine_traces.csv; 
   [[ -s "report/$f" ]] || fail "diagnose --report: no $f"
 done
 
+# DESIGN.md's form, "--measured CSV...": several files after one option read as the repeated form
+"$exe" diagnose --action grand --measured mass.csv sine.csv --candidate repetition_spring \
+  --candidate joint_friction.hammer --json >d2.json || fail "diagnose --measured A B failed"
+grep -q '"effect": "repetition_spring"' d2.json || fail "--measured A B: the spring is not named"
+[[ "$(grep '"baseline_rms_deg"' d.json)" == "$(grep '"baseline_rms_deg"' d2.json)" ]] ||
+  fail "--measured A B: baseline differs from --measured A --measured B (not both files read?)"
+
 # bad input
 expect_failure() {
   local what="$1" expected="$2"
@@ -53,6 +60,8 @@ expect_failure() {
 printf 'time_s,key_angle_deg\n0,0\n' >nohammer.csv
 expect_failure "missing column" "missing column 'hammer_angle_deg'" \
   diagnose --action grand --measured nohammer.csv
+expect_failure "list option without a file" "option --measured needs a value" \
+  diagnose --action grand --measured
 expect_failure "wrong action" "but the upright action was requested" \
   diagnose --action upright --measured mass.csv
 expect_failure "unknown effect" "unknown effect 'wobble'" \
