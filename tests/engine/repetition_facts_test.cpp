@@ -93,9 +93,11 @@ void expect_stable_when_rate_halved(std::size_t i) {
 
 /// Why the grand's F4 tests skip (README, Limits).
 constexpr const char* kGrandF4NotReproduced =
-    "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand the full "
-    "stroke repeats to about 17.9 Hz and the half stroke only to about 13.2 Hz; stronger springs "
-    "(jack -38, repetition -45 N mm) give 17.5 and 19.9 Hz";
+    "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand the half "
+    "stroke repeats only to about 13.2 Hz (the jack, still tripped, carries the returning "
+    "knuckle) and the full stroke to about 16.5 Hz from 11 Hz; jack and repetition springs "
+    "strong enough for 19.9 Hz at half stroke (-38, -45 N mm) break the drop's response to its "
+    "screw and the regulation from random starts";
 
 TEST(RepetitionFacts, F4_UprightFullStrokeAbout11To13Hz) {
   expect_in_f4_range(0);
