@@ -113,6 +113,19 @@ std::optional<QPointF> ActionView::key_front_on_screen() const {
   return to_screen(self->body_point(model_->landmarks.key, model_->landmarks.key_front));
 }
 
+double ActionView::rest_aspect(const ActionModel& model) {
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  auto include = [&](const Vec2& p) {
+    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
+    y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
+  };
+  for (const Body& b : model.bodies)
+    for (const Vec2& p : b.outline) include(p);
+  for (const Fixture& f : model.fixtures)
+    for (const Vec2& p : f.outline) include(p);
+  return x1 > x0 && y1 > y0 ? (y1 - y0) / (x1 - x0) : 0.5;
+}
+
 void ActionView::fit() {
   if (!frame_ || width() <= 0 || height() <= 0) return;
   double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;

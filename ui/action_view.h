@@ -38,6 +38,10 @@ class ActionView : public QWidget {
   const Frame* frame() const { return frame_ ? &*frame_ : nullptr; }
   QSize sizeHint() const override { return {640, 420}; }
 
+  /// Height over width of the action drawn at rest (every body outline and fixture): about 0.4
+  /// for a grand, 0.7 for an upright, whose action stands above the key's back end.
+  static double rest_aspect(const ActionModel& model);
+
  signals:
   /// The key played with the mouse: angle (rad from rest, positive down).
   void keyPlayed(double angle_rad);

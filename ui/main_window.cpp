@@ -18,8 +18,10 @@
 #include <QShortcut>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <exception>
 
 #include "action_view.h"
@@ -63,15 +65,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       "background: #c0392b; color: white; font-weight: bold; padding: 6px; font-size: 11pt;");
   banner_->hide();
   column->addWidget(banner_);
-  auto* split = new QSplitter(Qt::Vertical, central);
-  view_ = new ActionView(split);
-  plots_ = new PlotStack(split);
-  split->addWidget(view_);
-  split->addWidget(plots_);
-  split->setStretchFactor(0, 1);
-  split->setStretchFactor(1, 1);
-  split->setSizes({330, 370});
-  column->addWidget(split, 1);
+  split_ = new QSplitter(Qt::Vertical, central);
+  view_ = new ActionView(split_);
+  plots_ = new PlotStack(split_);
+  split_->addWidget(view_);
+  split_->addWidget(plots_);
+  split_->setStretchFactor(0, 1);
+  split_->setStretchFactor(1, 1);
+  split_->setSizes({330, 370});
+  column->addWidget(split_, 1);
   setCentralWidget(central);
 
   regulation_ = new RegulationPanel;
@@ -379,8 +381,24 @@ void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {
   model_ = model;
   regulation_->set_model(*model);
   plots_->set_model(*model);
+  fit_split_to_action(*model);
   view_->reset_view();
   start(run_controls_->input_form()->spec());
+}
+
+void MainWindow::fit_split_to_action(const ActionModel& model) {
+  // once the window is laid out (the first time, the splitter has no height yet)
+  const double aspect = ActionView::rest_aspect(model);
+  QTimer::singleShot(0, this, [this, aspect] {
+    const int total = split_->height();
+    if (total <= 0) return;
+    // the view drawn at the width it has, within 45-55 % of the height: the plots stay readable
+    const double wanted = aspect * view_->width();
+    const int view_height = static_cast<int>(std::clamp(wanted, 0.45 * total, 0.55 * total));
+    split_->setSizes({view_height, total - view_height});
+    view_->reset_view();
+    if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
+  });
 }
 
 void MainWindow::open_action(const std::string& name_or_path) {
@@ -403,6 +421,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
   // the whole panel visible without a horizontal scroll bar
   regulation_scroll_->setMinimumWidth(regulation_->sizeHint().width() + 24);
   plots_->set_model(*model);
+  fit_split_to_action(*model);
   view_->reset_view();
   setWindowTitle(tr("Piano Action Trainer — %1").arg(QString::fromStdString(model->name)));
   QSettings().setValue("last_preset", QString::fromStdString(name_or_path));

@@ -19,6 +19,7 @@ class QLabel;
 class QProgressBar;
 class QPushButton;
 class QScrollArea;
+class QSplitter;
 
 namespace pat {
 struct DeregulationResult;
@@ -101,8 +102,12 @@ class MainWindow : public QMainWindow {
   void build_practice();
   void practise_on(std::shared_ptr<const ActionModel> model);
   void end_practice();
+  /// Shares the height between the action view and the plots by the action's shape: a tall
+  /// upright gets more of it than a flat grand.
+  void fit_split_to_action(const ActionModel& model);
 
   PlaybackController* controller_;
+  QSplitter* split_;
   ActionView* view_;
   PlotStack* plots_;
   RegulationPanel* regulation_;
