@@ -43,6 +43,7 @@ class TreeLdl {
     for (int k = n_ - 1; k >= 0; --k) {
       const double d = m(k, k);
       if (!(d > 0.0)) return false;
+      if (parent_[k] < 0) continue;  // a joint on the frame: nothing to eliminate
       const double inverse_d = 1.0 / d;
       for (int i = parent_[k]; i >= 0; i = parent_[i]) {
         const double a = m(k, i) * inverse_d;
