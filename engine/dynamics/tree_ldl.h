@@ -61,6 +61,24 @@ class TreeLdl {
     for (int i = 0; i < n_; ++i)                        // L x = z
       for (int j = parent_[i]; j >= 0; j = parent_[j]) b[i] -= factor(i, j) * b[j];
   }
+  /// solve() on each of the first `columns` columns of b (n rows), in one pass over the tree: the
+  /// same operations in the same order for every column, so the same results bit for bit.
+  void solve_columns(const SmallMatrix& factor, SmallMatrix& b, int columns) const {
+    for (int i = n_ - 1; i >= 0; --i)  // Lᵀ Y = B
+      for (int j = parent_[i]; j >= 0; j = parent_[j]) {
+        const double l = factor(i, j);
+        for (int c = 0; c < columns; ++c) b(j, c) -= l * b(i, c);
+      }
+    for (int i = 0; i < n_; ++i) {  // Z = D⁻¹ Y
+      const double d = factor(i, i);
+      for (int c = 0; c < columns; ++c) b(i, c) /= d;
+    }
+    for (int i = 0; i < n_; ++i)  // L X = Z
+      for (int j = parent_[i]; j >= 0; j = parent_[j]) {
+        const double l = factor(i, j);
+        for (int c = 0; c < columns; ++c) b(i, c) -= l * b(j, c);
+      }
+  }
   /// factor_in_place, then solve; b is unchanged when m is not positive definite.
   bool solve_in_place(SmallMatrix& m, SmallVector& b) const {
     if (!factor_in_place(m)) return false;
