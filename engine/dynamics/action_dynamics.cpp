@@ -266,25 +266,33 @@ void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector
   mass_.setZero();
   forces_.setZero();
 
+  // the arrays by pointer and their sizes as locals: every store into forces_ and mass_ (doubles)
+  // would otherwise make the compiler reload the vectors' data pointers and sizes
+  const BodyConstants* const bodies = bodies_.data();
+  const BodyKinematics* const kin = kin_.data();
+  double* const forces = forces_.data();
+  const int n = n_;
+
   // inertia, bias and gravity of each body (M: lower triangle; chains list descendants first)
-  for (int k = 0; k < n_; ++k) {
-    const BodyConstants& b = bodies_[k];
-    const BodyKinematics& kk = kin_[k];
+  const Vec2 gravity = model_.gravity;
+  for (int k = 0; k < n; ++k) {
+    const BodyConstants& b = bodies[k];
+    const BodyKinematics& kk = kin[k];
     const Vec2 r = rotate(b.com_offset, kk.cos, kk.sin);
     const Vec2 c = kk.origin + r;
     const Vec2 bias = kk.origin_bias_acceleration - kk.omega * kk.omega * r;
-    const Vec2 load = b.mass * (model_.gravity - bias);
+    const Vec2 load = b.mass * (gravity - bias);
     if (b.chain_length == 1) {  // a body on the frame (most of them): one joint
       const Vec2 arm = c - kk.origin;
-      forces_[k] += cross2(arm, load);
+      forces[k] += cross2(arm, load);
       mass_(k, k) += b.inertia + b.mass * arm.dot(arm);
       continue;
     }
     Vec2 arm[kMaxDof];  // c − o_i along the chain
     for (int a = 0; a < b.chain_length; ++a) {
       const int i = b.chain[a];
-      arm[a] = c - kin_[i].origin;
-      forces_[i] += cross2(arm[a], load);
+      arm[a] = c - kin[i].origin;
+      forces[i] += cross2(arm[a], load);
     }
     for (int a = 0; a < b.chain_length; ++a) {
       for (int e = a; e < b.chain_length; ++e) {
@@ -296,23 +304,29 @@ void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector
 
   // joint springs, joint friction, settling damping
   for (const JointSpring& spring : model_.springs)
-    forces_[spring.body] += spring.preload - spring.stiffness * q[spring.body];
-  for (int k = 0; k < n_; ++k) {
-    forces_[k] += joint_friction_torque(bodies_[k].friction, v[k]);
-    forces_[k] -= settling_damping_ * v[k];
+    forces[spring.body] += spring.preload - spring.stiffness * q[spring.body];
+  const double settling = settling_damping_;
+  for (int k = 0; k < n; ++k) {
+    forces[k] += joint_friction_torque(bodies[k].friction, v[k]);
+    forces[k] -= settling * v[k];
   }
 
   // intermittent felt contacts
-  regime_ = 0;
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    const ContactConstants& contact = contacts_[c];
-    const ContactPatch& patch = patches_[c];
-    if (!touching_[c]) {
+  std::uint64_t regime = 0;
+  const ContactConstants* const contacts = contacts_.data();
+  const ContactPatch* const patches = patches_.data();
+  const char* const touching = touching_.data();
+  const Contact* const laws = model_.contacts.data();
+  const std::size_t count = contacts_.size();
+  for (std::size_t c = 0; c < count; ++c) {
+    if (!touching[c]) {
       if (readings) (*readings)[c] = ContactReading{};
       continue;
     }
-    regime_ |= std::uint64_t{1} << (c & 63);
-    const Contact& law = model_.contacts[c];
+    const ContactConstants& contact = contacts[c];
+    const ContactPatch& patch = patches[c];
+    regime |= std::uint64_t{1} << (c & 63);
+    const Contact& law = laws[c];
     const Vec2 relative =
         velocity_at(contact.body_a, patch.point) - velocity_at(contact.body_b, patch.point);
     const double rate = -patch.normal.dot(relative);
@@ -333,6 +347,7 @@ void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector
       reading.normal = patch.normal;
     }
   }
+  regime_ = regime;
 
   // tension-only straps
   for (std::size_t s = 0; s < model_.straps.size(); ++s) {
@@ -377,9 +392,11 @@ DofMatrix ActionDynamics::assembled_mass() const {
 void ActionDynamics::expand(double t, const StateVector& y, DofVector& q, DofVector& v) const {
   q.resize(n_);
   v.resize(n_);
-  for (int i = 0; i < free_count_; ++i) {
-    q[free_index_[i]] = y[i];
-    v[free_index_[i]] = y[free_count_ + i];
+  const int* const free_index = free_index_.data();  // not reloaded after each store below
+  const int free_count = free_count_;
+  for (int i = 0; i < free_count; ++i) {
+    q[free_index[i]] = y[i];
+    v[free_index[i]] = y[free_count + i];
   }
   if (key_prescribed_) {
     const KeyMotionSample m = input_->motion(t);
@@ -408,10 +425,13 @@ void ActionDynamics::rhs(double t, const StateVector& y, StateVector& dydt) {
     assemble(finger, scratch_q_, scratch_v_, nullptr, nullptr);
     solve_accelerations(t, scratch_acceleration_);
   }
-  dydt.resize(2 * free_count_);
-  dydt.head(free_count_) = y.tail(free_count_);
-  for (int i = 0; i < free_count_; ++i)
-    dydt[free_count_ + i] = scratch_acceleration_[free_index_[i]];
+  const int* const free_index = free_index_.data();
+  const int free_count = free_count_;
+  dydt.resize(2 * free_count);
+  for (int i = 0; i < free_count; ++i) {
+    dydt[i] = y[free_count + i];
+    dydt[free_count + i] = scratch_acceleration_[free_index[i]];
+  }
 }
 
 void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
@@ -420,18 +440,20 @@ void ActionDynamics::solve_accelerations(double t, DofVector& acceleration) {
   SmallVector rhs;
   double key_acc = 0.0;
   if (key_prescribed_) key_acc = input_->motion(t).acceleration;  // M_ff q̈_f = f_f − M_fk q̈_k
-  for (int i = 0; i < free_count_; ++i) {
-    const int ji = free_index_[i];
+  const int* const free_index = free_index_.data();  // not reloaded after each store below
+  const int free_count = free_count_;
+  for (int i = 0; i < free_count; ++i) {
+    const int ji = free_index[i];
     rhs[i] = key_prescribed_ ? forces_[ji] - mass_entry(ji, key_) * key_acc : forces_[ji];
     factor_(i, i) = mass_(ji, ji);
     for (int j = tree_.parent(i); j >= 0; j = tree_.parent(j))
-      factor_(i, j) = mass_(ji, free_index_[j]);
+      factor_(i, j) = mass_(ji, free_index[j]);
   }
   // a non-positive-definite M (never for a valid model) gives NaN, which the integrators report
   // as a failure
   factor_valid_ = tree_.solve_in_place(factor_, rhs);
   if (!factor_valid_) rhs.setConstant(std::nan(""));
-  for (int i = 0; i < free_count_; ++i) acceleration[free_index_[i]] = rhs[i];
+  for (int i = 0; i < free_count; ++i) acceleration[free_index[i]] = rhs[i];
   if (key_prescribed_) acceleration[key_] = key_acc;
 }
 

@@ -179,9 +179,10 @@ class ActionDynamics : public OdeSystem {
                        SmallVector& generalized) const {
     if (body < 0) return;
     const BodyConstants& b = bodies_[body];
+    const BodyKinematics* const kin = kin_.data();  // not reloaded after each store below
     for (int c = 0; c < b.chain_length; ++c) {
       const int j = b.chain[c];
-      generalized[j] += cross2(point - kin_[j].origin, force);
+      generalized[j] += cross2(point - kin[j].origin, force);
     }
   }
   /// Adds ∂(v_A(P) − v_B(P))/∂q̇ (a = body_a, b = body_b; P a world point) to the rows gx, gy.

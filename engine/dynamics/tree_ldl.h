@@ -13,7 +13,8 @@
 // then M x = b is  Lᵀ y = b (leaves to roots), z = D⁻¹ y, L x = z (roots to leaves). For the grand
 // action (key, whippen + jack + repetition lever, hammer, damper: four independent chains) that is
 // two eliminations and six divisions, against a dense 6×6 Cholesky's 56 multiply-adds, six square
-// roots and six divisions. Plain loops over the parent array; only the lower triangle is read.
+// roots and six divisions. Plain loops over the list of (joint, ancestor) pairs, precomputed from
+// the parent array (a joint on the frame costs only its division); only the lower triangle is read.
 #pragma once
 
 #include "core/types.h"
@@ -32,33 +33,81 @@ class TreeLdl {
   void set_tree(const int* parent, int n) {
     n_ = n;
     for (int i = 0; i < n; ++i) parent_[i] = parent[i];
+    // the (joint, ancestor) pairs, joints from the leaves down and each joint's ancestors nearest
+    // first (the order of the eliminations and of Lᵀ y = b), then joints from the roots up (the
+    // order of L x = z); a joint's pairs are consecutive, from first_pair_
+    pair_count_ = 0;
+    for (int k = n - 1; k >= 0; --k) {
+      first_pair_[k] = pair_count_;
+      for (int i = parent[k]; i >= 0; i = parent[i]) {
+        joint_of_pair_[pair_count_] = k;
+        ancestor_of_pair_[pair_count_++] = i;
+      }
+      pairs_of_[k] = pair_count_ - first_pair_[k];
+    }
+    int next = 0;
+    for (int k = 0; k < n; ++k)
+      for (int p = 0; p < pairs_of_[k]; ++p) rising_pair_[next++] = first_pair_[k] + p;
   }
   int size() const { return n_; }
   int parent(int i) const { return parent_[i]; }
 
   /// Factors the tree entries of the lower triangle of m (row ≥ column; entries off the tree's
   /// pattern are not read) in place into L (below the diagonal) and D (on it). False if m is not
-  /// positive definite (a pivot D_k ≤ 0).
+  /// positive definite (a pivot D_k ≤ 0). The pairs only: a joint without ancestors eliminates
+  /// nothing, and its pivot is checked at the end.
   bool factor_in_place(SmallMatrix& m) const {
-    for (int k = n_ - 1; k >= 0; --k) {
-      const double d = m(k, k);
+    for (int p = 0; p < pair_count_;) {
+      const int k = joint_of_pair_[p];
+      const double d = m(k, k);  // final: k's descendants were eliminated before it
       if (!(d > 0.0)) return false;
       const double inverse_d = 1.0 / d;
-      for (int i = parent_[k]; i >= 0; i = parent_[i]) {
+      for (const int end = p + pairs_of_[k]; p < end; ++p) {
+        const int i = ancestor_of_pair_[p];
         const double a = m(k, i) * inverse_d;
-        for (int j = i; j >= 0; j = parent_[j]) m(i, j) -= a * m(k, j);
+        m(i, i) -= a * m(k, i);
+        for (int q = first_pair_[i], q_end = q + pairs_of_[i]; q < q_end; ++q) {
+          const int j = ancestor_of_pair_[q];
+          m(i, j) -= a * m(k, j);
+        }
         m(k, i) = a;
       }
     }
+    for (int k = 0; k < n_; ++k)
+      if (!(m(k, k) > 0.0)) return false;
     return true;
   }
   /// Solves M x = b in place on b with a factor from factor_in_place.
   void solve(const SmallMatrix& factor, SmallVector& b) const {
-    for (int i = n_ - 1; i >= 0; --i)  // Lᵀ y = b
-      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[j] -= factor(i, j) * b[i];
+    for (int p = 0; p < pair_count_; ++p) {  // Lᵀ y = b
+      const int i = joint_of_pair_[p], j = ancestor_of_pair_[p];
+      b[j] -= factor(i, j) * b[i];
+    }
     for (int i = 0; i < n_; ++i) b[i] /= factor(i, i);  // z = D⁻¹ y
-    for (int i = 0; i < n_; ++i)                        // L x = z
-      for (int j = parent_[i]; j >= 0; j = parent_[j]) b[i] -= factor(i, j) * b[j];
+    for (int r = 0; r < pair_count_; ++r) {             // L x = z
+      const int p = rising_pair_[r];
+      const int i = joint_of_pair_[p], j = ancestor_of_pair_[p];
+      b[i] -= factor(i, j) * b[j];
+    }
+  }
+  /// solve() on each of the first `columns` columns of b (n rows), in one pass over the tree: the
+  /// same operations in the same order for every column, so the same results bit for bit.
+  void solve_columns(const SmallMatrix& factor, SmallMatrix& b, int columns) const {
+    for (int p = 0; p < pair_count_; ++p) {  // Lᵀ Y = B
+      const int i = joint_of_pair_[p], j = ancestor_of_pair_[p];
+      const double l = factor(i, j);
+      for (int c = 0; c < columns; ++c) b(j, c) -= l * b(i, c);
+    }
+    for (int i = 0; i < n_; ++i) {  // Z = D⁻¹ Y
+      const double d = factor(i, i);
+      for (int c = 0; c < columns; ++c) b(i, c) /= d;
+    }
+    for (int r = 0; r < pair_count_; ++r) {  // L X = Z
+      const int p = rising_pair_[r];
+      const int i = joint_of_pair_[p], j = ancestor_of_pair_[p];
+      const double l = factor(i, j);
+      for (int c = 0; c < columns; ++c) b(i, c) -= l * b(j, c);
+    }
   }
   /// factor_in_place, then solve; b is unchanged when m is not positive definite.
   bool solve_in_place(SmallMatrix& m, SmallVector& b) const {
@@ -68,8 +117,13 @@ class TreeLdl {
   }
 
  private:
+  static constexpr int kMaxPairs = kMaxDof * (kMaxDof - 1) / 2;  // a chain
   int n_ = 0;
   int parent_[kMaxDof] = {};
+  int pair_count_ = 0;
+  int joint_of_pair_[kMaxPairs] = {}, ancestor_of_pair_[kMaxPairs] = {};
+  int first_pair_[kMaxDof] = {}, pairs_of_[kMaxDof] = {};
+  int rising_pair_[kMaxPairs] = {};  ///< pair indices, joints from the roots up
 };
 
 }  // namespace pat

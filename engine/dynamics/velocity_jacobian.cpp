@@ -115,15 +115,15 @@ bool ActionDynamics::velocity_jacobian(StateMatrix& jacobian) {
     subtract_outer(k_v, strap.damping, j_s, j_s, n_);
   }
 
-  // A_v = M_ff⁻¹ K_v,ff column by column with the factor of the latest rhs()
+  // A_v = M_ff⁻¹ K_v,ff with the factor of the latest rhs(), all columns in one pass
   const int m = free_count_;
-  for (int column = 0; column < m; ++column) {
-    const int joint = free_index_[column];
-    SmallVector x;
-    for (int i = 0; i < m; ++i) x[i] = k_v(free_index_[i], joint);
-    tree_.solve(factor_, x);
-    for (int i = 0; i < m; ++i) jacobian(m + i, m + column) = x[i];
-  }
+  const int* const free_index = free_index_.data();
+  SmallMatrix x;
+  for (int column = 0; column < m; ++column)
+    for (int i = 0; i < m; ++i) x(i, column) = k_v(free_index[i], free_index[column]);
+  tree_.solve_columns(factor_, x, m);
+  for (int column = 0; column < m; ++column)
+    for (int i = 0; i < m; ++i) jacobian(m + i, m + column) = x(i, column);
   return true;
 }
 
