@@ -6,7 +6,6 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
-#include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
 #include "regulation/technician_tests.h"
@@ -120,7 +119,6 @@ std::vector<Observation> slow_press_test(const ActionModel& model, const RestSta
 
 std::vector<Observation> forte_blow_test(const ActionModel& model, const RestState& rest,
                                          ProgressReporter* progress) {
-  const ActionLandmarks& marks = model.landmarks;
   // the technician's forte blow (technician_tests.h): the same steps read the same catch
   const SimulationOptions options = forte_blow_options();
   std::shared_ptr<const KeyInput> input = parse_input_spec(
@@ -128,10 +126,7 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
   Simulator sim(borrow(model), input, options, &rest);
   int strikes = 0;
   double impact_velocity = 0.0, caught_gap = NAN;
-  BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
-                             -sim.contact_penetrations()[marks.check_contact]);
-  ActionDynamics dynamics(model, nullptr);  // for the backcheck's share of a closing
-  DofVector q_before = sim.q();
+  SimulatedBackcheckCatch catch_watch(model, sim);
   std::string stop;
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds)) {
@@ -143,14 +138,8 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
         if (strikes == 0) impact_velocity = e->hammer_velocity;
         ++strikes;
       }
-    const auto share = [&] {
-      return closing_share_of_body_b(dynamics, model, marks.check_contact, q_before, sim.q());
-    };
-    if (std::isnan(caught_gap) &&
-        catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()),
-                           -sim.contact_penetrations()[marks.check_contact], strikes > 0, share))
+    if (std::isnan(caught_gap) && catch_watch.update(sim, strikes > 0))
       caught_gap = catch_watch.caught_gap();
-    q_before = sim.q();
     if (progress) {
       progress->partial(sim.time() / kForteHoldSeconds, "forte blow");
       progress->throw_if_cancelled();

@@ -183,6 +183,11 @@ bool BackcheckCatch::update(double t, double gap, double check_gap, bool struck,
   return false;
 }
 
+namespace {
+
+/// The part (0–1) of a contact gap's closing from `before` to `after` that is due to the motion
+/// of its body B (the backcheck's side) and B's ancestors: the gap with them held at `before`,
+/// against the gap's whole change. 0 when the gap did not close.
 double closing_share_of_body_b(ActionDynamics& dynamics, const ActionModel& model, int contact,
                                const DofVector& before, const DofVector& after) {
   std::vector<double> penetration;
@@ -197,6 +202,25 @@ double closing_share_of_body_b(ActionDynamics& dynamics, const ActionModel& mode
   dynamics.contact_penetrations(held, penetration);
   const double gap_held = -penetration[contact];
   return std::clamp((gap_held - gap_after) / (gap_before - gap_after), 0.0, 1.0);
+}
+
+}  // namespace
+
+SimulatedBackcheckCatch::SimulatedBackcheckCatch(const ActionModel& model, Simulator& sim)
+    : model_(model),
+      dynamics_(std::make_unique<ActionDynamics>(model, nullptr)),
+      watch_(sim.time(), sim.hammer_string_gap(sim.q()),
+             -sim.contact_penetrations()[model.landmarks.check_contact]) {}
+
+SimulatedBackcheckCatch::~SimulatedBackcheckCatch() = default;
+
+bool SimulatedBackcheckCatch::update(Simulator& sim, bool struck) {
+  const int check = model_.landmarks.check_contact;
+  const auto share = [&] {
+    return closing_share_of_body_b(*dynamics_, model_, check, sim.previous_q(), sim.q());
+  };
+  return watch_.update(sim.time(), sim.hammer_string_gap(sim.q()),
+                       -sim.contact_penetrations()[check], struck, share);
 }
 
 SimulationOptions forte_blow_options() {
@@ -214,19 +238,14 @@ SimulationOptions forte_blow_options() {
 }
 
 ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
-  const ActionLandmarks& marks = model.landmarks;
   const SimulationOptions options = forte_blow_options();
   const InputContext context = input_context(model, rest);
   std::shared_ptr<const KeyInput> input =
       parse_input_spec("force:const:" + std::to_string(kForteBlowNewtons), context);
   Simulator sim(borrow(model), input, options, &rest);
-  auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
   ForteBlowReading reading;
   bool struck = false;
-  BackcheckCatch catch_watch(sim.time(), sim.hammer_string_gap(sim.q()),
-                             gap_of(marks.check_contact));
-  ActionDynamics dynamics(model, nullptr);  // for the backcheck's share of a closing
-  DofVector q_before = sim.q();
+  SimulatedBackcheckCatch catch_watch(model, sim);
   while (sim.time() < kForteHoldSeconds) {
     if (!sim.step(kForteHoldSeconds))
       throw std::runtime_error("the forte blow stopped at t = " + std::to_string(sim.time()) +
@@ -240,15 +259,10 @@ ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
     }
     // caught: the hammer's tail (catcher) meets the backcheck on its way back from the string
     // (not brushed by it)
-    const auto share = [&] {
-      return closing_share_of_body_b(dynamics, model, marks.check_contact, q_before, sim.q());
-    };
-    if (catch_watch.update(sim.time(), sim.hammer_string_gap(sim.q()), gap_of(marks.check_contact),
-                           struck, share)) {
+    if (catch_watch.update(sim, struck)) {
       reading.checked_gap = catch_watch.caught_gap();
       return reading;
     }
-    q_before = sim.q();
   }
   if (!struck) throw std::runtime_error("in a forte blow the hammer never reaches the string");
   throw std::runtime_error("after a forte blow the backcheck never catches the hammer");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <memory>
 #include <stdexcept>
 
 #include "model/action_model.h"
@@ -12,6 +13,7 @@
 namespace pat {
 
 class ActionDynamics;
+class Simulator;
 
 /// Signed gap of contact `contact` at q (m): > 0 apart (the distance still to close), < 0 when
 /// the parts overlap (minus the penetration). Same geometry as the dynamics (contact_geometry.h).
@@ -99,11 +101,24 @@ class BackcheckCatch {
   double caught_gap_ = 0.0;
 };
 
-/// The part (0–1) of a contact gap's closing from `before` to `after` that is due to the motion
-/// of its body B (the backcheck's side) and B's ancestors: the gap with them held at `before`,
-/// against the gap's whole change. 0 when the gap did not close.
-double closing_share_of_body_b(ActionDynamics& dynamics, const ActionModel& model, int contact,
-                               const DofVector& before, const DofVector& after);
+/// BackcheckCatch fed by a running simulation: after each step it reads the hammer–string and
+/// check gaps and, on the step that closes the check contact, the backcheck's share of that
+/// closing (from the step's start, Simulator::previous_q(), to its end). Used by every procedure
+/// that reads the forte blow's catch, so that they read the same one.
+class SimulatedBackcheckCatch {
+ public:
+  SimulatedBackcheckCatch(const ActionModel& model, Simulator& sim);
+  ~SimulatedBackcheckCatch();
+  /// After each step; `struck`: the hammer has reached the string. True once caught.
+  bool update(Simulator& sim, bool struck);
+  /// m, valid once update() returned true.
+  double caught_gap() const { return watch_.caught_gap(); }
+
+ private:
+  const ActionModel& model_;
+  std::unique_ptr<ActionDynamics> dynamics_;  ///< for the backcheck's share of a closing
+  BackcheckCatch watch_;
+};
 
 /// The simulation options of the forte blow (also for other procedures that must read the same
 /// catch, e.g. the practice mode's observations).
