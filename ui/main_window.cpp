@@ -395,9 +395,7 @@ void MainWindow::fit_split_to_action(const ActionModel& model) {
     // the view drawn at the width it has, within 45-55 % of the height: the plots stay readable
     const double wanted = aspect * view_->width();
     const int view_height = static_cast<int>(std::clamp(wanted, 0.45 * total, 0.55 * total));
-    split_->setSizes({view_height, total - view_height});
-    view_->reset_view();
-    if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
+    split_->setSizes({view_height, total - view_height});  // the view refits as it is resized
   });
 }
 
