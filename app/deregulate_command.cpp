@@ -73,6 +73,7 @@ int run_deregulate(const std::vector<std::string>& args) {
           {{"t_s", s.t},
            {"adjuster_mm", s.adjuster_mm},
            {"measured", std::isfinite(s.measured) ? nlohmann::json(s.measured) : nullptr},
+           {"blow_mm", std::isfinite(s.blow_mm) ? nlohmann::json(s.blow_mm) : nullptr},
            {"hammer_string_gap_mm", s.hammer_string_gap_mm},
            {"whippen_angle_deg", s.whippen_angle_deg}});
     nlohmann::json out{{"status", result.status},
@@ -87,7 +88,8 @@ int run_deregulate(const std::vector<std::string>& args) {
               << " mm/s, key at " << options.frequency_hz << " Hz\n";
     for (const DeregulationSample& s : result.samples)
       std::cout << "  t " << s.t << " s  adjuster " << s.adjuster_mm << " mm  measured "
-                << s.measured << "  whippen " << s.whippen_angle_deg << " deg\n";
+                << s.measured << "  blow " << s.blow_mm << " mm  whippen " << s.whippen_angle_deg
+                << " deg\n";
     std::cout << result.status << " at t = " << result.stop_t << " s"
               << (result.stop_cause.empty() ? "" : ": " + result.stop_cause) << "\n";
     if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";

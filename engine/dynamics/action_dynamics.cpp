@@ -258,6 +258,22 @@ void ActionDynamics::contact_penetration_bounds(const DofVector& q,
   for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = distances_[c].penetration;
 }
 
+bool ActionDynamics::behind_face_end(std::size_t c, const DofVector& q) {
+  const Contact& closed = model_.contacts[c];
+  if (!closed.closed_start && !closed.closed_end) return false;
+  const ContactConstants& contact = contacts_[c];
+  update_positions(q);
+  Vec2 local = place(contact.body_a, contact.center_a);
+  if (contact.body_b >= 0) {
+    const BodyKinematics& kb = kin_[contact.body_b];
+    local = rotate(local - kb.origin, kb.cos, -kb.sin);
+  }
+  const Vec2 rel = local - contact.start;
+  const double t = rel.dot(contact.direction) * contact.inverse_length2;
+  return contact.normal.dot(rel) < 0.0 &&
+         ((t < 0.0 && closed.closed_start) || (t > 1.0 && closed.closed_end));
+}
+
 void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector& v,
                               std::vector<ContactReading>* readings,
                               std::vector<double>* tensions) {

@@ -90,6 +90,12 @@ class ActionDynamics : public OdeSystem {
   /// bound of its penetration instead (negative, m). Enough for what needs the signs only (events,
   /// the unphysical-penetration check), and cheaper.
   void contact_penetration_bounds(const DofVector& q, std::vector<double>& penetration);
+  /// Whether contact c's circle lies behind the line of B's face (m·(p − s0) < 0) beyond one of
+  /// the face's closed ends (t* < 0 with closed_start, t* > 1 with closed_end), at q. A circle
+  /// pressed into the face that ends up there has gone round an end that A's body cannot pass
+  /// without crossing B (action_model.h); the model has no contact for what meets then (A's
+  /// flank, B's corner), so the simulator stops the run there.
+  bool behind_face_end(std::size_t c, const DofVector& q);
 
   /// Mass matrix at q (the point mass of a mass input included).
   DofMatrix mass_matrix(const DofVector& q);

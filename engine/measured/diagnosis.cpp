@@ -255,6 +255,10 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   double all_cost = inf;
   w.all_s = levenberg_marquardt(ev, base, p, parabola_start(w, all, best_k), all, all_cost,
                                 kMaxLmIterations);
+  // the parabola's vertex can lie where the model stops (a contact turns unphysical) although
+  // both scan points beside it run: then start from the best scan point, which ran
+  if (!std::isfinite(all_cost))
+    w.all_s = levenberg_marquardt(ev, base, p, w.scan_s[best_k], all, all_cost, kMaxLmIterations);
   int second_k = -1;
   double second = inf;
   for (int k = 0; k < kScanPoints; ++k) {

@@ -94,6 +94,11 @@ struct Contact {
   FeltLaw law;
   ContactFriction friction;
   double max_penetration = 3e-3;  ///< beyond this the run stops as unphysical, m
+  /// CircleSegment with sharp corners: ends of B's face that A's body cannot go round without
+  /// crossing B (the jack's top leaving the repetition lever's window over its front wall drags
+  /// the jack's flank through the wall). A circle pressed into the face that comes to lie behind
+  /// the face's line past such an end stops the run as unphysical.
+  bool closed_start = false, closed_end = false;
 };
 
 /// A torsional spring on one joint (between a body and its parent):

@@ -232,6 +232,16 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
         r.fail(path + ".segment_mm", "the segment has no length");
       contact.segment_normal = r.unit(item, path, "normal");
       contact.radius_b = r.nonnegative(item, path, "corner_radius_mm", 0.0) * kMm;
+      if (r.optional(item, "closed_end")) {
+        const std::string closed = r.text(item, path, "closed_end");
+        if (closed != "start" && closed != "end" && closed != "both")
+          r.fail(path + ".closed_end",
+                 "unknown end '" + closed + "' (expected start, end or both: segment_mm[0], [1])");
+        if (contact.radius_b > 0.0)
+          r.fail(path + ".closed_end", "a hybrid contact's corners are rounded, none is closed");
+        contact.closed_start = closed != "end";
+        contact.closed_end = closed != "start";
+      }
     } else {
       r.fail(path + ".shape",
              "unknown shape '" + shape + "' (expected circle_circle, circle_segment or hybrid)");

@@ -41,6 +41,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   const double interval = options.step_interval_s > 0.0 ? options.step_interval_s : 0.01;
   double value = start_value;
   double measured = measure_setting(model, options.setting, &rest);
+  double blow_mm = measure_setting(model, "hammer_blow", &rest);
   const double period = 1.0 / options.frequency_hz;
   int next_cycle = 1;
   double next_row = 0.0;
@@ -79,6 +80,11 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       } catch (const std::exception&) {
         measured = std::nan("");  // cannot be measured there (e.g. the jack never escapes)
       }
+      try {
+        blow_mm = measure_setting(*moved, "hammer_blow", &rest);
+      } catch (const std::exception&) {
+        blow_mm = std::nan("");
+      }
     }
     // one sample per key cycle, at its top (key back at rest)
     if (t >= next_cycle * period - 1e-12) {
@@ -86,6 +92,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       sample.t = t;
       sample.adjuster_mm = value * 1e3;
       sample.measured = measured;
+      sample.blow_mm = blow_mm;
       sample.hammer_string_gap_mm = sim.hammer_string_gap(sim.q()) * 1e3;
       sample.whippen_angle_deg = whippen >= 0 ? model.bodies[whippen].trace_sign *
                                                     deg(sim.q()[whippen] - sim.rest().q[whippen])

@@ -28,16 +28,20 @@ struct DeregulationSample {
   double t = 0.0;            ///< s
   double adjuster_mm = 0.0;  ///< adjuster position at t
   double measured = 0.0;     ///< the setting measured (its unit) on the action at that position
+  /// hammer–string distance at rest (mm) at that position: the blow, whatever the setting (on
+  /// the upright the key pilot is the lost-motion capstan, which shrinks the blow once the jack
+  /// lifts the butt)
+  double blow_mm = 0.0;
   double hammer_string_gap_mm = 0.0;  ///< dynamic: gap at the top of the key cycle
   double whippen_angle_deg = 0.0;     ///< dynamic: whippen angle at the top of the key cycle
 };
 
 struct DeregulationResult {
-  std::string status;     ///< "stopped" (unphysical contact, cancel) or "ok" (duration reached)
-  double stop_t = 0.0;    ///< s
+  std::string status;   ///< "stopped" (unphysical contact, cancel) or "ok" (duration reached)
+  double stop_t = 0.0;  ///< s
   std::string stop_cause;
   std::vector<DeregulationSample> samples;  ///< one per key cycle
-  CsvTable trace;  ///< simulate's trace columns plus adjuster_mm
+  CsvTable trace;                           ///< simulate's trace columns plus adjuster_mm
 };
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options);

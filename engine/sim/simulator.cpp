@@ -137,6 +137,17 @@ void Simulator::check_penetrations() {
            format_number(contact.max_penetration * 1e3) + " mm");
       return;
     }
+    // pressed into a face (or its corner) at the step's start, behind the face's line past its
+    // end at the step's end: A went round the end of B's face into B (action_dynamics.h)
+    if (penetration_[c] > 0.0 && dynamics_->behind_face_end(c, q1_)) {
+      const Contact& contact = model.contacts[c];
+      const std::string a = part_name(model, contact.body_a);
+      const std::string b = part_name(model, contact.body_b);
+      stop("unphysical penetration in contact '" + contact.name + "' (" + a + " into " + b +
+           "): the " + a + ", pressed into the " + b + "'s face, went past its end and passes " +
+           "through the " + b);
+      return;
+    }
   }
 }
 

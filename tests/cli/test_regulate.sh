@@ -58,6 +58,8 @@ for key in ("stop_t_s", "stop_cause", "samples"):
 m = [s["measured"] for s in r["samples"] if s["measured"] is not None]
 assert m[-1] < m[0] - 5, "the blow did not shrink: %r" % m
 assert r["stop_cause"] and "penetration" in r["stop_cause"], r["stop_cause"]
+assert "jack" in r["stop_cause"] and "repetition lever" in r["stop_cause"], r["stop_cause"]
+assert all(s["blow_mm"] is not None for s in r["samples"]), "a sample without its blow"
 print("ok: deregulate: blow %.1f -> %.1f mm, stopped at %.2f s (%s)" % (m[0], m[-1], r["stop_t_s"], r["stop_cause"]))
 PY
 [[ "$(awk '!/^#/ { print; exit }' d.csv)" == *adjuster_mm* ]] || { echo "FAIL: d.csv has no adjuster_mm column" >&2; exit 1; }

@@ -12,6 +12,7 @@
 #include "dynamics/action_dynamics.h"
 #include "dynamics/contact_geometry.h"
 #include "integrators/integrator_factory.h"
+#include "sim/static_equilibrium.h"
 #include "test_support.h"
 
 namespace pat {
@@ -204,6 +205,38 @@ TEST(Dynamics, MemoizedPositionsGiveTheSameEvaluationAsAFreshObject) {
     for (std::size_t c = 0; c < model.contacts.size(); ++c)
       EXPECT_EQ(second.contacts[c].normal_force, fresh_reading.contacts[c].normal_force);
   }
+}
+
+// A circle pressed into a face that goes round one of its closed ends lies behind the face's line
+// past that end (action_dynamics.h); the simulator stops there. The grand's jack top against the
+// repetition lever's window (upper end closed): at rest and tripped short of the window it is in
+// front; swung 40 degrees it is above the window's upper end, behind it. Past the open lower end,
+// or on a contact without closed ends, nothing is reported.
+TEST(ContactPassThrough, AJackSwungOverTheLeverWindowIsBehindItsClosedEnd) {
+  ActionModel grand = test::shipped("grand");
+  const int window = grand.contact_index("jack–repetition lever window");
+  const int jack = grand.body_index("jack");
+  const int lever = grand.body_index("lever");
+  ASSERT_GE(window, 0);
+  ASSERT_TRUE(grand.contacts[window].closed_end);
+  ASSERT_FALSE(grand.contacts[window].closed_start);
+  const DofVector rest = find_rest_state(grand).q;
+  {
+    ActionDynamics dynamics(grand, nullptr);
+    DofVector q = rest;
+    EXPECT_FALSE(dynamics.behind_face_end(window, q));
+    q[jack] += 10.0 * kPi / 180.0;  // tripped: its top 5 mm nearer the window, 2.5 mm short
+    EXPECT_FALSE(dynamics.behind_face_end(window, q));
+    q[lever] += 10.0 * kPi / 180.0;  // the lever pushed down: the window's top below the jack's
+    q[jack] += 10.0 * kPi / 180.0;   // and the jack's top past the window's front face
+    EXPECT_TRUE(dynamics.behind_face_end(window, q));
+  }
+  grand.contacts[window].closed_end = false;  // an open end: going round it is allowed
+  ActionDynamics dynamics(grand, nullptr);
+  DofVector q = rest;
+  q[lever] += 10.0 * kPi / 180.0;
+  q[jack] += 20.0 * kPi / 180.0;
+  EXPECT_FALSE(dynamics.behind_face_end(window, q));
 }
 
 }  // namespace

@@ -152,6 +152,16 @@ TEST(PresetErrors, UnknownFeltLaw) {
   expect_preset_error(preset, {"contacts[0]", "felt", "unknown felt law", "velvet"});
 }
 
+TEST(PresetErrors, ClosedEndNamesTheChoicesAndRefusesRoundedCorners) {
+  json preset = preset_json("grand");
+  preset["contacts"][0]["closed_end"] = "middle";
+  expect_preset_error(preset, {"contacts[0]", "closed_end", "unknown end 'middle'", "start, end"});
+  preset = preset_json("grand");
+  for (json& contact : preset["contacts"])
+    if (contact["shape"] == "hybrid") contact["closed_end"] = "both";
+  expect_preset_error(preset, {"closed_end", "rounded"});
+}
+
 TEST(PresetErrors, UnsupportedSchema) {
   json preset = preset_json("grand");
   preset["schema"] = 2;

@@ -411,30 +411,55 @@ TEST(Regulation, ImpossibleAndUnknownSettingsAreReported) {
   EXPECT_THROW(with_adjuster(shipped("grand"), "let_off", 9e-3), InputError);
 }
 
-// Live deregulation (paper 7.2): screwing the capstan (key pilot) up at 1 mm/s while the key
-// plays at 3 Hz shrinks the grand's blow and raises its whippen, until a contact becomes
-// unphysical; moving the upright's blow adjuster shrinks its blow.
-TEST(Regulation, DeregulatingTheHammerBlowShrinksItAndRaisesTheWhippen) {
-  GTEST_SKIP() << "Known model limit (README, Limits): the grand deregulation stops at 2.1 s "
-                  "(capstan 2 mm up, blow 21 mm) on the jack toe sliding past the let-off button, "
-                  "not at about 4 s on the jack penetrating the repetition lever (paper 7.2)";
+// Live deregulation (fact F7, paper 7.2): screwing the key pilot (capstan) up 0.5 mm every 0.5 s
+// while the key plays at 3 Hz shrinks the blow and raises the whippen, until the jack, pressed
+// against the repetition lever's window, goes past the window's edge: the run stops there with
+// that cause. The upright's key pilot is its lost-motion capstan: once the jack lifts the butt,
+// screwing it up shrinks the blow and raises the whippen too.
+TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
   DeregulationOptions options;
   options.setting = "hammer_blow";
   options.rate_mm_per_s = 1.0;
-  options.duration_s = 3.0;
+  options.duration_s = 4.0;
   const DeregulationResult grand = deregulate(shipped("grand"), options);
   ASSERT_GE(grand.samples.size(), 3u);
+  // 0.5 mm of capstan takes about 6 mm off the grand's blow; 5 mm is over two such turns
   EXPECT_LT(grand.samples.back().measured, grand.samples.front().measured - 5.0);
+  EXPECT_NEAR(grand.samples.back().blow_mm, grand.samples.back().measured, 1e-9);
+  // 0.5 degree: a millimetre of capstan turns the whippen by about a degree
   EXPECT_GT(grand.samples.back().whippen_angle_deg, grand.samples.front().whippen_angle_deg + 0.5);
   EXPECT_EQ(grand.status, "stopped");
-  // the cause names the contact and both parts
-  EXPECT_NE(grand.stop_cause.find("unphysical penetration"), std::string::npos) << grand.stop_cause;
-  EXPECT_NE(grand.stop_cause.find("jack"), std::string::npos) << grand.stop_cause;
+  EXPECT_LT(grand.stop_t, options.duration_s);  // stopped by the contact, not by the clock
+  const std::string& cause = grand.stop_cause;
+  EXPECT_NE(cause.find("unphysical penetration"), std::string::npos) << cause;
+  EXPECT_NE(cause.find("jack–repetition lever window"), std::string::npos) << cause;
+  EXPECT_NE(cause.find("(jack into lever)"), std::string::npos) << cause;
 
+  options.setting = "lost_motion";
   options.duration_s = 2.5;
   const DeregulationResult upright = deregulate(shipped("upright"), options);
   ASSERT_GE(upright.samples.size(), 3u);
+  EXPECT_EQ(upright.status, "ok") << upright.stop_cause;
+  // 2 mm of capstan: the jack takes up the 0.3 mm of lost motion, then lifts the butt (about
+  // 8 mm of blow per mm of capstan); 10 mm and 1 degree leave room for either
+  EXPECT_LT(upright.samples.back().blow_mm, upright.samples.front().blow_mm - 10.0);
+  EXPECT_GT(upright.samples.back().whippen_angle_deg,
+            upright.samples.front().whippen_angle_deg + 1.0);
+}
+
+// The upright's blow adjuster is its hammer rest rail: moving it toward the strings shortens the
+// blow without lifting the whippen (it opens lost motion instead).
+TEST(Regulation, DeregulatingTheUprightHammerRailShrinksTheBlowAlone) {
+  DeregulationOptions options;
+  options.setting = "hammer_blow";
+  options.rate_mm_per_s = 1.0;
+  options.duration_s = 2.5;
+  const DeregulationResult upright = deregulate(shipped("upright"), options);
+  ASSERT_GE(upright.samples.size(), 3u);
+  // 2 mm of rail at about 2 mm of blow per mm at the head (head radius over rail radius)
   EXPECT_LT(upright.samples.back().measured, upright.samples.front().measured - 3.0);
+  EXPECT_NEAR(upright.samples.back().whippen_angle_deg, upright.samples.front().whippen_angle_deg,
+              0.1);  // 0.1 degree: the rail does not touch the whippen's chain
 }
 
 }  // namespace
