@@ -120,9 +120,10 @@ SetResult evaluate_set(Evaluator& ev, const ActionModel& base, const Parameter& 
 
 /// Levenberg–Marquardt on one parameter with a forward-difference Jacobian of the residual
 /// vector (a small LM of our own: for p = 1 the normal equations are scalars).
+/// `blocked` (when given) tells whether a step was refused because the model stopped there.
 double levenberg_marquardt(Evaluator& ev, const ActionModel& base, const Parameter& p, double s0,
                            const std::vector<std::size_t>& set, double& cost_out,
-                           int max_iterations) {
+                           int max_iterations, bool* blocked = nullptr) {
   const double range = p.hi - p.lo;
   const double spacing = range / (kScanPoints - 1);  // the scan found the basin to this
   double s = s0;
@@ -151,6 +152,7 @@ double levenberg_marquardt(Evaluator& ev, const ActionModel& base, const Paramet
       step = std::clamp(step, -spacing, spacing);  // a trust region: the scan's spacing
       const double s_new = std::clamp(s + step, p.lo, p.hi);
       SetResult trial = evaluate_set(ev, base, p, s_new, set);
+      if (!trial.ok && blocked) *blocked = true;
       if (trial.ok && trial.cost < at.cost) {
         s = s_new;
         at = std::move(trial);
@@ -192,6 +194,34 @@ double parabola_start(const CandidateWork& w, const std::vector<std::size_t>& se
   if (curvature <= 0.0) return w.scan_s[k];
   const double offset = 0.5 * h * (c[0] - c[2]) / curvature;
   return w.scan_s[k] + std::clamp(offset, -h, h);
+}
+
+/// Start of the local fit on every trial: the best of a finer scan (kFineScanPoints between each
+/// pair of scan points) across the best scan point's two intervals, or the parabola's vertex when
+/// that is better. A contact-switching simulation's cost can be jagged on the scale of the scan's
+/// spacing (a spring factor that decides whether the backcheck holds the hammer between two
+/// blows: a minimum a tenth of a spacing wide), where a local fit from the vertex ends in a side
+/// dip.
+double fine_scan_start(Evaluator& ev, const ActionModel& base, const CandidateWork& w,
+                       const std::vector<std::size_t>& set, int k) {
+  const Parameter& p = w.param;
+  double best_s = parabola_start(w, set, k);
+  double best = evaluate_set(ev, base, p, best_s, set).cost;
+  if (best_s != w.scan_s[k]) {
+    double at_k = 0.0;
+    for (std::size_t j : set) at_k += w.scan_rss[k][j];
+    if (at_k < best) best = at_k, best_s = w.scan_s[k];
+  }
+  for (int side : {-1, 1}) {
+    const int nb = k + side;
+    if (nb < 0 || nb >= static_cast<int>(w.scan_s.size())) continue;
+    for (int i = 1; i <= kFineScanPoints; ++i) {
+      const double s = w.scan_s[k] + (w.scan_s[nb] - w.scan_s[k]) * i / (kFineScanPoints + 1);
+      const double cost = evaluate_set(ev, base, p, s, set).cost;
+      if (cost < best) best = cost, best_s = s;
+    }
+  }
+  return best_s;
 }
 
 /// The scan of a candidate over its physical range (every trial at every scan point).
@@ -253,12 +283,17 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   // best one whose cost is within kSecondBasinRatio of it) gets its own local fit: the cost of
   // a contact-switching simulation has local minima.
   double all_cost = inf;
-  w.all_s = levenberg_marquardt(ev, base, p, parabola_start(w, all, best_k), all, all_cost,
-                                kMaxLmIterations);
-  // the parabola's vertex can lie where the model stops (a contact turns unphysical) although
-  // both scan points beside it run: then start from the best scan point, which ran
-  if (!std::isfinite(all_cost))
-    w.all_s = levenberg_marquardt(ev, base, p, w.scan_s[best_k], all, all_cost, kMaxLmIterations);
+  const double fine_start = fine_scan_start(ev, base, w, all, best_k);
+  bool blocked = false;
+  w.all_s = levenberg_marquardt(ev, base, p, fine_start, all, all_cost, kMaxLmIterations, &blocked);
+  // the model may stop (a contact turns unphysical) between the finer scan's best point and the
+  // minimum, which the local fit cannot cross: then the best scan point gets its own local fit
+  if (blocked && fine_start != w.scan_s[best_k]) {
+    double scan_start_cost = inf;
+    const double from_scan =
+        levenberg_marquardt(ev, base, p, w.scan_s[best_k], all, scan_start_cost, kMaxLmIterations);
+    if (scan_start_cost < all_cost) w.all_s = from_scan, all_cost = scan_start_cost;
+  }
   int second_k = -1;
   double second = inf;
   for (int k = 0; k < kScanPoints; ++k) {

@@ -6,9 +6,9 @@
 // Fitting: each candidate has one parameter s (log of the value for factors, frequencies and
 // stiffnesses; mm for regulation offsets). The cost of a set of trials is Σ over trials of the
 // aligned residual Σ r² (the offsets re-estimated at every s: variable projection). A scan of
-// kScanPoints values over the physical range finds the basin, then Levenberg–Marquardt
-// (forward-difference Jacobian of the residual vector) refines it from the vertex of the
-// parabola through the best scan point and its neighbours.
+// kScanPoints values over the physical range finds the basin, a finer scan (kFineScanPoints
+// between the best point and each neighbour) narrows it, then Levenberg–Marquardt
+// (forward-difference Jacobian of the residual vector) refines it from the best point found.
 //
 // Screening: every candidate is scanned; only the kRefinedCandidates with the lowest scan cost
 // are fitted locally and validated (the others are listed with their best scan point).
@@ -39,6 +39,7 @@
 namespace pat {
 
 inline constexpr int kScanPoints = 9;
+inline constexpr int kFineScanPoints = 3;             // between scan points, beside the best one
 inline constexpr std::size_t kRefinedCandidates = 4;  // fitted and validated after the scan
 inline constexpr int kMaxLmIterations = 4;            // the fit on every trial
 inline constexpr int kFoldLmIterations = 2;           // each leave-one-out refit, from that fit
