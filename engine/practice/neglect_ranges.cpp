@@ -57,10 +57,11 @@ const std::vector<NeglectRange> kUpright = {
     {"let_off", 0.1, 0.25, +1,
      "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈5 mm/mm "
      "(0.67 mm at −0.5 mm, 5.9 mm at +0.5 mm)"},
-    {"checking", 0.15, 0.35, -1,
-     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−5.6 mm/mm (18.8 mm "
-     "at −0.5 mm); from about +0.4 mm the backcheck, carried up by the whippen as a forte key "
-     "bottoms, meets the hammer just after the strike and holds it a few mm from the string"},
+    {"checking", 0.25, 0.5, -1,
+     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−3.9 mm/mm (16.95 mm "
+     "at −0.25 mm, 15.03 mm at +0.25 mm, so that under 0.25 mm the catch moves by less than the "
+     "1 mm an eye follows on a moving hammer); from about +0.75 mm the backcheck holds the hammer "
+     "so near the string that a held forte blow strikes twice"},
     {"bridle", 1.0, 2.5, +1,
      "bridle tapes stretch or are mis-hooked: slack is not specified numerically [JG], a few mm "
      "is visible. Model: 1.0 mm/mm"},

@@ -145,18 +145,22 @@ INSTANTIATE_TEST_SUITE_P(
         // the lower end of the backcheck's face and is never caught; from +1.75 mm the face
         // stops the rising tail and the hammer never reaches the string
         MonotoneCase{"grand", "checking", -1.5, 1.5}, MonotoneCase{"upright", "key_dip", -2, 2},
-        MonotoneCase{"upright", "hammer_blow", -2, 2},
-        // the jack–butt gap at rest, 2.66 mm at −2 to −0.035 mm at +0.5 (about 1.2 mm per mm of
+        // 48.13 mm at −1 to 41.74 mm at +2 (about 2.1 mm of blow per mm of rail). From about
+        // −1.35 mm the butt comes down on the jack (the 0.3 mm of lost motion used up) and the
+        // jack, not the rail, holds the hammer (48.88 mm at −1.5 and at −2): the regulation
+        // screws the capstan down first (clear_first)
+        MonotoneCase{"upright", "hammer_blow", -1, 2},
+        // the jack–butt gap at rest, 2.64 mm at −2 to −0.035 mm at +0.5 (about 1.2 mm per mm of
         // capstan); from about +0.25 mm the jack touches the butt and the reading is the felt's
         // compression, −0.038 mm at +1
         MonotoneCase{"upright", "lost_motion", -2, 1},
-        // 0.67 mm at −0.5 to 37 mm at +4 (about 5 mm per mm near regulation). From −0.75 mm the
-        // jack lifts the hammer into the string before its toe trips (0.36 mm whatever the
-        // button); from −1.5 mm the backcheck meets the rising tail before let-off
+        // 0.23 mm at −0.5 to 36.8 mm at +4 (about 5 mm per mm near regulation). At −0.5 mm
+        // the jack already lifts the hammer into the string before its toe trips (0.23 mm, the
+        // same at −0.75 whatever the button); from −1 mm the slow press reads no let-off
         MonotoneCase{"upright", "let_off", -0.5, 4, 0.25},
-        // 32.8 mm at −3.6 to 13.5 mm at +0.4. From +0.5 mm the backcheck, carried up by the
-        // whippen as the forte key bottoms, meets the hammer just after the strike and takes more
-        // than a fifth of its speed: the reading falls to 2.6 mm (README, Limits)
+        // 41.3 mm at −3.6 to 14.4 mm at +0.4. Beyond, the reading goes on falling (13.9 mm at
+        // +0.5, 10.6 mm at +1.25), but from about +0.75 mm the backcheck holds the hammer so near
+        // the string that the forte blow, key held, strikes twice
         MonotoneCase{"upright", "checking", -3.6, 0.4}, MonotoneCase{"upright", "bridle", -2, 2},
         // a fraction of the hammer travel, 0.87 at −0.5 to 0.03 at +0.375 (about 1 per mm of
         // spoon). From +0.5 mm the spoon already holds the damper at rest; below about −0.6 mm

@@ -133,16 +133,18 @@ TEST(RepetitionFacts, F4_GrandHalfStrokeStableWhenTheChirpRateIsHalved) {
 }
 
 TEST(RepetitionSweep, StepsModeFindsTheUprightLimitBetweenTwoFrequencies) {
-  // 11 Hz lies inside the upright's repetition range and 19 Hz well above it (the shipped
-  // upright's chirp fails from about 13 Hz; steady sines of 13 and 17 Hz miss one strike in
-  // eight, 15 Hz none, 19 Hz three): the steps mode must pass the first and fail the second with
-  // missed strikes (the jack has not reset under the butt when the key goes down again).
+  // 11 Hz lies inside the upright's repetition range and 22 Hz well above it (the shipped
+  // upright's chirp fails from about 13.4 Hz; steady sines started from rest pass their window
+  // at 14–15 and 19–20 Hz, where other responses coexist, and miss one to three strikes in
+  // eleven cycles at 16–18 Hz and seven at 22 Hz): the steps mode must pass the first and fail
+  // the second with missed strikes (the jack has not reset under the butt when the key goes
+  // down again).
   const ActionModel upright = test::shipped("upright");
   SweepOptions o;
   o.mode = SweepMode::steps;
   o.f_start_hz = 11.0;
-  o.step_hz = 8.0;
-  o.f_max_hz = 19.0;
+  o.step_hz = 11.0;
+  o.f_max_hz = 22.0;
   std::vector<double> fractions;
   const SweepResult r = run_repetition_sweep(upright, o, [&](double f, const std::string&) {
     fractions.push_back(f);
