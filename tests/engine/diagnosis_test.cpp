@@ -162,10 +162,9 @@ INSTANTIATE_TEST_SUITE_P(Seeds, NullDiagnosis, ::testing::Values(101, 102, 103))
 // and its closest rival as candidates (to keep the suite's time reasonable; the full library runs
 // in `pianoaction bench-diagnose`). A seed passes when the diagnosis names the hidden family,
 // estimates its value within 25 % and gains at least 50 % on held-out trials. Required: at least
-// two of the four seeds of every family, which is what the diagnosis reaches today (README,
-// Limits: 2 of 4 for the shank flex and the repetition spring, whose hidden values decide whether
-// the backcheck holds the hammer between the blows; 3 or 4 of 4 for the others). The issue asks
-// for every seed.
+// three of the four seeds of every family. Today 23 of the 24 pass (README, Limits): the miss is
+// the backcheck compliance's seed 2, where the backcheck's bend (regulation_offset.checking)
+// fits better. The issue asks for every seed.
 struct HiddenCase {
   std::string effect;
   std::vector<std::string> rivals;
@@ -192,7 +191,7 @@ TEST_P(HiddenEffect, IsNamedEstimatedAndGainsForMostSeeds) {
                 100.0 * o.diagnosis.gain, o.passed ? "passed" : "failed");
     passed += o.passed ? 1 : 0;
   }
-  EXPECT_GE(passed, 2) << c.effect << ": " << passed << " of " << kSeeds << " seeds";
+  EXPECT_GE(passed, 3) << c.effect << ": " << passed << " of " << kSeeds << " seeds";
 }
 INSTANTIATE_TEST_SUITE_P(
     Families, HiddenEffect,
