@@ -11,6 +11,19 @@
 #include "sim/static_equilibrium.h"
 
 namespace pat {
+namespace {
+
+/// The setting measured at `rest`, or NaN where it cannot be (e.g. the jack never escapes).
+double measured_or_nan(const ActionModel& model, const std::string& setting,
+                       const RestState* rest) {
+  try {
+    return measure_setting(model, setting, rest);
+  } catch (const std::exception&) {
+    return std::nan("");
+  }
+}
+
+}  // namespace
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options) {
   const int setting_index = model.setting_index(options.setting);
@@ -40,8 +53,10 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   // the adjuster moves in steps (the paper's screw turns) or, continuously, every 10 ms
   const double interval = options.step_interval_s > 0.0 ? options.step_interval_s : 0.01;
   double value = start_value;
+  // the blow at rest goes with every sample; it is the measurement itself when that is the setting
+  const bool setting_is_blow = options.setting == "hammer_blow";
   double measured = measure_setting(model, options.setting, &rest);
-  double blow_mm = measure_setting(model, "hammer_blow", &rest);
+  double blow_mm = setting_is_blow ? measured : measure_setting(model, "hammer_blow", &rest);
   const double period = 1.0 / options.frequency_hz;
   int next_cycle = 1;
   double next_row = 0.0;
@@ -80,11 +95,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       } catch (const std::exception&) {
         measured = std::nan("");  // cannot be measured there (e.g. the jack never escapes)
       }
-      try {
-        blow_mm = measure_setting(*moved, "hammer_blow", &rest);
-      } catch (const std::exception&) {
-        blow_mm = std::nan("");
-      }
+      blow_mm = setting_is_blow ? measured : measured_or_nan(*moved, "hammer_blow", &rest);
     }
     // one sample per key cycle, at its top (key back at rest)
     if (t >= next_cycle * period - 1e-12) {

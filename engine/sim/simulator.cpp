@@ -37,8 +37,12 @@ void Simulator::restart_integrator() {
   }
   dynamics_ = std::make_unique<ActionDynamics>(*model_, input_.get());
   penetration_limit_.clear();
-  for (const Contact& contact : model_->contacts)
+  closed_end_contacts_.clear();
+  for (std::size_t c = 0; c < model_->contacts.size(); ++c) {
+    const Contact& contact = model_->contacts[c];
     penetration_limit_.push_back(contact.max_penetration);
+    if (contact.closed_start || contact.closed_end) closed_end_contacts_.push_back(c);
+  }
   dynamics_->set_key_rest_angle(rest_.q[model_->landmarks.key]);
   integrator_ = make_integrator(options_.integrator, options_.integrator_options);
   integrator_->initialize(*dynamics_, t1_, dynamics_->compress(q1_, v1_));
@@ -137,8 +141,10 @@ void Simulator::check_penetrations() {
            format_number(contact.max_penetration * 1e3) + " mm");
       return;
     }
-    // pressed into a face (or its corner) at the step's start, behind the face's line past its
-    // end at the step's end: A went round the end of B's face into B (action_dynamics.h)
+  }
+  // pressed into a face (or its corner) at the step's start, behind the face's line past a
+  // closed end at the step's end: A went round the end of B's face into B (action_dynamics.h)
+  for (std::size_t c : closed_end_contacts_) {
     if (penetration_[c] > 0.0 && dynamics_->behind_face_end(c, q1_)) {
       const Contact& contact = model.contacts[c];
       const std::string a = part_name(model, contact.body_a);

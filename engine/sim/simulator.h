@@ -101,8 +101,9 @@ class Simulator {
   // for the events and the limit check; contact_penetrations() makes them exact on demand)
   std::vector<double> penetration_;
   bool penetration_exact_ = false;
-  std::vector<double> next_penetration_;   // scratch: at the end of the step being taken
-  std::vector<double> penetration_limit_;  // each contact's max_penetration, m
+  std::vector<double> next_penetration_;          // scratch: at the end of the step being taken
+  std::vector<double> penetration_limit_;         // each contact's max_penetration, m
+  std::vector<std::size_t> closed_end_contacts_;  // contacts with a closed face end
   bool stopped_ = false;
   std::string stop_cause_;
   std::vector<SimEvent> events_;

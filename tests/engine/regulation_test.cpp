@@ -415,17 +415,25 @@ TEST(Regulation, ImpossibleAndUnknownSettingsAreReported) {
   EXPECT_THROW(with_adjuster(shipped("grand"), "let_off", 9e-3), InputError);
 }
 
+// The paper's live deregulation (7.2): `setting`'s adjuster turned 0.5 mm every 0.5 s (1 mm/s)
+// while the key plays at 3 Hz, for `duration_s`.
+DeregulationResult deregulate_at_1mm_per_s(const std::string& action, const std::string& setting,
+                                           double duration_s) {
+  DeregulationOptions options;
+  options.setting = setting;
+  options.rate_mm_per_s = 1.0;
+  options.duration_s = duration_s;
+  return deregulate(shipped(action), options);
+}
+
 // Live deregulation (fact F7, paper 7.2): screwing the key pilot (capstan) up 0.5 mm every 0.5 s
 // while the key plays at 3 Hz shrinks the blow and raises the whippen, until the jack, pressed
 // against the repetition lever's window, goes past the window's edge: the run stops there with
 // that cause. The upright's key pilot is its lost-motion capstan: once the jack lifts the butt,
 // screwing it up shrinks the blow and raises the whippen too.
 TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
-  DeregulationOptions options;
-  options.setting = "hammer_blow";
-  options.rate_mm_per_s = 1.0;
-  options.duration_s = 4.0;
-  const DeregulationResult grand = deregulate(shipped("grand"), options);
+  constexpr double kDuration = 4.0;  // s
+  const DeregulationResult grand = deregulate_at_1mm_per_s("grand", "hammer_blow", kDuration);
   ASSERT_GE(grand.samples.size(), 3u);
   // 0.5 mm of capstan takes about 6 mm off the grand's blow; 5 mm is over two such turns
   EXPECT_LT(grand.samples.back().measured, grand.samples.front().measured - 5.0);
@@ -433,15 +441,13 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
   // 0.5 degree: a millimetre of capstan turns the whippen by about a degree
   EXPECT_GT(grand.samples.back().whippen_angle_deg, grand.samples.front().whippen_angle_deg + 0.5);
   EXPECT_EQ(grand.status, "stopped");
-  EXPECT_LT(grand.stop_t, options.duration_s);  // stopped by the contact, not by the clock
+  EXPECT_LT(grand.stop_t, kDuration);  // stopped by the contact, not by the clock
   const std::string& cause = grand.stop_cause;
   EXPECT_NE(cause.find("unphysical penetration"), std::string::npos) << cause;
   EXPECT_NE(cause.find("jack–repetition lever window"), std::string::npos) << cause;
   EXPECT_NE(cause.find("(jack into lever)"), std::string::npos) << cause;
 
-  options.setting = "lost_motion";
-  options.duration_s = 2.5;
-  const DeregulationResult upright = deregulate(shipped("upright"), options);
+  const DeregulationResult upright = deregulate_at_1mm_per_s("upright", "lost_motion", 2.5);
   ASSERT_GE(upright.samples.size(), 3u);
   EXPECT_EQ(upright.status, "ok") << upright.stop_cause;
   // 2 mm of capstan: the jack takes up the 0.3 mm of lost motion, then lifts the butt (about
@@ -454,11 +460,7 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
 // The upright's blow adjuster is its hammer rest rail: moving it toward the strings shortens the
 // blow without lifting the whippen (it opens lost motion instead).
 TEST(Regulation, DeregulatingTheUprightHammerRailShrinksTheBlowAlone) {
-  DeregulationOptions options;
-  options.setting = "hammer_blow";
-  options.rate_mm_per_s = 1.0;
-  options.duration_s = 2.5;
-  const DeregulationResult upright = deregulate(shipped("upright"), options);
+  const DeregulationResult upright = deregulate_at_1mm_per_s("upright", "hammer_blow", 2.5);
   ASSERT_GE(upright.samples.size(), 3u);
   // 2 mm of rail at about 2 mm of blow per mm at the head (head radius over rail radius)
   EXPECT_LT(upright.samples.back().measured, upright.samples.front().measured - 3.0);
