@@ -6,8 +6,11 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <mutex>
 #include <optional>
 #include <sstream>
+#include <tuple>
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
@@ -43,6 +46,22 @@ std::optional<RestState> try_rest(const ActionModel& model) {
   }
 }
 
+/// One candidate's parameter s and its value.
+struct Parameter {
+  EffectInfo info;
+  double lo = 0.0, hi = 0.0;  // range of s
+  double value(double s) const { return info.log_scale ? std::exp(s) : s; }
+  double s_of(double v) const { return info.log_scale ? std::log(v) : v; }
+};
+
+Parameter parameter_for(const EffectInfo& info) {
+  Parameter p;
+  p.info = info;
+  p.lo = p.s_of(info.min);
+  p.hi = p.s_of(info.max);
+  return p;
+}
+
 class Evaluator {
  public:
   explicit Evaluator(const std::vector<PreparedTrial>& trials) : trials_(trials) {}
@@ -66,26 +85,62 @@ class Evaluator {
     return e;
   }
 
+  /// The remembered evaluation of trial j at parameter s of `effect` ("" for the model as it
+  /// is), if any. The fits come back to values already run (a fold's start is the fit on every
+  /// trial, every candidate's neutral value is the baseline).
+  std::optional<Evaluation> recalled(const std::string& effect, double s, std::size_t j) {
+    const std::lock_guard<std::mutex> lock(memo_mutex_);
+    const auto it = memo_.find({effect, s, j});
+    if (it == memo_.end()) return std::nullopt;
+    return it->second;
+  }
+  void remember(const std::string& effect, double s, std::size_t j, const Evaluation& e) {
+    const std::lock_guard<std::mutex> lock(memo_mutex_);
+    memo_.emplace(std::make_tuple(effect, s, j), e);
+  }
+
   std::atomic<int> simulations{0};
 
  private:
   const std::vector<PreparedTrial>& trials_;
+  std::mutex memo_mutex_;
+  std::map<std::tuple<std::string, double, std::size_t>, Evaluation> memo_;
 };
 
-/// One candidate's parameter s and its value.
-struct Parameter {
-  EffectInfo info;
-  double lo = 0.0, hi = 0.0;  // range of s
-  double value(double s) const { return info.log_scale ? std::exp(s) : s; }
-  double s_of(double v) const { return info.log_scale ? std::log(v) : v; }
-};
-
-Parameter parameter_for(const EffectInfo& info) {
-  Parameter p;
-  p.info = info;
-  p.lo = p.s_of(info.min);
-  p.hi = p.s_of(info.max);
-  return p;
+/// Trial evaluations of parameter s, one per trial of `set`; with `stop_at_failure` a failed one
+/// (ok = false) ends the list early (the set's cost is then infinite anyway). Remembered
+/// evaluations are reused; the model and its rest state are built only when some trial must
+/// run. The neutral value of an effect is the model as it is.
+std::vector<Evaluation> evaluate_trials(Evaluator& ev, const ActionModel& base, const Parameter& p,
+                                        double s, const std::vector<std::size_t>& set,
+                                        bool stop_at_failure) {
+  const double value = p.value(s);
+  const bool neutral = p.info.has_neutral &&
+                       std::abs(value - p.info.neutral) <= 1e-9 * std::max(1.0, std::abs(value));
+  const std::string key = neutral ? std::string() : p.info.name;
+  const double key_s = neutral ? 0.0 : s;
+  std::vector<Evaluation> out;
+  std::optional<ActionModel> model;
+  std::optional<RestState> rest;
+  for (std::size_t j : set) {
+    std::optional<Evaluation> e = ev.recalled(key, key_s, j);
+    if (!e) {
+      if (!model) {
+        try {
+          model = neutral ? base : with_effect(base, {p.info.name, value});
+        } catch (const InputError&) {
+          out.resize(set.size());  // no model at this value: every trial fails
+          return out;
+        }
+        rest = try_rest(*model);
+      }
+      e = ev.run(*model, rest ? &*rest : nullptr, j);
+      ev.remember(key, key_s, j, *e);
+    }
+    out.push_back(std::move(*e));
+    if (stop_at_failure && !out.back().ok) return out;
+  }
+  return out;
 }
 
 struct SetResult {
@@ -97,16 +152,8 @@ struct SetResult {
 SetResult evaluate_set(Evaluator& ev, const ActionModel& base, const Parameter& p, double s,
                        const std::vector<std::size_t>& set) {
   SetResult out;
-  ActionModel model;
-  try {
-    model = with_effect(base, {p.info.name, p.value(s)});
-  } catch (const InputError&) {
-    return out;
-  }
-  const auto rest = try_rest(model);
   out.cost = 0.0;
-  for (std::size_t j : set) {
-    Evaluation e = ev.run(model, rest ? &*rest : nullptr, j);
+  for (const Evaluation& e : evaluate_trials(ev, base, p, s, set, true)) {
     if (!e.ok) {
       out.cost = std::numeric_limits<double>::infinity();
       return out;
@@ -224,37 +271,91 @@ double fine_scan_start(Evaluator& ev, const ActionModel& base, const CandidateWo
   return best_s;
 }
 
+/// The aligned cost of every trial at parameter s (inf where the model fails).
+std::vector<double> scan_point(Evaluator& ev, const ActionModel& base, const Parameter& p, double s,
+                               std::size_t trial_count) {
+  std::vector<double> rss(trial_count, std::numeric_limits<double>::infinity());
+  std::vector<std::size_t> every(trial_count);
+  for (std::size_t j = 0; j < trial_count; ++j) every[j] = j;
+  const std::vector<Evaluation> evaluations = evaluate_trials(ev, base, p, s, every, false);
+  for (std::size_t j = 0; j < evaluations.size(); ++j)
+    if (evaluations[j].ok) rss[j] = evaluations[j].rss;
+  return rss;
+}
+
+double summed(const std::vector<double>& rss) {
+  double c = 0.0;
+  for (double r : rss) c += r;
+  return c;
+}
+
 /// The scan of a candidate over its physical range (every trial at every scan point).
 void scan_candidate(Evaluator& ev, const ActionModel& base, const std::vector<std::size_t>& samples,
                     CandidateWork& w) {
-  const std::size_t trial_count = samples.size();
   const Parameter& p = w.param;
-  const double inf = std::numeric_limits<double>::infinity();
   for (int k = 0; k < kScanPoints; ++k) {
     const double s = p.lo + (p.hi - p.lo) * k / (kScanPoints - 1);
     w.scan_s.push_back(s);
-    std::vector<double> rss(trial_count, inf);
-    ActionModel model;
-    bool built = true;
-    try {
-      model = with_effect(base, {p.info.name, p.value(s)});
-    } catch (const InputError&) {
-      built = false;
-    }
-    const auto rest = built ? try_rest(model) : std::nullopt;
-    if (rest)
-      for (std::size_t j = 0; j < trial_count; ++j) {
-        const Evaluation e = ev.run(model, &*rest, j);
-        if (e.ok) rss[j] = e.rss;
-      }
-    w.scan_rss.push_back(rss);
+    w.scan_rss.push_back(scan_point(ev, base, p, s, samples.size()));
   }
-  w.scan_best_rss = inf;
-  for (const auto& rss : w.scan_rss) {
-    double c = 0.0;
-    for (double r : rss) c += r;
-    w.scan_best_rss = std::min(w.scan_best_rss, c);
+  w.scan_best_rss = std::numeric_limits<double>::infinity();
+  for (const auto& rss : w.scan_rss) w.scan_best_rss = std::min(w.scan_best_rss, summed(rss));
+}
+
+/// Halves a screened-in candidate's scan spacing (the midpoints of every interval). A
+/// contact-switching simulation's cost can have basins narrower than the screening scan's
+/// spacing: a soft backcheck (0.5 N/mm) that throws the hammer back at the string gives a 1 kg
+/// blow's cost a minimum only about ±15 % wide in the stiffness (a third of the spacing), with
+/// another one at a third of the value.
+void densify_scan(Evaluator& ev, const ActionModel& base, const std::vector<std::size_t>& samples,
+                  CandidateWork& w) {
+  std::vector<double> s;
+  std::vector<std::vector<double>> rss;
+  for (std::size_t k = 0; k < w.scan_s.size(); ++k) {
+    s.push_back(w.scan_s[k]);
+    rss.push_back(w.scan_rss[k]);
+    if (k + 1 == w.scan_s.size()) break;
+    const double mid = 0.5 * (w.scan_s[k] + w.scan_s[k + 1]);
+    s.push_back(mid);
+    rss.push_back(scan_point(ev, base, w.param, mid, samples.size()));
+    w.scan_best_rss = std::min(w.scan_best_rss, summed(rss.back()));
   }
+  w.scan_s = std::move(s);
+  w.scan_rss = std::move(rss);
+}
+
+/// Further starts for the fit on every trial (`all`; the fit so far w.all_s at cost
+/// `all_cost`): each trial's own minimum. The cost of one trial can be jagged on a scale finer
+/// than any scan: in a double blow, whether the backcheck holds the hammer or lets it bounce back
+/// to the string changes within a few percent of the hammer felt's stiffness or the backcheck's,
+/// and there the summed cost's minimum is a narrow dip at the true value, missed by the scan,
+/// while a smoother trial (a sine, a 1 kg blow) has its own minimum within a few percent of it.
+/// Each trial's best scan point (parabola vertex) is refined on that trial alone (one
+/// Levenberg–Marquardt iteration); the sum is evaluated there, and the best of these starts, when
+/// better than the fit so far, is refined on every trial (kFoldLmIterations).
+void fit_from_trial_minima(Evaluator& ev, const ActionModel& base, CandidateWork& w,
+                           const std::vector<std::size_t>& all, double& all_cost) {
+  const Parameter& p = w.param;
+  double best_start = w.all_s;
+  double best_start_cost = all_cost;
+  for (std::size_t j : all) {
+    int k_j = -1;
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < w.scan_s.size(); ++k)
+      if (w.scan_rss[k][j] < lowest) lowest = w.scan_rss[k][j], k_j = static_cast<int>(k);
+    if (k_j < 0) continue;
+    double trial_cost = 0.0;
+    const double s_j =
+        levenberg_marquardt(ev, base, p, parabola_start(w, {j}, k_j), {j}, trial_cost, 1);
+    // a trial whose own minimum is the fit so far (within the local fit's resolution) adds no
+    // start
+    if (!std::isfinite(trial_cost) || std::abs(s_j - w.all_s) < 1e-3 * (p.hi - p.lo)) continue;
+    const double joint = evaluate_set(ev, base, p, s_j, all).cost;
+    if (joint < best_start_cost) best_start_cost = joint, best_start = s_j;
+  }
+  if (!(best_start_cost < all_cost)) return;
+  // the local fit only accepts steps that lower the cost: it ends at or below best_start_cost
+  w.all_s = levenberg_marquardt(ev, base, p, best_start, all, all_cost, kFoldLmIterations);
 }
 
 /// The local fits and the leave-one-out validation of a scanned candidate.
@@ -267,9 +368,11 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   w.held_out_rss.assign(trial_count, inf);
   std::vector<std::size_t> all(trial_count);
   for (std::size_t j = 0; j < trial_count; ++j) all[j] = j;
+  densify_scan(ev, base, samples, w);
+  const int points = static_cast<int>(w.scan_s.size());
   int best_k = -1;
   double best = inf;
-  for (int k = 0; k < kScanPoints; ++k) {
+  for (int k = 0; k < points; ++k) {
     double c = 0.0;
     for (std::size_t j : all) c += w.scan_rss[k][j];
     if (c < best) best = c, best_k = k;
@@ -296,13 +399,13 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   }
   int second_k = -1;
   double second = inf;
-  for (int k = 0; k < kScanPoints; ++k) {
+  for (int k = 0; k < points; ++k) {
     if (std::abs(k - best_k) < 2) continue;
     bool local_min = true;
     double c = 0.0;
     for (std::size_t j : all) c += w.scan_rss[k][j];
     for (int nb : {k - 1, k + 1}) {
-      if (nb < 0 || nb >= kScanPoints) continue;
+      if (nb < 0 || nb >= points) continue;
       double cn = 0.0;
       for (std::size_t j : all) cn += w.scan_rss[nb][j];
       local_min = local_min && c <= cn;
@@ -315,6 +418,7 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
                                              other_cost, kMaxLmIterations);
     if (other_cost < all_cost) w.all_s = other, all_cost = other_cost;
   }
+  if (held_out) fit_from_trial_minima(ev, base, w, all, all_cost);
   w.fit.value = p.value(w.all_s);
   double training_cost = 0.0;
   std::size_t training_samples = 0;
@@ -396,6 +500,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
     r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
                                          r.measured_events, r.noise_deg);
+    Evaluation baseline_evaluation;
+    baseline_evaluation.ok = true;
+    baseline_evaluation.rss = r.baseline_alignment.rss;
+    baseline_evaluation.residual = r.baseline_alignment.residual;
+    ev.remember("", 0.0, j, baseline_evaluation);
     base_trial_rss[j] = r.baseline_alignment.rss;
     base_rss += r.baseline_alignment.rss;
     total_samples += prepared[j].data.t.size();
@@ -408,11 +517,14 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
 
   // candidates, fitted in parallel
   std::vector<CandidateWork> work;
+  auto add_candidate = [&work](const EffectInfo& info) {
+    work.emplace_back();
+    work.back().param = parameter_for(info);
+  };
   if (options.candidates.empty()) {
-    for (const EffectInfo& info : candidate_effects(model)) work.push_back({parameter_for(info)});
+    for (const EffectInfo& info : candidate_effects(model)) add_candidate(info);
   } else {
-    for (const std::string& name : options.candidates)
-      work.push_back({parameter_for(describe_effect(model, name))});
+    for (const std::string& name : options.candidates) add_candidate(describe_effect(model, name));
   }
   std::vector<std::size_t> samples;
   for (const PreparedTrial& p : prepared) samples.push_back(p.data.t.size());
@@ -456,11 +568,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
                " candidates fitted and validated";
       f.delta_bic = std::numeric_limits<double>::quiet_NaN();
       int k = 0;
-      for (int i = 0; i < kScanPoints; ++i) {
-        double c = 0.0;
-        for (double r : w.scan_rss[i]) c += r;
-        if (c <= w.scan_best_rss) k = i;
-      }
+      for (std::size_t i = 0; i < w.scan_rss.size(); ++i)
+        if (summed(w.scan_rss[i]) <= w.scan_best_rss) k = static_cast<int>(i);
       f.value = w.param.value(w.scan_s[k]);
       continue;
     }

@@ -9,9 +9,16 @@
 // kScanPoints values over the physical range finds the basin, a finer scan (kFineScanPoints
 // between the best point and each neighbour) narrows it, then Levenberg–Marquardt
 // (forward-difference Jacobian of the residual vector) refines it from the best point found.
+// Each trial's own minimum (its best scan point refined on it alone) is a further start when the
+// sum over the trials is lower there: in a double blow, whether the backcheck holds the hammer or
+// lets it bounce back to the string changes within a few percent of a felt's or the backcheck's
+// stiffness, so the summed cost has a dip at the true value narrower than any scan, next to the
+// minimum of a smoother trial (a sine, a 1 kg blow).
 //
 // Screening: every candidate is scanned; only the kRefinedCandidates with the lowest scan cost
-// are fitted locally and validated (the others are listed with their best scan point).
+// are fitted locally and validated (the others are listed with their best scan point). The scan
+// of each of those is first made twice as dense (the midpoints): a contact-switching
+// simulation's cost can have basins narrower than the screening spacing.
 //
 // Validation: leave one trial out (refit on the others, starting from the fit on every trial,
 // and evaluate the held-out one) for every trial; the validated error is the RMS of the held-out
@@ -39,7 +46,7 @@
 namespace pat {
 
 inline constexpr int kScanPoints = 9;
-inline constexpr int kFineScanPoints = 3;             // between scan points, beside the best one
+inline constexpr int kFineScanPoints = 3;  // between the dense scan points, beside the best one
 inline constexpr std::size_t kRefinedCandidates = 4;  // fitted and validated after the scan
 inline constexpr int kMaxLmIterations = 4;            // the fit on every trial
 inline constexpr int kFoldLmIterations = 2;           // each leave-one-out refit, from that fit

@@ -161,16 +161,15 @@ INSTANTIATE_TEST_SUITE_P(Seeds, NullDiagnosis, ::testing::Values(101, 102, 103))
 // of the family's physical range in the three synthetic trials, diagnosed with the hidden family
 // and its closest rival as candidates (to keep the suite's time reasonable; the full library runs
 // in `pianoaction bench-diagnose`). A seed passes when the diagnosis names the hidden family,
-// estimates its value within 25 % and gains at least 50 % on held-out trials. Required: at least
-// three of the four seeds of every family. Today 23 of the 24 pass (README, Limits): the miss is
-// the backcheck compliance's seed 2, where the backcheck's bend (regulation_offset.checking)
-// fits better. The issue asks for every seed.
+// estimates its value within 25 % and gains at least 50 % on held-out trials. Required: every
+// seed of every family (the issue's must-show; 24 of 24 pass, the estimates within 1 % but one
+// backcheck seed, 4 %, and one hammer felt seed, 12 %).
 struct HiddenCase {
   std::string effect;
   std::vector<std::string> rivals;
 };
 class HiddenEffect : public ::testing::TestWithParam<HiddenCase> {};
-TEST_P(HiddenEffect, IsNamedEstimatedAndGainsForMostSeeds) {
+TEST_P(HiddenEffect, IsNamedEstimatedAndGainsForEverySeed) {
   const ActionModel grand = test::shipped("grand");
   const HiddenCase& c = GetParam();
   HiddenEffectRange range;
@@ -191,7 +190,8 @@ TEST_P(HiddenEffect, IsNamedEstimatedAndGainsForMostSeeds) {
                 100.0 * o.diagnosis.gain, o.passed ? "passed" : "failed");
     passed += o.passed ? 1 : 0;
   }
-  EXPECT_GE(passed, 3) << c.effect << ": " << passed << " of " << kSeeds << " seeds";
+  EXPECT_EQ(passed, static_cast<int>(kSeeds))
+      << c.effect << ": " << passed << " of " << kSeeds << " seeds";
 }
 INSTANTIATE_TEST_SUITE_P(
     Families, HiddenEffect,
