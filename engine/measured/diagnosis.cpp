@@ -384,8 +384,7 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   int best_k = -1;
   double best = inf;
   for (int k = 0; k < points; ++k) {
-    double c = 0.0;
-    for (std::size_t j : all) c += w.scan_rss[k][j];
+    const double c = summed(w.scan_rss[k]);
     if (c < best) best = c, best_k = k;
   }
   if (best_k < 0) {
@@ -413,13 +412,10 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   for (int k = 0; k < points; ++k) {
     if (std::abs(k - best_k) < 2) continue;
     bool local_min = true;
-    double c = 0.0;
-    for (std::size_t j : all) c += w.scan_rss[k][j];
+    const double c = summed(w.scan_rss[k]);
     for (int nb : {k - 1, k + 1}) {
       if (nb < 0 || nb >= points) continue;
-      double cn = 0.0;
-      for (std::size_t j : all) cn += w.scan_rss[nb][j];
-      local_min = local_min && c <= cn;
+      local_min = local_min && c <= summed(w.scan_rss[nb]);
     }
     if (local_min && c < second) second = c, second_k = k;
   }
