@@ -299,10 +299,21 @@ void ActionView::paint_frame(QPainter& painter) {
   std::vector<Label> rail_labels;
   for (const Fixture& f : model.fixtures) {
     if (f.outline.empty()) continue;
-    Vec2 lowest = f.outline.front();
-    for (const Vec2& p : f.outline) lowest = p.y() < lowest.y() ? p : lowest;
-    const Label label{to_screen(lowest) + QPointF(-10, 15), QString::fromStdString(f.name),
-                      QColor(70, 70, 70), true};
+    Vec2 lowest = f.outline.front(), highest = f.outline.front(), low = f.outline.front(),
+         high = f.outline.front();
+    for (const Vec2& p : f.outline) {
+      lowest = p.y() < lowest.y() ? p : lowest;
+      highest = p.y() > highest.y() ? p : highest;
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    // below a rail or button; beside the top end of a tall, thin part (an upright's vertical
+    // string), whose lower end sits among the moving parts
+    const Vec2 size = high - low;
+    const bool upright = size.y() > 4.0 * size.x();
+    const QPointF anchor =
+        upright ? to_screen(highest) + QPointF(6, 4) : to_screen(lowest) + QPointF(-10, 15);
+    const Label label{anchor, QString::fromStdString(f.name), QColor(70, 70, 70), true};
     (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
   }
   if (backcheck_label_at)
