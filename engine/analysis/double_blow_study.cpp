@@ -50,8 +50,8 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
                             milliseconds(options.gap_ms);
 
   // every variant starts from the complete upright at rest: the strap or spring is unhooked on
-  // the resting action (without its butt spring the upright has no rest of its own: the hammer
-  // leans on the jack)
+  // the resting action, so that all four start alike (an upright whose hammer's centre of mass
+  // lies on the string side of its centre pin has no rest of its own without the spring)
   const RestState rest = find_rest_state(upright);
 
   DoubleBlowStudy study;

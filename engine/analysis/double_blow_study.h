@@ -3,8 +3,9 @@
 // and without either, and how fast the hammer comes back after the first blow.
 //
 // Every run starts from the complete upright at rest (the part is unhooked on the resting
-// action; without its butt spring the upright has no rest of its own). Each variant runs twice
-// (all runs in parallel, run_parallel):
+// action, so that all four start alike; an upright drawn with its hammer's centre of mass on the
+// string side of the centre pin has no rest of its own without the butt spring). Each variant
+// runs twice (all runs in parallel, run_parallel):
 //  - one pulse (force:pulse:N:MS) for the return: "returned to rest" is the first instant after
 //    the first impact at which the strike point is back within `rest_band_mm` of the complete
 //    action's rest position (hammer–string gap ≥ rest gap − band); hammer_return_s = that instant −
@@ -25,7 +26,7 @@ namespace pat {
 
 struct DoubleBlowOptions {
   double force_n = 15.0;  ///< a forte blow (F2: 2–50 N)
-  /// held long enough for the backcheck to catch the hammer (impact ≈ 23 ms, check ≈ 28 ms), so
+  /// held long enough for the backcheck to catch the hammer (impact ≈ 22 ms, check ≈ 26 ms), so
   /// that the return after the key's release is the work of the strap, the spring and gravity
   double pulse_ms = 60.0;
   double gap_ms = 120.0;

@@ -244,7 +244,7 @@ constexpr double kTailS = 1e-3;
 
 // Chirp time (s) a later segment runs before its own band, from rest: about 10 cycles or more
 // in the bands of interest (≥ 10 Hz), after which the start from rest is forgotten (the upright's
-// limit moves from 12.45 to 13.0 Hz when a segment starts from rest at 12.5 Hz without it).
+// limit moves from 12.45 to 14.1 Hz when a segment starts from rest at 12.5 Hz without it).
 constexpr double kOverlapS = 1.0;
 
 // One chirp run over [f_a, f_b] (a segment of the sweep), classified. `done_s` accumulates the

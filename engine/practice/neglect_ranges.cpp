@@ -55,11 +55,12 @@ const std::vector<NeglectRange> kUpright = {
      "beyond [JPU][RW]. Model: ≈1.2 mm of gap per mm of capstan (0.89 mm at −0.5 mm); from "
      "about +0.25 mm the jack meets the butt at rest"},
     {"let_off", 0.1, 0.25, +1,
-     "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈5 mm/mm "
-     "(0.67 mm at −0.5 mm, 5.9 mm at +0.5 mm)"},
+     "let-off 1/8 in [IG], 1–3 mm [BS]: the button drifts by about 1 mm. Model: ≈6 mm/mm "
+     "(0.98 mm at −0.25 mm, 6.2 mm at +0.5 mm; from −0.5 mm the jack lifts the hammer into "
+     "the string before its toe trips)"},
     {"checking", 0.25, 0.5, -1,
-     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−3.9 mm/mm (16.95 mm "
-     "at −0.25 mm, 15.03 mm at +0.25 mm, so that under 0.25 mm the catch moves by less than the "
+     "backcheck ≈5/8 in from the string [PM]; wires bend a few mm. Model: ≈−6 mm/mm (17.76 mm "
+     "at −0.25 mm, 14.79 mm at +0.25 mm; 0.25 mm moves the catch by about 1.5 mm, more than the "
      "1 mm an eye follows on a moving hammer); from about +0.75 mm the backcheck holds the hammer "
      "so near the string that a held forte blow strikes twice"},
     {"bridle", 1.0, 2.5, +1,

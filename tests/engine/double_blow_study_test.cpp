@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "core/error.h"
 #include "test_support.h"
 
@@ -16,15 +18,18 @@ const DoubleBlowVariant& variant(const DoubleBlowStudy& study, const std::string
   return study.variants.front();
 }
 
-TEST(DoubleBlowStudy, BridleStrapAndButtSpringEachBringTheHammerBack) {
-  // the part of fact F6 (paper section 7.3, Fig. 25) the shipped upright reproduces: with both
-  // parts the hammer is back on its rest rail well within the run; without the bridle strap it
-  // comes back later (0.204 against 0.198 s after the impact), without the butt spring later
-  // still (0.239 s) and without either not at all. (That the strap matters more does not hold:
-  // the butt spring's share is the larger.)
+TEST(DoubleBlowStudy, BridleStrapAndButtSpringEachBringTheHammerBackAndTheStrapMattersMore) {
+  // fact F6 (paper section 7.3, Fig. 25): with both parts the hammer is back on its rest rail
+  // soonest, without the butt spring later, without the bridle strap later still (the strap
+  // matters more than the spring), and without either last. Measured on the shipped upright:
+  // 0.177 s after the impact with both, 0.203 s without the butt spring, 0.218 s without the
+  // bridle strap, 0.270 s without either. The hammer's centre of mass lies behind its centre
+  // pin, so gravity brings it back in every variant; the strap pulls it with the falling
+  // whippen's weight once the key is released, the light spring adds less.
   const DoubleBlowStudy study = double_blow_study(test::shipped("upright"));
   ASSERT_EQ(study.variants.size(), 4u);
   const DoubleBlowVariant& both = variant(study, "both");
+  const DoubleBlowVariant& no_bridle = variant(study, "no_bridle");
   const DoubleBlowVariant& no_spring = variant(study, "no_butt_spring");
   const DoubleBlowVariant& neither = variant(study, "neither");
   for (const DoubleBlowVariant& v : study.variants) {
@@ -33,17 +38,23 @@ TEST(DoubleBlowStudy, BridleStrapAndButtSpringEachBringTheHammerBack) {
     EXPECT_GT(v.first_impact_velocity_mps, 1.0) << v.name;
     EXPECT_LT(v.first_impact_velocity_mps, 6.0) << v.name;
   }
-  ASSERT_GT(both.hammer_return_s, 0.0);
-  // the key is released 60 + 1 ms after the start and the impact is at about 23 ms: the return
+  std::printf(
+      "hammer back after: both %.3f s, no butt spring %.3f s, no bridle %.3f s, "
+      "neither %.3f s\n",
+      both.hammer_return_s, no_spring.hammer_return_s, no_bridle.hammer_return_s,
+      neither.hammer_return_s);
+  // the key is released 60 + 1 ms after the start and the impact is at about 22 ms: the return
   // takes at least the ~40 ms the key is still held after the impact
-  EXPECT_GT(both.hammer_return_s, 0.035);
-  auto later_or_never = [&](const DoubleBlowVariant& v) {
-    return v.hammer_return_s < 0.0 || v.hammer_return_s > both.hammer_return_s;
-  };
-  const DoubleBlowVariant& no_bridle = variant(study, "no_bridle");
-  EXPECT_TRUE(later_or_never(no_bridle)) << no_bridle.hammer_return_s;
-  EXPECT_TRUE(later_or_never(no_spring)) << no_spring.hammer_return_s;
-  EXPECT_TRUE(later_or_never(neither)) << neither.hammer_return_s;
+  ASSERT_GT(both.hammer_return_s, 0.035);
+  // without the spring the hammer comes back (before the redraw it never did), later than
+  // with both parts and sooner than without the strap
+  ASSERT_GT(no_spring.hammer_return_s, 0.0);
+  ASSERT_GT(no_bridle.hammer_return_s, 0.0);
+  EXPECT_GT(no_spring.hammer_return_s, both.hammer_return_s);
+  EXPECT_GT(no_bridle.hammer_return_s, no_spring.hammer_return_s);
+  // without either part: slowest, or never back within the run
+  EXPECT_TRUE(neither.hammer_return_s < 0.0 || neither.hammer_return_s > no_bridle.hammer_return_s)
+      << neither.hammer_return_s;
   // the CSV has the hammer angle of each variant's double-blow run
   ASSERT_EQ(study.trace.columns.size(), 5u);
   EXPECT_EQ(study.trace.columns[1], "both_hammer_angle_deg");

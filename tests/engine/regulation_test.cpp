@@ -145,33 +145,38 @@ INSTANTIATE_TEST_SUITE_P(
         // the lower end of the backcheck's face and is never caught; from +1.75 mm the face
         // stops the rising tail and the hammer never reaches the string
         MonotoneCase{"grand", "checking", -1.5, 1.5}, MonotoneCase{"upright", "key_dip", -2, 2},
-        // 48.13 mm at −1 to 41.74 mm at +2 (about 2.1 mm of blow per mm of rail). From about
-        // −1.35 mm the butt comes down on the jack (the 0.3 mm of lost motion used up) and the
-        // jack, not the rail, holds the hammer (48.88 mm at −1.5 and at −2): the regulation
-        // screws the capstan down first (clear_first)
+        // 47.90 mm at −1 to 42.15 mm at +2 (about 1.9 mm of blow per mm of rail). From about
+        // −1.4 mm the butt comes down on the jack (the 0.3 mm of lost motion used up) and the
+        // jack, not the rail, holds the hammer (48.53 mm at −1.35, 48.78 mm at −1.5 and at −2):
+        // the regulation screws the capstan down first (clear_first)
         MonotoneCase{"upright", "hammer_blow", -1, 2},
-        // the jack–butt gap at rest, 2.64 mm at −2 to −0.035 mm at +0.5 (about 1.2 mm per mm of
-        // capstan); from about +0.25 mm the jack touches the butt and the reading is the felt's
-        // compression, −0.038 mm at +1
-        MonotoneCase{"upright", "lost_motion", -2, 1},
-        // 0.23 mm at −0.5 to 36.8 mm at +4 (about 5 mm per mm near regulation). At −0.5 mm
-        // the jack already lifts the hammer into the string before its toe trips (0.23 mm, the
-        // same at −0.75 whatever the button); from −1 mm the slow press reads no let-off
+        // the jack–butt gap at rest, 2.67 mm at −2 to −0.034 mm at +0.5 (about 1.2 mm per mm of
+        // capstan); from about +0.25 mm the jack lifts the butt off its rail and the reading is
+        // the felt's compression under the hammer's return torque, which hardly changes as the
+        // butt rises (gravity falls off as the spring winds up): −0.0337 mm at +0.5, −0.0339 at
+        // +0.75, −0.0341 at +1, steps under the 1 µm this test asks for
+        MonotoneCase{"upright", "lost_motion", -2, 0.5},
+        // 0.05 mm at −0.5 to 38.3 mm at +4 (about 6 mm per mm near regulation). At −0.5 mm
+        // the jack already lifts the hammer into the string before its toe trips (0.05 mm, the
+        // same down to −1.25 whatever the button); from −1.5 mm the slow press finds the
+        // hammer's catcher meeting the backcheck on its way up and reads no let-off
         MonotoneCase{"upright", "let_off", -0.5, 4, 0.25},
-        // 41.3 mm at −3.6 to 14.4 mm at +0.4. Beyond, the reading goes on falling (13.9 mm at
-        // +0.5, 10.6 mm at +1.25), but from about +0.75 mm the backcheck holds the hammer so near
-        // the string that the forte blow, key held, strikes twice
+        // 42.3 mm at −3.6 to 14.4 mm at +0.4. Beyond, the reading goes on falling (14.1 mm at
+        // +0.5, 13.0 mm at +0.75, 0.7 mm at +1.25), but from about +0.75 mm the backcheck holds
+        // the hammer so near the string that the forte blow, key held, strikes twice (a second,
+        // weak strike: 0.18 m/s at +0.75)
         MonotoneCase{"upright", "checking", -3.6, 0.4}, MonotoneCase{"upright", "bridle", -2, 2},
-        // a fraction of the hammer travel, 0.87 at −0.5 to 0.03 at +0.375 (about 1 per mm of
-        // spoon). From +0.5 mm the spoon already holds the damper at rest; below about −0.6 mm
-        // it reaches the damper only after let-off (read as unmeasurable, not as a fraction)
+        // a fraction of the hammer travel, 0.94 at −0.375 to 0.15 at +0.375 (about 1.1 per mm
+        // of spoon; 0.97 at −0.5, 0.06 at +0.5). From about +0.6 mm the spoon already holds the
+        // damper at rest; below about −0.55 mm it reaches the damper only after let-off (read as
+        // unmeasurable, not as a fraction)
         MonotoneCase{"upright", "damper_lift", -0.375, 0.375, 0.125}),
     [](const auto& info) { return std::string(info.param.action) + "_" + info.param.setting; });
 
 // A damper spoon so far back that the damper lifts only after let-off (upright, −0.75 mm) is not
 // read as a fraction of the hammer travel: the hammer is then falling back, and the fraction
-// read from its position would shrink the later the damper lifts (0.72 at −0.75 mm, 0.09 at
-// −1 mm, against 0.87 at −0.5 mm).
+// read from its position would shrink the later the damper lifts (0.72 at −0.75 mm, 0.41 at
+// −1 mm, against 0.97 at −0.5 mm).
 TEST(Regulation, DamperLiftingAfterLetOffIsNotReadAsAFraction) {
   const ActionModel model = shipped("upright");
   try {
@@ -451,7 +456,8 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
   ASSERT_GE(upright.samples.size(), 3u);
   EXPECT_EQ(upright.status, "ok") << upright.stop_cause;
   // 2 mm of capstan: the jack takes up the 0.3 mm of lost motion, then lifts the butt (about
-  // 8 mm of blow per mm of capstan); 10 mm and 1 degree leave room for either
+  // 10 mm of blow per mm of capstan: 46.0 → 30.3 mm at 2 mm, the whippen up 1.6 degrees);
+  // 10 mm and 1 degree leave room for either
   EXPECT_LT(upright.samples.back().blow_mm, upright.samples.front().blow_mm - 10.0);
   EXPECT_GT(upright.samples.back().whippen_angle_deg,
             upright.samples.front().whippen_angle_deg + 1.0);
@@ -462,7 +468,8 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
 TEST(Regulation, DeregulatingTheUprightHammerRailShrinksTheBlowAlone) {
   const DeregulationResult upright = deregulate_at_1mm_per_s("upright", "hammer_blow", 2.5);
   ASSERT_GE(upright.samples.size(), 3u);
-  // 2 mm of rail at about 2 mm of blow per mm at the head (head radius over rail radius)
+  // 2 mm of rail at about 2 mm of blow per mm at the head (head radius over rail radius:
+  // 46.0 → 42.2 mm)
   EXPECT_LT(upright.samples.back().measured, upright.samples.front().measured - 3.0);
   EXPECT_NEAR(upright.samples.back().whippen_angle_deg, upright.samples.front().whippen_angle_deg,
               0.1);  // 0.1 degree: the rail does not touch the whippen's chain

@@ -134,11 +134,11 @@ TEST(RepetitionFacts, F4_GrandHalfStrokeStableWhenTheChirpRateIsHalved) {
 
 TEST(RepetitionSweep, StepsModeFindsTheUprightLimitBetweenTwoFrequencies) {
   // 11 Hz lies inside the upright's repetition range and 22 Hz well above it (the shipped
-  // upright's chirp fails from about 13.4 Hz; steady sines started from rest pass their window
-  // at 14–15 and 19–20 Hz, where other responses coexist, and miss one to three strikes in
-  // eleven cycles at 16–18 Hz and seven at 22 Hz): the steps mode must pass the first and fail
-  // the second with missed strikes (the jack has not reset under the butt when the key goes
-  // down again).
+  // upright's chirp from 10 Hz fails from about 12.5 Hz; steady sines started from rest pass
+  // their window at 11, 12 and 15 Hz, where other responses coexist, and miss one to seven
+  // strikes in the eight judged cycles at 13–14 and 16–21 Hz and four at 22 Hz): the steps mode
+  // must pass the first and fail the second with missed strikes (the jack has not reset under
+  // the butt when the key goes down again).
   const ActionModel upright = test::shipped("upright");
   SweepOptions o;
   o.mode = SweepMode::steps;

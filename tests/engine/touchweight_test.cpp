@@ -76,8 +76,10 @@ TEST(Touchweight, GrandIsInTheUsualRanges) {
 
 TEST(Touchweight, UprightIsInTheUsualRanges) {
   // fact F9's ranges (the domain notes give no separate ones for uprights): downweight 45–55 g,
-  // upweight 20–30 g. The butt spring carries most of the balance weight (parameters.md
-  // section 3: up to 17 g of downweight), the jack sliding under the butt most of the friction
+  // upweight 20–30 g. The hammer's weight carries most of the balance weight (its centre of mass
+  // lies behind the centre pin: 12.8 g of the 37.9 g are left with it moved onto the pin), the
+  // light butt spring 5.0 g (parameters.md section 3: a butt spring adds up to 17 g of
+  // downweight), the jack sliding under the butt most of the friction
   const TouchweightResult r = measure_touchweight(test::shipped("upright"));
   std::printf("upright: DW %.1f g, UW %.1f g, BW %.1f g, F %.1f g\n", r.downweight_g, r.upweight_g,
               r.balance_weight_g, r.friction_weight_g);

@@ -125,7 +125,7 @@ void AnalysisStudiesTest::short_sweep_shows_its_maximum() {
   AnalysesPanel* panel = window.analyses();
   QVERIFY(panel->choose(kSweep));
   // a short chirp across the upright's full-stroke limit (fact F4: the upright repeats up to
-  // about 12–14 Hz; the model fails first at 12.4–12.5 Hz): 7 s of simulated key motion
+  // about 12–14 Hz; this chirp from 8 Hz fails first at 14.4 Hz): 7 s of simulated key motion
   QVERIFY(panel->set_parameter("stroke", "full"));
   QVERIFY(panel->set_parameter("mode", "chirp"));
   QVERIFY(panel->set_parameter("f_start_hz", 8.0));
