@@ -3,6 +3,7 @@
 #include <QPixmap>
 
 #include "main_window.h"
+#include "measurement_service.h"
 #include "playback_controller.h"
 #include "run_controls.h"
 
@@ -56,6 +57,12 @@ void ScreenshotDemo::poll() {
 }
 
 void ScreenshotDemo::capture() {
+  // the regulation panel's measured column fills in the background (a slow press and a forte
+  // blow per setting): a picture taken before it is done shows dashes there
+  if (window_->measurements()->busy() && ++polls_ <= kMaxPolls) {
+    QTimer::singleShot(kPollMs, this, &ScreenshotDemo::capture);
+    return;
+  }
   const QPixmap shot = window_->grab();
   if (shot.isNull() || !shot.save(path_, "PNG"))
     emit finished(false, tr("could not write the screenshot %1").arg(path_));

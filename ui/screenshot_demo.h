@@ -1,6 +1,6 @@
 // The --screenshot demo: strikes a blow, plays it slowed down until the hammer first comes
 // within 2.5 mm of the string (the jack tripping at the let-off button, the plots showing the
-// stroke), pauses there and saves the window.
+// stroke), pauses there and saves the window once the regulation panel's measurements are in.
 #pragma once
 
 #include <QObject>
