@@ -310,9 +310,9 @@ void ActionView::paint_frame(QPainter& painter) {
     // below a rail or button; beside the top end of a tall, thin part (an upright's vertical
     // string), whose lower end sits among the moving parts
     const Vec2 size = high - low;
-    const bool upright = size.y() > 4.0 * size.x();
+    const bool tall = size.y() > 4.0 * size.x();
     const QPointF anchor =
-        upright ? to_screen(highest) + QPointF(6, 4) : to_screen(lowest) + QPointF(-10, 15);
+        tall ? to_screen(highest) + QPointF(6, 4) : to_screen(lowest) + QPointF(-10, 15);
     const Label label{anchor, QString::fromStdString(f.name), QColor(70, 70, 70), true};
     (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
   }
