@@ -16,7 +16,8 @@ namespace {
 const char* kUsage = R"(Piano Action Trainer: grand and upright piano actions as multibody models.
 
 usage:
-  pianoaction [--action grand|upright|FILE] [--screenshot PNG]     the trainer window
+  pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking] [--screenshot PNG]
+                                                                    the trainer window
   pianoaction simulate  --action grand|upright|FILE --input SPEC --duration S
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
                         [--without PART]... [--effect NAME=VALUE]... [--out CSV] [--plot FILE]
@@ -69,18 +70,28 @@ effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
 gap, finger force; the others: what they computed, e.g. the measured setting over time, strikes
 per cycle against frequency, each setting's effect); the format comes from the extension:
 .png .pdf .svg, or .csv for the plotted columns (plots over one x axis).
+--view frames the whole action (default) or a close-up of the escapement (jack, knuckle or
+butt, let-off button) or of the checking (hammer head and tail, backcheck); View menu, Ctrl+1-3.
 --screenshot PNG opens the window, plays a blow until just after escapement, saves a
 screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";
 
-// The window: no subcommand, or only --action / --screenshot.
+// The window: no subcommand, or only --action / --view / --screenshot.
 int run_window(int argc, char** argv, const std::vector<std::string>& args) {
 #ifdef PAT_HAVE_UI
-  const pat::app::CommandLine cl(args, {"--action", "--screenshot"}, {});
+  const pat::app::CommandLine cl(args, {"--action", "--view", "--screenshot"}, {});
   pat::ui::TrainerOptions options;
   options.action_given = cl.has("--action");
   options.action = cl.value_or("--action", "grand");
   options.screenshot = cl.value_or("--screenshot", "");
+  const std::string view = cl.value_or("--view", "whole");
+  if (view == "escapement") {
+    options.view = pat::ui::ViewFocus::escapement;
+  } else if (view == "checking") {
+    options.view = pat::ui::ViewFocus::checking;
+  } else if (view != "whole") {
+    throw pat::InputError("--view: must be whole, escapement or checking (got '" + view + "')");
+  }
   return pat::ui::run_trainer(argc, argv, options);
 #else
   (void)argc, (void)argv, (void)args;

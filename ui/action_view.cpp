@@ -14,6 +14,7 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
+constexpr double kReadoutBandPx = 34.0;  // the time and gap readout's height at the top
 
 // text on a translucent white box, readable over any part (cheaper than a stroked text path)
 void draw_label(QPainter& painter, const QPointF& at, const QString& text, const QColor& colour) {
@@ -62,6 +63,7 @@ ActionView::ActionView(QWidget* parent) : QWidget(parent) {
   setFocusPolicy(Qt::ClickFocus);
   setToolTip(
       tr("Wheel: zoom · right or middle drag: pan · double click: fit\n"
+         "View menu: close-ups of the escapement (Ctrl+2) and the checking (Ctrl+3)\n"
          "Left drag on the key front (the ring): play the key"));
 }
 
@@ -126,23 +128,77 @@ double ActionView::rest_aspect(const ActionModel& model) {
   return x1 > x0 && y1 > y0 ? (y1 - y0) / (x1 - x0) : 0.5;
 }
 
+std::optional<ModelBox> ActionView::focus_region(const ActionModel& model, ViewFocus focus) {
+  const ActionLandmarks& marks = model.landmarks;
+  std::vector<int> contacts;
+  if (focus == ViewFocus::escapement) contacts = {marks.escapement_contact, marks.letoff_contact};
+  if (focus == ViewFocus::checking) contacts = {marks.check_contact};
+  if (contacts.empty()) return std::nullopt;
+  ModelBox box{Vec2::Constant(1e9), Vec2::Constant(-1e9)};
+  auto include = [&](const Vec2& p, double radius) {
+    box.low = box.low.cwiseMin(p - Vec2::Constant(radius));
+    box.high = box.high.cwiseMax(p + Vec2::Constant(radius));
+  };
+  for (int c : contacts) {
+    if (c < 0 || c >= static_cast<int>(model.contacts.size())) return std::nullopt;
+    const Contact& contact = model.contacts[c];
+    include(contact.center_a, contact.radius_a);
+    if (contact.shape == ContactShape::CircleCircle) {
+      include(contact.center_b, contact.radius_b);
+    } else {
+      include(contact.segment_start, 0.0);
+      include(contact.segment_end, 0.0);
+    }
+  }
+  if (focus == ViewFocus::checking) {
+    // the hammer head at rest and where it meets the string (the string in sight: the catch is
+    // judged by its distance from it)
+    const double rest_gap = marks.string_normal.dot(marks.strike_point - marks.string_point);
+    include(marks.strike_point, 0.0);
+    include(marks.strike_point - rest_gap * marks.string_normal, 0.0);
+  }
+  // room for the parts' motion during a blow: the jack and the knuckle or butt rise several mm
+  // (the region is their size at rest); the checking region already spans the hammer's travel
+  const bool escapement = focus == ViewFocus::escapement;
+  const Vec2 room = ((escapement ? 0.4 : 0.25) * (box.high - box.low))
+                        .cwiseMax(Vec2::Constant(escapement ? 10e-3 : 6e-3));
+  box.low -= room;
+  box.high += room;
+  return box;
+}
+
+void ActionView::set_focus(ViewFocus focus) {
+  focus_ = focus;
+  fitted_ = false;
+  if (frame_) fit();
+  update();
+}
+
 void ActionView::fit() {
   if (!frame_ || width() <= 0 || height() <= 0) return;
-  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
-  auto include = [&](const Vec2& p) {
-    x0 = std::min(x0, p.x()), x1 = std::max(x1, p.x());
-    y0 = std::min(y0, p.y()), y1 = std::max(y1, p.y());
-  };
-  for (int b = 0; b < model_->dofs(); ++b)
-    for (const Vec2& p : model_->bodies[b].outline) include(body_point(b, p));
-  for (const Fixture& f : model_->fixtures)
-    for (const Vec2& p : f.outline) include(p);
-  if (x1 <= x0 || y1 <= y0) return;
-  const double margin = 0.06;
-  const double w = (x1 - x0) * (1 + 2 * margin), h = (y1 - y0) * (1 + 2 * margin);
-  scale_ = std::min(width() / w, height() / h);
-  offset_ =
-      QPointF(width() / 2.0 - scale_ * (x0 + x1) / 2.0, height() / 2.0 + scale_ * (y0 + y1) / 2.0);
+  std::optional<ModelBox> box = focus_region(*model_, focus_);
+  double margin = 0.0;  // a close-up's region has its own room
+  if (!box) {
+    box = ModelBox{Vec2::Constant(1e9), Vec2::Constant(-1e9)};
+    auto include = [&](const Vec2& p) {
+      box->low = box->low.cwiseMin(p);
+      box->high = box->high.cwiseMax(p);
+    };
+    for (int b = 0; b < model_->dofs(); ++b)
+      for (const Vec2& p : model_->bodies[b].outline) include(body_point(b, p));
+    for (const Fixture& f : model_->fixtures)
+      for (const Vec2& p : f.outline) include(p);
+    margin = 0.06;
+  }
+  const Vec2 size = box->high - box->low;
+  if (!(size.x() > 0.0 && size.y() > 0.0)) return;
+  const double w = size.x() * (1 + 2 * margin), h = size.y() * (1 + 2 * margin);
+  const Vec2 centre = 0.5 * (box->low + box->high);
+  // below the time and gap readout drawn along the top
+  const double usable_height = std::max(1.0, height() - kReadoutBandPx);
+  scale_ = std::min(width() / w, usable_height / h);
+  offset_ = QPointF(width() / 2.0 - scale_ * centre.x(),
+                    kReadoutBandPx + usable_height / 2.0 + scale_ * centre.y());
   fitted_ = true;
 }
 
@@ -386,8 +442,7 @@ void ActionView::mouseReleaseEvent(QMouseEvent* event) {
 }
 
 void ActionView::mouseDoubleClickEvent(QMouseEvent*) {
-  fit();
-  update();
+  set_focus(ViewFocus::whole);
 }
 
 }  // namespace pat::ui

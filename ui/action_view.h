@@ -2,6 +2,9 @@
 // button, drop screw, string), the contact features (capstan, jack top, backcheck, felts),
 // pivots, and each active contact highlighted with an arrow scaled by its normal force.
 // Wheel: zoom about the cursor; middle or right drag: pan; double click: fit the action.
+// Close-ups (set_focus) frame what a teacher points at: the escapement (knuckle or butt, jack
+// top, let-off button) or the checking (hammer head and tail, backcheck, string); they stay
+// framed through resizes and a change of action until the whole action is fitted again.
 // Left drag on the key front plays the key (keyPlayed); releasing lets it up.
 #pragma once
 
@@ -18,6 +21,14 @@ class QPainter;
 
 namespace pat::ui {
 
+/// What a fit frames.
+enum class ViewFocus { whole, escapement, checking };
+
+/// A rectangle of the model plane (m, at the preset's rest drawing).
+struct ModelBox {
+  Vec2 low = Vec2::Zero(), high = Vec2::Zero();
+};
+
 class ActionView : public QWidget {
   Q_OBJECT
  public:
@@ -25,8 +36,17 @@ class ActionView : public QWidget {
 
   /// Shows a frame (its model may differ from the previous one: a moved adjuster).
   void show_frame(const Frame& frame);
-  /// Forgets the view fit (a new action): the next frame is fitted to the widget.
+  /// Forgets the view fit (a new action): the next frame is fitted to the widget, with the
+  /// current focus.
   void reset_view();
+  /// Frames the whole action or a close-up (now, or at the first frame); kept until changed.
+  void set_focus(ViewFocus focus);
+  ViewFocus focus() const { return focus_; }
+  /// The region a close-up frames, from the model's landmark contacts at rest with room for
+  /// their motion around it: escapement — the escapement and let-off contacts' features;
+  /// checking — the backcheck contact's features, the strike point and the string point.
+  /// Empty for ViewFocus::whole or when the model lacks those contacts.
+  static std::optional<ModelBox> focus_region(const ActionModel& model, ViewFocus focus);
   void set_labels_visible(bool visible);
   bool labels_visible() const { return labels_; }
   /// Model (m) to widget (px) transform in use.
@@ -72,6 +92,7 @@ class ActionView : public QWidget {
   DynamicsReading reading_;
   bool labels_ = true;
   bool fitted_ = false;
+  ViewFocus focus_ = ViewFocus::whole;
   double scale_ = 1000.0;  // px per m
   QPointF offset_;         // widget position of the model origin
   int active_contacts_ = 0;

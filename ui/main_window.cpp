@@ -297,10 +297,15 @@ void MainWindow::build_menus() {
   mode->setText(tr("&Practice mode (find a hidden deregulation)"));
   mode->setShortcut(QKeySequence(tr("Ctrl+P")));
   practice->addAction(mode);
-  view->addAction(tr("&Fit the action"), this, [this] {
-    view_->reset_view();
-    if (controller_->has_frame()) view_->show_frame(controller_->current_frame());
-  });
+  view->addSeparator();
+  view->addAction(tr("&Fit the action"), QKeySequence(tr("Ctrl+1")), this,
+                  [this] { view_->set_focus(ViewFocus::whole); });
+  view->addAction(tr("Close-up: &escapement (jack, knuckle or butt, let-off button)"),
+                  QKeySequence(tr("Ctrl+2")), this,
+                  [this] { view_->set_focus(ViewFocus::escapement); });
+  view->addAction(tr("Close-up: c&hecking (hammer head and tail, backcheck)"),
+                  QKeySequence(tr("Ctrl+3")), this,
+                  [this] { view_->set_focus(ViewFocus::checking); });
 }
 
 void MainWindow::build_shortcuts() {

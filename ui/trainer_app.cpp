@@ -24,6 +24,7 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
     if (options.action_given) throw;
     window.open_action("grand");  // the remembered preset is gone or broken
   }
+  window.view()->set_focus(options.view);
   if (!options.screenshot.empty()) window.resize(1280, 800);
   window.show();
   if (options.screenshot.empty()) return app.exec();

@@ -1,13 +1,18 @@
-// Starts the trainer window: `pianoaction [--action grand|upright|FILE] [--screenshot PNG]`.
+// Starts the trainer window:
+// `pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking] [--screenshot
+// PNG]`.
 #pragma once
 
 #include <string>
 
+#include "action_view.h"
+
 namespace pat::ui {
 
 struct TrainerOptions {
-  std::string action = "grand";  ///< grand, upright or a preset file
-  bool action_given = false;     ///< false: the last preset used (QSettings), else grand
+  std::string action = "grand";       ///< grand, upright or a preset file
+  bool action_given = false;          ///< false: the last preset used (QSettings), else grand
+  ViewFocus view = ViewFocus::whole;  ///< what the action view frames at the start
   /// Non-empty: run a short demo until the action is mid-stroke (the hammer near the string), save
   /// a screenshot of the whole window there and exit.
   std::string screenshot;

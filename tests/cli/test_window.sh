@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The window from the command line (issue 5): --screenshot works offscreen for both actions and
 # writes a PNG of the whole window; simulate --plot writes PNG, PDF, SVG and CSV plots (format
-# from the extension) and refuses an unknown one; --help still prints the usage.
+# from the extension) and refuses an unknown one; --view opens a close-up and refuses an unknown
+# one; --help still prints the usage.
 # usage: test_window.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
 
@@ -33,6 +34,16 @@ if width < 1000 or height < 700:
     sys.exit("window screenshot is only %dx%d" % (width, height))
 PY
 done
+
+# a close-up from the command line, and an unknown view named with the choices
+"$exe" --action grand --view escapement --screenshot shot-closeup.png > out.txt 2> err.txt \
+  || { cat err.txt; fail "--view escapement exited with an error"; }
+[ "$(magic shot-closeup.png 8)" = "89504e470d0a1a0a" ] || fail "close-up screenshot is not a PNG"
+"$exe" --help | grep -q "escapement|checking" || fail "--help does not mention --view"
+if "$exe" --view sideways --screenshot x.png 2> err.txt; then fail "--view sideways accepted"; fi
+grep -q -- "--view: must be whole, escapement or checking (got 'sideways')" err.txt \
+  || fail "the --view error: $(cat err.txt)"
+[ ! -e x.png ] || fail "a screenshot was written despite the bad --view"
 
 # a broken action file is refused before any window opens
 "$exe" --action /nonexistent/preset.json --screenshot x.png 2> err.txt && fail "bad --action accepted"

@@ -1,5 +1,6 @@
 // The action view (issue 5): it draws grand and upright from a running simulation, highlights
-// active contacts, zooms and pans, and a drag on the key front plays the key.
+// active contacts, zooms and pans, and a drag on the key front plays the key; close-ups frame the
+// escapement and the checking.
 #include "action_view.h"
 
 #include <QSignalSpy>
@@ -20,6 +21,7 @@ class ActionViewTest : public QObject {
   void a_blow_shows_active_contacts();
   void wheel_zooms_and_right_drag_pans();
   void dragging_the_key_front_down_plays_the_key();
+  void close_ups_frame_the_escapement_and_the_checking();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -102,6 +104,67 @@ void ActionViewTest::dragging_the_key_front_down_plays_the_key() {
                               .arg(view->frame()->angle_deg[key])
                               .arg(view->frame()->t)
                               .arg(window.banner_text())));
+}
+
+namespace {
+
+bool shown(const ActionView& view, const pat::Vec2& model_point) {
+  return QRectF(view.rect())
+      .contains(view.model_to_widget().map(QPointF(model_point.x(), model_point.y())));
+}
+
+}  // namespace
+
+void ActionViewTest::close_ups_frame_the_escapement_and_the_checking() {
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  window.open_action("grand");
+  ActionView* view = window.view();
+  for (const char* action : {"grand", "upright"}) {
+    window.open_action(action);
+    QVERIFY(wait_until([&] {
+      return view->frame() != nullptr && view->frame()->model->kind == std::string(action);
+    }));
+    view->set_focus(pat::ui::ViewFocus::whole);
+    const double whole = view->model_to_widget().m11();  // px per m
+    const pat::ActionModel& model = *view->frame()->model;
+    const pat::ActionLandmarks& marks = model.landmarks;
+    const pat::Contact& escapement = model.contacts[marks.escapement_contact];
+    const pat::Contact& letoff = model.contacts[marks.letoff_contact];
+    const pat::Contact& check = model.contacts[marks.check_contact];
+
+    view->set_focus(pat::ui::ViewFocus::escapement);
+    // the jack's top region fills the view: at least 2.5 times the whole action's scale (the
+    // grand's escapement region is about a tenth of the action's width), with the knuckle or
+    // butt, the jack top and the let-off button in sight
+    QVERIFY2(view->model_to_widget().m11() > 2.5 * whole, action);
+    QVERIFY2(shown(*view, escapement.center_a), action);
+    QVERIFY2(shown(*view, escapement.segment_start) && shown(*view, escapement.segment_end),
+             action);
+    QVERIFY2(shown(*view, letoff.segment_start) && shown(*view, letoff.segment_end), action);
+    QVERIFY2(!shown(*view, marks.key_front), action);  // a close-up, not the whole key
+
+    view->set_focus(pat::ui::ViewFocus::checking);
+    QVERIFY2(view->model_to_widget().m11() > 1.5 * whole, action);
+    QVERIFY2(shown(*view, check.center_a), action);
+    QVERIFY2(shown(*view, check.segment_start) && shown(*view, check.segment_end), action);
+    QVERIFY2(shown(*view, marks.strike_point), action);
+    // the focus stays through a resize
+    window.resize(1100, 760);
+    QCoreApplication::processEvents();
+    QCOMPARE(view->focus(), pat::ui::ViewFocus::checking);
+    QVERIFY2(shown(*view, check.center_a) && shown(*view, marks.strike_point), action);
+  }
+  // a double click fits the whole action again
+  QTest::mouseDClick(view, Qt::LeftButton, {}, QPoint(50, 50));
+  QCOMPARE(view->focus(), pat::ui::ViewFocus::whole);
+  QVERIFY(shown(*view, view->frame()->model->landmarks.key_front));
+  // a model without the landmark contacts has no close-up region
+  pat::ActionModel bare = *view->frame()->model;
+  bare.landmarks.escapement_contact = -1;
+  QVERIFY(!ActionView::focus_region(bare, pat::ui::ViewFocus::escapement).has_value());
+  QVERIFY(!ActionView::focus_region(bare, pat::ui::ViewFocus::whole).has_value());
 }
 
 QTEST_MAIN(ActionViewTest)
