@@ -259,12 +259,11 @@ struct ChirpSegment {
 
 void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptions& o,
                const ProgressCallback& progress, SweepResult& result) {
-  // with a trace (for a plot) one continuous run; otherwise one segment per thread
+  // with a trace (for a plot) one continuous run; otherwise the fixed number of segments (the
+  // cut is part of the result, repetition_sweep.h), on the threads there are
   const unsigned threads = o.threads == 0 ? default_thread_count() : o.threads;
   const std::size_t count =
-      o.trace_interval_s > 0.0
-          ? 1
-          : std::max<std::size_t>(1, o.chirp_segments == 0 ? threads : o.chirp_segments);
+      o.trace_interval_s > 0.0 ? 1 : std::max<std::size_t>(1, o.chirp_segments);
   std::vector<ChirpSegment> segments(count);
   double total_s = 0.0;
   for (std::size_t i = 0; i < count; ++i) {

@@ -11,8 +11,11 @@
 // To use the cores, the band [f_start, f_max] is cut into equal segments run in parallel, each
 // its own chirp at the same rate from rest; every segment after the first starts 1 s of chirp
 // below its band and drops the cycles before it, so that its start from rest is forgotten (the
-// cycles are then put end to end in the times of one continuous chirp). With a trace (for a
-// plot) the chirp is one run.
+// cycles are then put end to end in the times of one continuous chirp). The number of segments
+// is fixed (chirp_segments, 2 by default), not the machine's core count: where the action has
+// two responses at one frequency (the grand's full stroke from 14.5 to 18 Hz), a segment started
+// from rest inside that range may take the other one, so the cut changes the result, and a
+// result must not depend on the machine. With a trace (for a plot) the chirp is one run.
 // Steps mode: one run per frequency f_i = f_start, f_start + Δf, …, ≤ f_max, each a constant
 // sine held for settle + window cycles; the frequencies run in parallel on the cores.
 //
@@ -84,8 +87,8 @@ struct SweepOptions {
   std::string integrator = "w2";
   double step_s = 1e-5;  ///< fixed integrator step (s)
   unsigned threads = 0;  ///< worker threads (0: one per core)
-  /// chirp: segments run in parallel (0: one per thread; forced to 1 with a trace)
-  unsigned chirp_segments = 0;
+  /// chirp: segments, run in parallel on up to `threads` (at least 1; forced to 1 with a trace)
+  unsigned chirp_segments = 2;
 };
 
 enum class CycleOutcome { struck_once, missed, double_strike, stopped };

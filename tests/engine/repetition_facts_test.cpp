@@ -176,7 +176,7 @@ TEST(RepetitionSweep, ChirpReportsProgressBySimulatedTimeAndCancels) {
   SweepOptions o;
   o.f_start_hz = 10.0;
   o.f_max_hz = 12.0;
-  o.threads = 2;  // two segments on any machine
+  o.chirp_segments = 2;  // the default, whatever the machine's cores
   double last = 0.0;
   int reports = 0;
   EXPECT_THROW(run_repetition_sweep(grand, o,
@@ -191,6 +191,27 @@ TEST(RepetitionSweep, ChirpReportsProgressBySimulatedTimeAndCancels) {
   // the segments, out of 3 s: the 2 s band, and the second of two segments (10–11 Hz and
   // 11–12 Hz) starts 1 s of chirp early
   EXPECT_NEAR(last, 20 * 0.01 / 3.0, 0.005);
+}
+
+// The chirp's cut into segments is fixed, so its result does not depend on the machine: one
+// thread or two give the same cycles, bit for bit (each segment is the same deterministic run).
+TEST(RepetitionSweep, ChirpResultDoesNotDependOnTheThreadCount) {
+  const ActionModel upright = test::shipped("upright");
+  SweepOptions o;
+  o.f_start_hz = 11.0;
+  o.f_max_hz = 13.5;
+  std::vector<SweepResult> results;
+  for (unsigned threads : {1u, 2u}) {
+    o.threads = threads;
+    results.push_back(run_repetition_sweep(upright, o));
+  }
+  ASSERT_EQ(results[0].cycles.size(), results[1].cycles.size());
+  for (std::size_t i = 0; i < results[0].cycles.size(); ++i) {
+    EXPECT_EQ(results[0].cycles[i].strikes, results[1].cycles[i].strikes) << "cycle " << i;
+    EXPECT_EQ(results[0].cycles[i].t_start_s, results[1].cycles[i].t_start_s) << "cycle " << i;
+  }
+  EXPECT_EQ(results[0].max_frequency_hz, results[1].max_frequency_hz);
+  EXPECT_EQ(results[0].simulated_s, results[1].simulated_s);
 }
 
 }  // namespace
