@@ -1,7 +1,7 @@
 // The repetition-frequency sweep from the window (fact F4; engine/analysis/repetition_sweep.h
-// holds the definitions of cycle, strike, success and maximum). Chirp: one run with its trace,
-// so that the key and hammer can be watched losing the beat; steps: one run per frequency on
-// both cores.
+// holds the definitions of cycle, strike, success and maximum). Chirp: its two segments with
+// their trace put end to end, so that the key and hammer can be watched losing the beat; steps:
+// one run per frequency on both cores.
 #include <QObject>
 #include <utility>
 
@@ -199,8 +199,8 @@ AnalysisEntry repetition_sweep_entry() {
       {"full", "half"});
   const AnalysisParameter mode = AnalysisParameter::choice(
       "mode", QObject::tr("Mode"),
-      QObject::tr("chirp: one run whose frequency rises 1 Hz each second (with its key and hammer "
-                  "trace); steps: one steady run per frequency, 0.5 Hz apart"),
+      QObject::tr("chirp: a frequency rising 1 Hz each second (with its key and hammer trace); "
+                  "steps: one steady run per frequency, 0.5 Hz apart"),
       {"chirp", "steps"});
   AnalysisParameter f_start;
   f_start.key = "f_start_hz";

@@ -259,11 +259,10 @@ struct ChirpSegment {
 
 void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptions& o,
                const ProgressCallback& progress, SweepResult& result) {
-  // with a trace (for a plot) one continuous run; otherwise the fixed number of segments (the
-  // cut is part of the result, repetition_sweep.h), on the threads there are
+  // the fixed number of segments (the cut is part of the result, repetition_sweep.h), on the
+  // threads there are; a trace (for a plot) is stitched from theirs like the cycles
   const unsigned threads = o.threads == 0 ? default_thread_count() : o.threads;
-  const std::size_t count =
-      o.trace_interval_s > 0.0 ? 1 : std::max<std::size_t>(1, o.chirp_segments);
+  const std::size_t count = std::max<std::size_t>(1, o.chirp_segments);
   std::vector<ChirpSegment> segments(count);
   double total_s = 0.0;
   for (std::size_t i = 0; i < count; ++i) {
@@ -322,7 +321,19 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
       result.stop_cause = seg.run.stop_cause;
     }
   }
-  result.trace = std::move(segments.front().run.trace);
+  result.trace.columns = segments.front().run.trace.columns;
+  result.trace.metadata = segments.front().run.trace.metadata;
+  for (const ChirpSegment& seg : segments) {
+    for (const std::vector<double>& row : seg.run.trace.rows) {
+      if (row.empty() || row.front() < seg.keep_from_s - 1e-12) continue;
+      std::vector<double> shifted = row;
+      shifted.front() += seg.t_offset_s;
+      // a segment's last millisecond (its tail) lies under the next one's first rows
+      if (!result.trace.rows.empty() && shifted.front() <= result.trace.rows.back().front())
+        continue;
+      result.trace.rows.push_back(std::move(shifted));
+    }
+  }
   chirp_maximum(result.cycles, o.window_cycles, result);
   reporter.item_done("done");
 }

@@ -15,7 +15,7 @@
 // is fixed (chirp_segments, 2 by default), not the machine's core count: where the action has
 // two responses at one frequency (the grand's full stroke from 14.5 to 18 Hz), a segment started
 // from rest inside that range may take the other one, so the cut changes the result, and a
-// result must not depend on the machine. With a trace (for a plot) the chirp is one run.
+// result must not depend on the machine. A trace (for a plot) is put together the same way.
 // Steps mode: one run per frequency f_i = f_start, f_start + Δf, …, ≤ f_max, each a constant
 // sine held for settle + window cycles; the frequencies run in parallel on the cores.
 //
@@ -87,7 +87,7 @@ struct SweepOptions {
   std::string integrator = "w2";
   double step_s = 1e-5;  ///< fixed integrator step (s)
   unsigned threads = 0;  ///< worker threads (0: one per core)
-  /// chirp: segments, run in parallel on up to `threads` (at least 1; forced to 1 with a trace)
+  /// chirp: segments, run in parallel on up to `threads` (at least 1)
   unsigned chirp_segments = 2;
 };
 

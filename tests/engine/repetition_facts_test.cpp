@@ -212,6 +212,21 @@ TEST(RepetitionSweep, ChirpResultDoesNotDependOnTheThreadCount) {
   }
   EXPECT_EQ(results[0].max_frequency_hz, results[1].max_frequency_hz);
   EXPECT_EQ(results[0].simulated_s, results[1].simulated_s);
+
+  // asking for a trace (a plot) does not change the result either; the segments' traces are put
+  // end to end in the times of one chirp, without going back in time
+  o.trace_interval_s = 5e-4;
+  const SweepResult traced = run_repetition_sweep(upright, o);
+  EXPECT_EQ(traced.max_frequency_hz, results[1].max_frequency_hz);
+  ASSERT_EQ(traced.cycles.size(), results[1].cycles.size());
+  for (std::size_t i = 0; i < traced.cycles.size(); ++i)
+    EXPECT_EQ(traced.cycles[i].strikes, results[1].cycles[i].strikes) << "cycle " << i;
+  ASSERT_GT(traced.trace.rows.size(), 100u);
+  for (std::size_t i = 1; i < traced.trace.rows.size(); ++i)
+    ASSERT_GT(traced.trace.rows[i][0], traced.trace.rows[i - 1][0]) << "row " << i;
+  // the band is 2.5 s of chirp: the trace covers it to within a sampling interval and the tail
+  EXPECT_NEAR(traced.trace.rows.front()[0], 0.0, 1e-12);
+  EXPECT_NEAR(traced.trace.rows.back()[0], 2.5, 2e-3);
 }
 
 }  // namespace
