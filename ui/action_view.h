@@ -16,13 +16,11 @@
 
 #include "dynamics/action_dynamics.h"
 #include "frame.h"
+#include "view_focus.h"
 
 class QPainter;
 
 namespace pat::ui {
-
-/// What a fit frames.
-enum class ViewFocus { whole, escapement, checking };
 
 /// A rectangle of the model plane (m, at the preset's rest drawing).
 struct ModelBox {

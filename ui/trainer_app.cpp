@@ -5,6 +5,7 @@
 #include <QTimer>
 #include <iostream>
 
+#include "action_view.h"
 #include "main_window.h"
 #include "screenshot_demo.h"
 

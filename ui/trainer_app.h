@@ -1,11 +1,10 @@
-// Starts the trainer window:
-// `pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking] [--screenshot
-// PNG]`.
+// Starts the trainer window: `pianoaction [--action grand|upright|FILE]
+// [--view whole|escapement|checking] [--screenshot PNG]`.
 #pragma once
 
 #include <string>
 
-#include "action_view.h"
+#include "view_focus.h"
 
 namespace pat::ui {
 
