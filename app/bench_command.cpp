@@ -42,6 +42,7 @@ int run_bench(const std::vector<std::string>& args) {
   options.duration_s = cl.positive_number_or("--duration", 1.0);
   options.input = cl.value_or("--input", options.input);
   const std::vector<BenchCase> cases = run_bench(options);
+  const std::vector<EqualAccuracy> comparisons = compare_at_equal_accuracy(cases);
   if (plot.write(bench_plots(cases)) && !cl.has("--json"))
     std::cout << "plot written to " << plot.path() << "\n";
   if (cl.has("--json")) {
@@ -56,10 +57,28 @@ int run_bench(const std::vector<std::string>& args) {
            {"steps", c.steps},
            {"max_error_deg", c.max_error_deg},
            {"max_error_percent_of_range", 100.0 * c.max_error_deg / c.hammer_range_deg}});
+    nlohmann::json equal = nlohmann::json::array();
+    for (const EqualAccuracy& e : comparisons) {
+      nlohmann::json item{{"action", e.action},
+                          {"w2_realtime_factor", e.w2_realtime_factor},
+                          {"w2_max_error_deg", e.w2_error_deg},
+                          {"cvode_setting", nullptr},
+                          {"cvode_realtime_factor", nullptr},
+                          {"cvode_max_error_deg", nullptr},
+                          {"w2_over_cvode", nullptr}};
+      if (e.cvode) {
+        item["cvode_setting"] = e.cvode->setting;
+        item["cvode_realtime_factor"] = e.cvode->realtime_factor;
+        item["cvode_max_error_deg"] = e.cvode->max_error_deg;
+        item["w2_over_cvode"] = e.ratio;
+      }
+      equal.push_back(item);
+    }
     std::cout << nlohmann::json{{"input", options.input},
                                 {"duration_s", options.duration_s},
                                 {"reference", "rodas rtol=1e-9"},
-                                {"cases", list}}
+                                {"cases", list},
+                                {"equal_accuracy", equal}}
                      .dump(1)
               << "\n";
     return 0;
@@ -76,6 +95,18 @@ int run_bench(const std::vector<std::string>& args) {
               << std::setprecision(1) << c.realtime_factor << std::setw(10) << c.steps
               << std::setw(14) << std::setprecision(4) << c.max_error_deg << std::setw(12)
               << std::setprecision(2) << 100.0 * c.max_error_deg / c.hammer_range_deg << "\n";
+  std::cout << "w2 against the fastest cvode at least as accurate:\n";
+  for (const EqualAccuracy& e : comparisons) {
+    std::cout << "  " << e.action << ": w2 " << std::setprecision(1) << e.w2_realtime_factor
+              << "x (" << std::setprecision(4) << e.w2_error_deg << " deg)";
+    if (e.cvode)
+      std::cout << ", cvode " << e.cvode->setting << " " << std::setprecision(1)
+                << e.cvode->realtime_factor << "x (" << std::setprecision(4)
+                << e.cvode->max_error_deg << " deg): w2/cvode = " << std::setprecision(2) << e.ratio
+                << "\n";
+    else
+      std::cout << ", no cvode setting as accurate\n";
+  }
   return 0;
 }
 

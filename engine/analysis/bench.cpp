@@ -78,4 +78,25 @@ std::vector<BenchCase> run_bench(const BenchOptions& options) {
   return cases;
 }
 
+std::vector<EqualAccuracy> compare_at_equal_accuracy(const std::vector<BenchCase>& cases) {
+  std::vector<EqualAccuracy> comparisons;
+  for (const BenchCase& w2 : cases) {
+    if (w2.integrator != "w2") continue;
+    EqualAccuracy e;
+    e.action = w2.action;
+    e.w2_realtime_factor = w2.realtime_factor;
+    e.w2_error_deg = w2.max_error_deg;
+    for (const BenchCase& c : cases) {
+      if (c.action != w2.action || c.integrator != "cvode" ||
+          !(c.max_error_deg <= w2.max_error_deg))
+        continue;
+      if (!e.cvode || c.realtime_factor > e.cvode->realtime_factor) e.cvode = c;
+    }
+    if (e.cvode && e.cvode->realtime_factor > 0.0)
+      e.ratio = w2.realtime_factor / e.cvode->realtime_factor;
+    comparisons.push_back(e);
+  }
+  return comparisons;
+}
+
 }  // namespace pat

@@ -3,6 +3,7 @@
 // tightest-tolerance Rosenbrock reference on the hammer angle.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,19 @@ struct BenchOptions {
 
 /// Runs every case; the reference itself (rodas at rtol 1e-9) is not listed.
 std::vector<BenchCase> run_bench(const BenchOptions& options);
+
+/// The W-method against CVODE at equal accuracy on one action: CVODE's fastest setting whose
+/// hammer error is at most the W-method's (the cheapest run that is as good), and the ratio of
+/// the two real-time factors (> 1: the W-method is faster).
+struct EqualAccuracy {
+  std::string action;
+  double w2_realtime_factor = 0.0;
+  double w2_error_deg = 0.0;
+  std::optional<BenchCase> cvode;  ///< absent: no CVODE setting was that accurate
+  double ratio = 0.0;              ///< w2 / cvode real-time factor (0 without a CVODE case)
+};
+
+/// One comparison per action that has a w2 case, in the order of the cases.
+std::vector<EqualAccuracy> compare_at_equal_accuracy(const std::vector<BenchCase>& cases);
 
 }  // namespace pat
