@@ -15,7 +15,10 @@ export XDG_CONFIG_HOME="$work/config"
 
 fail() { echo "FAIL: $*" >&2; exit 1; }
 
-"$exe" --help | grep -q "bench --window" || fail "--help does not mention bench --window"
+# the usage is read from a file: `--help | grep -q` under pipefail fails when grep stops reading
+# before a usage longer than one pipe write has been written (SIGPIPE)
+"$exe" --help > help.txt
+grep -q "bench --window" help.txt || fail "--help does not mention bench --window"
 
 "$exe" bench --window --duration 0.5 --trials 2 --json > out.json 2> err.txt \
   || { cat err.txt; fail "bench --window exited with an error"; }

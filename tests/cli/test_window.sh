@@ -19,7 +19,10 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # magic bytes of a file, as hex
 magic() { head -c "$2" "$1" | od -An -tx1 | tr -d ' \n'; }
 
-"$exe" --help | grep -q "screenshot PNG" || fail "--help does not mention --screenshot"
+# the usage is read from a file: `--help | grep -q` under pipefail fails when grep stops reading
+# before a usage longer than one pipe write has been written (SIGPIPE)
+"$exe" --help > help.txt
+grep -q "screenshot PNG" help.txt || fail "--help does not mention --screenshot"
 
 for action in grand upright; do
   "$exe" --action "$action" --screenshot "shot-$action.png" > out.txt 2> err.txt \
@@ -39,7 +42,7 @@ done
 "$exe" --action grand --view escapement --screenshot shot-closeup.png > out.txt 2> err.txt \
   || { cat err.txt; fail "--view escapement exited with an error"; }
 [ "$(magic shot-closeup.png 8)" = "89504e470d0a1a0a" ] || fail "close-up screenshot is not a PNG"
-"$exe" --help | grep -q "escapement|checking" || fail "--help does not mention --view"
+grep -q "escapement|checking" help.txt || fail "--help does not mention --view"
 if "$exe" --view sideways --screenshot x.png 2> err.txt; then fail "--view sideways accepted"; fi
 grep -q -- "--view: must be whole, escapement or checking (got 'sideways')" err.txt \
   || fail "the --view error: $(cat err.txt)"
