@@ -50,6 +50,8 @@ nlohmann::json sweep_json(const SweepResult& r) {
       {"mode", sweep_mode_name(r.mode)},
       {"limit_found", r.limit_found},
       {"first_failure", r.first_failure ? cycle_json(*r.first_failure) : nlohmann::json(nullptr)},
+      {"alternating_from_hz",
+       r.alternating_from_hz ? nlohmann::json(*r.alternating_from_hz) : nlohmann::json(nullptr)},
       {"simulated_s", r.simulated_s},
       {"wall_s", r.wall_s}};
   if (r.mode == SweepMode::chirp) {
@@ -99,17 +101,20 @@ std::vector<PlotSpec> sweep_plots(const SweepResult& r) {
     strikes.add(p.frequency_hz, p.strikes);
     if (p.strikes > 0) velocity.add(p.frequency_hz, p.strike_velocity_mps);
   }
-  std::vector<PlotMarker> maximum;
+  std::vector<PlotMarker> markers;  // the maximum, and where blows start to alternate
   if (r.max_frequency_hz)
-    maximum.push_back(
+    markers.push_back(
         {*r.max_frequency_hz, "maximum " + format_number(*r.max_frequency_hz) + " Hz"});
+  if (r.alternating_from_hz)
+    markers.push_back({*r.alternating_from_hz,
+                       "alternating blows from " + format_number(*r.alternating_from_hz) + " Hz"});
   auto frequency_plot = [&](const std::string& title, const std::string& y_title, PlotCurve c) {
     PlotSpec plot = time_plot(title, y_title);
     plot.x_title = "frequency (Hz)";
     plot.x_column = "frequency_hz";
     plot.x_unit = "Hz";
     plot.curves.push_back(std::move(c));
-    plot.markers = maximum;
+    plot.markers = markers;
     return plot;
   };
   std::vector<PlotSpec> plots;
@@ -125,12 +130,21 @@ std::vector<PlotSpec> sweep_plots(const SweepResult& r) {
 std::string sweep_summary(const SweepResult& r) {
   std::string text = r.max_frequency_hz ? "maximum " + format_number(*r.max_frequency_hz) + " Hz"
                                         : std::string("no maximum (the first judged cycle fails)");
-  if (!r.limit_found) return text + " (no failure up to the last frequency)";
-  if (!r.first_failure) return text + " (a run stopped while settling)";
-  const CycleResult& f = *r.first_failure;
-  return text + " (first failure: " + failure_words(f.outcome) + ", " + std::to_string(f.strikes) +
-         " strikes, at " + format_number(f.frequency_hz) +
-         " Hz, t = " + format_number(f.t_start_s) + " s)";
+  if (!r.limit_found) {
+    text += " (no failure up to the last frequency)";
+  } else if (!r.first_failure) {
+    text += " (a run stopped while settling)";
+  } else {
+    const CycleResult& f = *r.first_failure;
+    text += " (first failure: " + failure_words(f.outcome) + ", " + std::to_string(f.strikes) +
+            " strikes, at " + format_number(f.frequency_hz) +
+            " Hz, t = " + format_number(f.t_start_s) + " s)";
+  }
+  if (r.alternating_from_hz)
+    text += "; strong and weak blows alternate from " + format_number(*r.alternating_from_hz) +
+            " Hz (period doubling: the limit depends on how the key got there, compare " +
+            (r.mode == SweepMode::chirp ? "--mode steps" : "--mode chirp") + ")";
+  return text;
 }
 
 }  // namespace pat::app

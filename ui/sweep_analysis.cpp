@@ -51,6 +51,10 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
   if (r.max_frequency_hz)
     frequency_marker.push_back(
         {*r.max_frequency_hz, QObject::tr("maximum %1 Hz").arg(number(*r.max_frequency_hz))});
+  if (r.alternating_from_hz)
+    frequency_marker.push_back(
+        {*r.alternating_from_hz,
+         QObject::tr("alternating blows from %1 Hz").arg(number(*r.alternating_from_hz))});
 
   // the summary a class can read out
   if (!r.max_frequency_hz)
@@ -67,9 +71,19 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
                          .arg(stroke)
                          .arg(r.first_failure ? outcome_words(r.first_failure->outcome)
                                               : QObject::tr("a run stopped"));
+  if (r.alternating_from_hz)
+    result.summary +=
+        QObject::tr(
+            " From %1 Hz strong and weak blows alternate: the limit depends on how the key "
+            "got there (compare the %2 mode).")
+            .arg(number(*r.alternating_from_hz))
+            .arg(r.mode == SweepMode::chirp ? QObject::tr("steps") : QObject::tr("chirp"));
 
   result.table = {{QObject::tr("maximum repetition frequency"),
                    r.max_frequency_hz ? number(*r.max_frequency_hz) : QObject::tr("none"), "Hz"},
+                  {QObject::tr("alternating blows from"),
+                   r.alternating_from_hz ? number(*r.alternating_from_hz) : QObject::tr("none"),
+                   r.alternating_from_hz ? "Hz" : ""},
                   {QObject::tr("limit found below the end"),
                    r.limit_found ? QObject::tr("yes") : QObject::tr("no"), ""},
                   {QObject::tr("stroke"), stroke, ""},
@@ -107,6 +121,10 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
     for (const CycleResult& c : r.cycles)
       if (r.max_frequency_hz && c.frequency_hz == *r.max_frequency_hz)
         time_marker.push_back({c.t_end_s, frequency_marker.front().label});
+    // and where the alternation starts, at its first cycle
+    for (const CycleResult& c : r.cycles)
+      if (r.alternating_from_hz && c.frequency_hz == *r.alternating_from_hz)
+        time_marker.push_back({c.t_start_s, frequency_marker.back().label});
     // the key's few degrees and the hammer's tens each get their own axis
     const QString chirp_time = QObject::tr("time (s); the key at %1 Hz + %2 Hz/s × t")
                                    .arg(number(o.f_start_hz))

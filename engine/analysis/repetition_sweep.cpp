@@ -138,6 +138,44 @@ std::size_t longest_run_end(const std::vector<bool>& pass, const std::vector<boo
 
 }  // namespace
 
+std::optional<std::size_t> first_alternating_window(const std::vector<CycleResult>& cycles,
+                                                    int window_cycles) {
+  if (window_cycles < 3) return std::nullopt;
+  std::vector<std::size_t> judged;
+  for (std::size_t i = 0; i < cycles.size(); ++i)
+    if (cycles[i].judged) judged.push_back(i);
+  const auto window = static_cast<std::size_t>(window_cycles);
+  // `run` counts the judged cycles ending at k that alternate with all their predecessors in it
+  std::size_t run = 0;
+  for (std::size_t k = 0; k < judged.size(); ++k) {
+    const CycleResult& c = cycles[judged[k]];
+    if (c.strikes < 1 || c.strike_velocity_mps <= 0.0) {
+      run = 0;
+      continue;
+    }
+    if (run == 0) {
+      run = 1;
+    } else {
+      const double previous = cycles[judged[k - 1]].strike_velocity_mps;
+      const double speed = c.strike_velocity_mps;
+      const bool far_apart =
+          std::max(previous, speed) >= kAlternationRatio * std::min(previous, speed);
+      // the sign of this change must differ from the previous change's
+      const bool turns =
+          run < 2 ||
+          (speed - previous) * (previous - cycles[judged[k - 2]].strike_velocity_mps) < 0.0;
+      if (!far_apart)
+        run = 1;
+      else if (!turns)
+        run = 2;  // the last two cycles still make a start
+      else
+        ++run;
+    }
+    if (run >= window) return judged[k + 1 - window];
+  }
+  return std::nullopt;
+}
+
 void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, SweepResult& result) {
   result.max_frequency_hz.reset();
   result.first_failure.reset();
@@ -147,6 +185,9 @@ void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, Sw
     pass.push_back(c.success());
     counted.push_back(c.judged);
   }
+  result.alternating_from_hz.reset();
+  if (const auto start = first_alternating_window(cycles, window_cycles))
+    result.alternating_from_hz = cycles[*start].frequency_hz;
   std::size_t length = 0;
   const std::size_t end = longest_run_end(pass, counted, length);
   std::size_t from = 0;
@@ -177,8 +218,15 @@ void steps_maximum(const std::vector<FrequencyResult>& frequencies, SweepResult&
   result.max_frequency_hz.reset();
   result.first_failure.reset();
   result.limit_found = false;
+  result.alternating_from_hz.reset();
   std::vector<bool> pass;
-  for (const FrequencyResult& f : frequencies) pass.push_back(f.passed);
+  for (const FrequencyResult& f : frequencies) {
+    pass.push_back(f.passed);
+    const auto judged = std::count_if(f.cycles.begin(), f.cycles.end(),
+                                      [](const CycleResult& c) { return c.judged; });
+    if (!result.alternating_from_hz && first_alternating_window(f.cycles, static_cast<int>(judged)))
+      result.alternating_from_hz = f.frequency_hz;
+  }
   std::size_t length = 0;
   const std::size_t end = longest_run_end(pass, std::vector<bool>(pass.size(), true), length);
   std::size_t from = 0;

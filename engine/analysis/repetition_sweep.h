@@ -47,6 +47,15 @@
 //     leaves the jack, bounces off the string and is thrown again, below about 10 Hz); and above
 //     the limit the jack may still reset in a lucky run of a few cycles. Neither is the range in
 //     which the action repeats, which is the long unbroken run between them.
+//   - ALTERNATING BLOWS (a period doubling): a steady window of judged cycles that all strike,
+//     whose first-strike speeds alternate strong and weak: each speed differs from the next one
+//     by at least kAlternationRatio times, and the differences change sign from cycle to cycle.
+//     The sweep reports the frequency where the first such window starts (chirp: the window's
+//     first cycle; steps: the lowest frequency whose steady window alternates). On the grand's
+//     full stroke the weak blow of such a pair is the one struck twice, and a steady sine
+//     started from rest takes this response from 14.5 Hz while a chirp from below keeps one
+//     blow per cycle further (to 15.5 Hz from 11 Hz, to 17.7 Hz from 8 Hz, at 1 Hz/s): a
+//     frequency reported here tells that the limit depends on how the key got there.
 //   - The first failure reported is the failing cycle (frequency) right after the repeating range;
 //     `limit_found` says that there is one below f_max. When no run is a steady window long
 //     there is no maximum (`max_frequency_hz` empty) and the first failure is the first failing
@@ -122,6 +131,9 @@ struct SweepResult {
   bool limit_found = false;                ///< a failure was found at or below f_max
   /// The failure that ends the maximum (see the definitions); absent when none.
   std::optional<CycleResult> first_failure;
+  /// Where strong and weak blows start to alternate (see the definitions); empty when they never
+  /// do in the band.
+  std::optional<double> alternating_from_hz;
   std::vector<CycleResult> cycles;           ///< chirp: every cycle
   std::vector<FrequencyResult> frequencies;  ///< steps: every frequency in order
   std::string run_status = "ok";             ///< chirp: "ok" or "stopped"
@@ -160,11 +172,24 @@ std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
                                          const std::vector<Impact>& impacts, double merge_s,
                                          int settle_cycles, double run_end_s, bool stopped);
 
+/// Strike speeds of neighbouring alternating blows differ by at least this factor. Measured on
+/// the grand's full stroke in steps: one blow per cycle keeps its neighbours' speeds within a
+/// factor 1.27 (12 Hz: 3.3 and 2.6 m/s), alternating blows differ 2.4–3.3 times (14.5 Hz: 4.4
+/// and 1.4 m/s); 1.5 lies between with room on both sides.
+inline constexpr double kAlternationRatio = 1.5;
+
+/// Index (into `cycles`) of the first cycle of the first window of `window_cycles` consecutive
+/// judged cycles that alternate (definitions above); cycles not judged are skipped. Empty when
+/// there is none or window_cycles < 3 (an alternation needs two differences of opposite sign).
+std::optional<std::size_t> first_alternating_window(const std::vector<CycleResult>& cycles,
+                                                    int window_cycles);
+
 /// The chirp rule over cycles in time order; a run must be at least `window_cycles` long.
-/// Sets max_frequency_hz, limit_found and first_failure of `result`.
+/// Sets max_frequency_hz, limit_found, first_failure and alternating_from_hz of `result`.
 void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, SweepResult& result);
 
-/// The steps rule over frequencies in increasing order; sets the same fields.
+/// The steps rule over frequencies in increasing order; sets the same fields (a frequency
+/// alternates when its judged cycles, at least 3 of them, make one alternating window).
 void steps_maximum(const std::vector<FrequencyResult>& frequencies, SweepResult& result);
 
 /// The input SPEC of a chirp run (motion:chirp:F0:F1:SECONDS:stroke).

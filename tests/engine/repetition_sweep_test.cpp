@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "inputs/key_input.h"
+#include "test_support.h"
 
 namespace pat {
 namespace {
@@ -228,6 +229,78 @@ TEST(RepetitionMaximum, StepsTakesTheTopOfTheLongestRunOfPassingFrequencies) {
                 r);
   EXPECT_EQ(*r.max_frequency_hz, 13.0);  // the longer run 12–13 Hz, not the lone 10 Hz
   EXPECT_EQ(r.first_failure->frequency_hz, 14.0);
+}
+
+// Cycles that each strike once, with the given first-strike speeds (m/s); the first `settle`
+// are not judged.
+std::vector<CycleResult> struck_cycles(const std::vector<double>& speeds, int settle = 0) {
+  std::vector<CycleResult> cycles;
+  for (double v : speeds) {
+    CycleResult c;
+    c.frequency_hz = 10.0 + static_cast<double>(cycles.size());
+    c.strikes = v > 0.0 ? 1 : 0;
+    c.outcome = v > 0.0 ? CycleOutcome::struck_once : CycleOutcome::missed;
+    c.strike_velocity_mps = v;
+    c.judged = static_cast<int>(cycles.size()) >= settle;
+    cycles.push_back(c);
+  }
+  return cycles;
+}
+
+TEST(RepetitionMaximum, AlternatingBlowsAreFoundWhereStrongAndWeakAlternate) {
+  // one blow per cycle with a mild alternation (the grand at 12 Hz: factor 1.27), then strong
+  // and weak blows (14.5 Hz: 4.4 and 1.4 m/s) from index 6
+  const std::vector<CycleResult> grand =
+      struck_cycles({3.3, 2.6, 3.2, 2.6, 3.3, 2.6, 4.4, 1.4, 3.8, 1.3, 3.9, 1.2, 3.8, 1.4});
+  ASSERT_TRUE(first_alternating_window(grand, 8).has_value());
+  EXPECT_EQ(*first_alternating_window(grand, 8), 5u);  // 2.6 → 4.4 already differs 1.7 times
+  EXPECT_FALSE(first_alternating_window(grand, 10).has_value());  // only 9 alternate
+  // far apart but not alternating: a rising ramp has no change of sign
+  EXPECT_FALSE(first_alternating_window(struck_cycles({0.5, 1, 2, 4, 8, 16}), 3).has_value());
+  // a pair of equal speeds restarts the window; a missed cycle breaks it
+  EXPECT_FALSE(first_alternating_window(struck_cycles({4, 1, 4, 4, 1, 4, 0, 1, 4}), 4).has_value());
+  EXPECT_EQ(*first_alternating_window(struck_cycles({4, 1, 4, 4, 1, 4, 1}), 4), 3u);
+  // a ramp's last step can start an alternation
+  EXPECT_EQ(*first_alternating_window(struck_cycles({1, 2, 4, 1, 4}), 3), 1u);
+  // cycles not judged do not count (the start-up from rest)
+  EXPECT_EQ(*first_alternating_window(struck_cycles({4, 1, 4, 3, 1, 3, 1}, 3), 4), 3u);
+  EXPECT_FALSE(first_alternating_window(struck_cycles({4, 1, 4, 1}, 1), 4).has_value());
+  // an alternation needs at least two changes of sign
+  EXPECT_FALSE(first_alternating_window(struck_cycles({4, 1, 4, 1}), 2).has_value());
+
+  SweepResult r;
+  chirp_maximum(grand, 4, r);
+  ASSERT_TRUE(r.alternating_from_hz.has_value());
+  EXPECT_EQ(*r.alternating_from_hz, 15.0);  // index 5
+  chirp_maximum(struck_cycles({3, 3, 3, 3, 3}), 4, r);
+  EXPECT_FALSE(r.alternating_from_hz.has_value());  // reset by a sweep without alternation
+
+  FrequencyResult steady, alternating;
+  steady.frequency_hz = 14.0;
+  steady.passed = true;
+  steady.cycles = struck_cycles({2.0, 3.0, 2.9, 3.0, 2.9, 3.0}, 2);
+  alternating.frequency_hz = 14.5;
+  alternating.cycles = struck_cycles({2.0, 3.0, 4.4, 1.4, 3.8, 1.3}, 2);
+  steps_maximum({steady, alternating, alternating}, r);
+  ASSERT_TRUE(r.alternating_from_hz.has_value());
+  EXPECT_EQ(*r.alternating_from_hz, 14.5);
+}
+
+// The grand's full stroke has two responses from 14.5 Hz (README, Limits): a steady sine started
+// from rest falls into strong and weak blows in turn, which the steps mode reports; at 14 Hz one
+// blow per cycle.
+TEST(RepetitionSweep, StepsReportWhereTheGrandsBlowsStartToAlternate) {
+  const ActionModel grand = test::shipped("grand");
+  SweepOptions o;
+  o.mode = SweepMode::steps;
+  o.f_start_hz = 14.0;
+  o.f_max_hz = 14.5;
+  o.step_hz = 0.5;
+  const SweepResult r = run_repetition_sweep(grand, o);
+  ASSERT_EQ(r.frequencies.size(), 2u);
+  EXPECT_TRUE(r.frequencies[0].passed);
+  ASSERT_TRUE(r.alternating_from_hz.has_value());
+  EXPECT_EQ(*r.alternating_from_hz, 14.5);
 }
 
 TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
