@@ -116,15 +116,15 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
   }
   AnalysisGrid grid;
   if (r.mode == SweepMode::chirp) {
-    // the trace in the chirp's time, the maximum where its cycle ends
+    // the trace in the chirp's time, the maximum where its cycle ends and the alternation where
+    // its first cycle starts
     std::vector<AnalysisMarker> time_marker;
-    for (const CycleResult& c : r.cycles)
+    for (const CycleResult& c : r.cycles) {
       if (r.max_frequency_hz && c.frequency_hz == *r.max_frequency_hz)
         time_marker.push_back({c.t_end_s, frequency_marker.front().label});
-    // and where the alternation starts, at its first cycle
-    for (const CycleResult& c : r.cycles)
       if (r.alternating_from_hz && c.frequency_hz == *r.alternating_from_hz)
         time_marker.push_back({c.t_start_s, frequency_marker.back().label});
+    }
     // the key's few degrees and the hammer's tens each get their own axis
     const QString chirp_time = QObject::tr("time (s); the key at %1 Hz + %2 Hz/s × t")
                                    .arg(number(o.f_start_hz))
