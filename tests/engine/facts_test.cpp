@@ -68,7 +68,10 @@ TEST_P(BothActions, RestingActionIsInStaticEquilibrium) {
 TEST_P(BothActions, EveryContactTakesPartInSomeRun) {
   const ActionModel model = test::shipped(GetParam());
   std::set<std::string> touched;
-  for (const char* spec : {"mass:1kg", "force:pulse:50:200", "motion:sine:2", "force:const:0"}) {
+  // force:pulse:50:20, a staccato forte blow: the key let go before the backcheck can hold
+  // the hammer, which falls back onto the grand's hammer rest rail
+  for (const char* spec :
+       {"mass:1kg", "force:pulse:50:200", "force:pulse:50:20", "motion:sine:2", "force:const:0"}) {
     const SimulationResult r = test::run(model, spec, 0.4);
     for (std::size_t c = 0; c < r.trace.columns.size(); ++c) {
       const std::string& column = r.trace.columns[c];

@@ -141,10 +141,11 @@ INSTANTIATE_TEST_SUITE_P(
         // against the side of the tipped jack, above the lever (17.14 mm at +3.5, 17.01 at +4,
         // the lever 0.7 mm below the knuckle)
         MonotoneCase{"grand", "drop", 0, 3},
-        // 19.3 mm at −1.5 to 13.2 mm at +1.5. From −1.75 mm the hammer's tail passes below
-        // the lower end of the backcheck's face and is never caught; from +1.75 mm the face
-        // stops the rising tail and the hammer never reaches the string
-        MonotoneCase{"grand", "checking", -1.5, 1.5}, MonotoneCase{"upright", "key_dip", -2, 2},
+        // 19.3 mm at −1.5 to 14.3 mm at +1.0. From −1.75 mm the hammer's tail passes below
+        // the lower end of the backcheck's face and is never caught; from +1.25 mm the face
+        // (stiff enough to catch a forte rebound on its first pass) stops the rising tail and
+        // the hammer never reaches the string
+        MonotoneCase{"grand", "checking", -1.5, 1.0}, MonotoneCase{"upright", "key_dip", -2, 2},
         // 47.90 mm at −1 to 42.15 mm at +2 (about 1.9 mm of blow per mm of rail). From about
         // −1.4 mm the butt comes down on the jack (the 0.3 mm of lost motion used up) and the
         // jack, not the rail, holds the hammer (48.53 mm at −1.35, 48.78 mm at −1.5 and at −2):

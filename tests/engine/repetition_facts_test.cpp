@@ -94,11 +94,11 @@ void expect_stable_when_rate_halved(std::size_t i) {
 /// Why the grand's F4 tests skip (README, Limits).
 constexpr const char* kGrandF4NotReproduced =
     "Fact F4 not reproduced for the grand (README, Limits): on the regulated grand the half "
-    "stroke repeats only to about 13.2 Hz (the jack, still tripped, carries the returning "
-    "knuckle) and the full stroke past the 16 Hz of the test's chirp band (17.9 Hz from 2 Hz; "
-    "14.0 Hz in steps from rest, which fall into alternating blows from 14.5 Hz); jack and "
-    "repetition springs strong enough for 19.9 Hz at half stroke (-38, -45 N mm) break the "
-    "drop's response to its screw and the regulation from random starts";
+    "stroke repeats only to about 13.2 Hz (the jack, still tipped, carries the returning "
+    "knuckle) and the full stroke to about 19.8 Hz, past the 16 Hz of the test's chirp band "
+    "(17.5 Hz in steps from rest); jack and repetition springs strong enough for a 19.9 Hz half "
+    "stroke (-38, -45 N mm) give a 20.2 Hz full stroke and break the drop's response to its "
+    "screw and the regulation from random starts";
 
 TEST(RepetitionFacts, F4_UprightFullStrokeAbout11To13Hz) {
   expect_in_f4_range(0);

@@ -248,8 +248,8 @@ std::vector<CycleResult> struck_cycles(const std::vector<double>& speeds, int se
 }
 
 TEST(RepetitionMaximum, AlternatingBlowsAreFoundWhereStrongAndWeakAlternate) {
-  // one blow per cycle with a mild alternation (the grand at 12 Hz: factor 1.27), then strong
-  // and weak blows (14.5 Hz: 4.4 and 1.4 m/s) from index 6
+  // one blow per cycle with a mild alternation (factor 1.27), then strong and weak blows (4.4
+  // and 1.4 m/s) from index 6
   const std::vector<CycleResult> grand =
       struck_cycles({3.3, 2.6, 3.2, 2.6, 3.3, 2.6, 4.4, 1.4, 3.8, 1.3, 3.9, 1.2, 3.8, 1.4});
   ASSERT_TRUE(first_alternating_window(grand, 8).has_value());
@@ -286,21 +286,21 @@ TEST(RepetitionMaximum, AlternatingBlowsAreFoundWhereStrongAndWeakAlternate) {
   EXPECT_EQ(*r.alternating_from_hz, 14.5);
 }
 
-// The grand's full stroke has two responses from 14.5 Hz (README, Limits): a steady sine started
-// from rest falls into strong and weak blows in turn, which the steps mode reports; at 14 Hz one
-// blow per cycle.
+// The grand's full stroke, steady sines started from rest: at 16.5 Hz one even blow per cycle
+// (3.1 m/s), at 20 Hz strong and weak blows in turn (5.1-5.4 against 1.9-2.0 m/s, a period
+// doubling), which the steps mode reports.
 TEST(RepetitionSweep, StepsReportWhereTheGrandsBlowsStartToAlternate) {
   const ActionModel grand = test::shipped("grand");
   SweepOptions o;
   o.mode = SweepMode::steps;
-  o.f_start_hz = 14.0;
-  o.f_max_hz = 14.5;
-  o.step_hz = 0.5;
+  o.f_start_hz = 16.5;
+  o.f_max_hz = 20.0;
+  o.step_hz = 3.5;
   const SweepResult r = run_repetition_sweep(grand, o);
   ASSERT_EQ(r.frequencies.size(), 2u);
   EXPECT_TRUE(r.frequencies[0].passed);
   ASSERT_TRUE(r.alternating_from_hz.has_value());
-  EXPECT_EQ(*r.alternating_from_hz, 14.5);
+  EXPECT_EQ(*r.alternating_from_hz, 20.0);
 }
 
 TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
