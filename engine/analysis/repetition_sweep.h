@@ -52,10 +52,10 @@
 //     by at least kAlternationRatio times, and the differences change sign from cycle to cycle.
 //     The sweep reports the frequency where the first such window starts (chirp: the window's
 //     first cycle; steps: the lowest frequency whose steady window alternates). On the grand's
-//     full stroke a steady sine started from rest alternates mildly at 11 Hz (1.5-1.6 times)
-//     and plainly at 20 Hz (5.1-5.4 against 1.9-2.0 m/s), while a chirp from below keeps even
-//     blows to about 19.6 Hz (from 2, 8 or 11 Hz at 1 Hz/s): a frequency reported here tells
-//     that the limit may depend on how the key got there.
+//     full stroke a steady sine started from rest alternates at 10 and 11 Hz (1.6-1.8 times;
+//     1.2-1.4 at 10.5 and 11.5 Hz) and plainly at 20 Hz (5.1-5.4 against 1.9-2.0 m/s), while a
+//     chirp from below keeps even blows to about 19.6 Hz (from 2, 8 or 11 Hz at 1 Hz/s): a
+//     frequency reported here tells that the limit may depend on how the key got there.
 //   - The first failure reported is the failing cycle (frequency) right after the repeating range;
 //     `limit_found` says that there is one below f_max. When no run is a steady window long
 //     there is no maximum (`max_frequency_hz` empty) and the first failure is the first failing
@@ -175,8 +175,8 @@ std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
 /// Strike speeds of neighbouring alternating blows differ by at least this factor. Measured on
 /// the grand's full stroke in steps: one blow per cycle mostly keeps its neighbours' speeds
 /// within a factor 1.3 (1.46 at most, 13.5 Hz: 2.6 and 3.8 m/s, not in turn), the period
-/// doubling at 20 Hz differs 2.6-2.8 times (5.3 and 1.9 m/s); 1.5 lies between. A mild
-/// alternation at 10.5-11.5 Hz (1.2-1.6 times) straddles it and is reported from 11 Hz.
+/// doubling at 20 Hz differs 2.6-2.8 times (5.3 and 1.9 m/s); 1.5 lies between. A milder
+/// alternation at 10-11.5 Hz (1.2-1.8 times) straddles it and is reported from 10 Hz.
 inline constexpr double kAlternationRatio = 1.5;
 
 /// Index (into `cycles`) of the first cycle of the first window of `window_cycles` consecutive
