@@ -17,24 +17,38 @@ namespace {
 
 struct HeldBlow {
   std::size_t impacts = 0;
+  double deepest_mm = 0.0;    // the largest hammer–string gap within 40 ms after the first strike
   double final_gap_mm = 0.0;  // hammer–string gap at the end of the run
   bool ok = false;
 };
 
+/// Each force held on the key for 0.5 s (the strike, the catch and the whippen's settling under
+/// the held key), the runs in parallel.
+std::vector<HeldBlow> held_blows(const ActionModel& model, const std::vector<double>& forces_n) {
+  std::vector<HeldBlow> blows(forces_n.size());
+  run_parallel(forces_n.size(), [&](std::size_t i) {
+    const SimulationResult r = test::run(model, "force:const:" + std::to_string(forces_n[i]), 0.5);
+    const auto impacts = test::events_of(r, "impact");
+    const int gap = r.trace.column_index("hammer_string_gap_mm");
+    HeldBlow& blow = blows[i];
+    blow.ok = r.status == "ok" && gap >= 0 && !r.trace.rows.empty();
+    blow.impacts = impacts.size();
+    if (!blow.ok) return;
+    blow.final_gap_mm = r.trace.rows.back()[gap];
+    if (impacts.empty()) return;
+    const double t_strike = impacts.front()->t;
+    for (const auto& row : r.trace.rows)
+      if (row[0] > t_strike && row[0] < t_strike + 0.04)
+        blow.deepest_mm = std::max(blow.deepest_mm, row[gap]);
+  });
+  return blows;
+}
+
 TEST(HeldBlow, UprightStrikesOnceUnderEveryHeldForceFromFiveToSixtyNewtons) {
   const ActionModel upright = test::shipped("upright");
   const std::vector<double> forces_n = {5, 10, 15, 20, 30, 40, 50, 60};
-  std::vector<HeldBlow> blows(forces_n.size());
-  run_parallel(forces_n.size(), [&](std::size_t i) {
-    // 0.5 s: the strike (9–40 ms), the catch and the whippen's settling under the held key
-    // (a second strike came at 54–110 ms with the earlier preset)
-    const SimulationResult r =
-        test::run(upright, "force:const:" + std::to_string(forces_n[i]), 0.5);
-    const int gap = r.trace.column_index("hammer_string_gap_mm");
-    blows[i].ok = r.status == "ok" && gap >= 0 && !r.trace.rows.empty();
-    blows[i].impacts = test::events_of(r, "impact").size();
-    if (blows[i].ok) blows[i].final_gap_mm = r.trace.rows.back()[gap];
-  });
+  // (a second strike came at 54–110 ms with the earlier preset)
+  const std::vector<HeldBlow> blows = held_blows(upright, forces_n);
   for (std::size_t i = 0; i < forces_n.size(); ++i) {
     std::printf("upright held %2.0f N: %zu impact(s), hammer held %.1f mm from the string\n",
                 forces_n[i], blows[i].impacts, blows[i].final_gap_mm);
@@ -53,26 +67,7 @@ TEST(HeldBlow, GrandCatchesTheReboundOnItsFirstPassUpToTheForteBlow) {
   const ActionModel grand = test::shipped("grand");
   // up to kForteBlowNewtons (40 N), the blow the checking regulation reads
   const std::vector<double> forces_n = {5, 10, 20, 30, 40};
-  struct Catch {
-    std::size_t impacts = 0;
-    double deepest_mm = 0.0;  // the largest gap within 40 ms after the strike
-    double final_gap_mm = 0.0;
-    bool ok = false;
-  };
-  std::vector<Catch> catches(forces_n.size());
-  run_parallel(forces_n.size(), [&](std::size_t i) {
-    const SimulationResult r = test::run(grand, "force:const:" + std::to_string(forces_n[i]), 0.5);
-    const auto impacts = test::events_of(r, "impact");
-    const int gap = r.trace.column_index("hammer_string_gap_mm");
-    catches[i].ok = r.status == "ok" && gap >= 0 && !impacts.empty() && !r.trace.rows.empty();
-    if (!catches[i].ok) return;
-    catches[i].impacts = impacts.size();
-    const double t_strike = impacts.front()->t;
-    for (const auto& row : r.trace.rows)
-      if (row[0] > t_strike && row[0] < t_strike + 0.04)
-        catches[i].deepest_mm = std::max(catches[i].deepest_mm, row[gap]);
-    catches[i].final_gap_mm = r.trace.rows.back()[gap];
-  });
+  const std::vector<HeldBlow> catches = held_blows(grand, forces_n);
   for (std::size_t i = 0; i < forces_n.size(); ++i) {
     std::printf(
         "grand held %2.0f N: %zu impact(s), deepest %.1f mm after the strike, held %.1f mm\n",
