@@ -4,14 +4,8 @@
 # usage: test_bad_input.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
 
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-source_dir="$(cd "$2" && pwd)"
+source "$(dirname "$0")/common.sh"
 grand="$source_dir/presets/grand.json"
-
-work="$(mktemp -d)"
-cleanup() { rm -rf "$work"; }
-trap cleanup EXIT
-cd "$work"
 
 failures=0
 cases=0

@@ -5,11 +5,7 @@
 # usage: test_diagnose.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
 
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-source_dir="$(cd "$2" && pwd)"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 failures=0
 fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
 

@@ -7,10 +7,7 @@
 # usage: test_plot.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -uo pipefail
 
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 export QT_QPA_PLATFORM=offscreen
 export XDG_CONFIG_HOME="$work/config"
 failures=0

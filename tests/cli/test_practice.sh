@@ -4,11 +4,7 @@
 # simulation: fast); teacher files, and a broken one named with its field.
 # usage: test_practice.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-src="$(cd "$2" && pwd)"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 
 # practice new with and without --reveal: same symptoms, the answer only with --reveal
 "$exe" practice new --action grand --seed 11 --json >hidden.json

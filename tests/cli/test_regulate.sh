@@ -3,10 +3,7 @@
 # regulation fails, bad input named.
 # usage: test_regulate.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 
 # regulate: the JSON object has the stable keys; when it does not converge the exit code is
 # non-zero, the message names a setting, and --out is not written

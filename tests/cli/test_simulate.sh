@@ -4,13 +4,7 @@
 # usage: test_simulate.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
 
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-source_dir="$(cd "$2" && pwd)"
-
-work="$(mktemp -d)"
-cleanup() { rm -rf "$work"; }
-trap cleanup EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 
 # check_json FILE [MIN_IMPACTS]: status "ok", the stable keys, and (if MIN_IMPACTS is 1) an impact
 # event with a positive hammer velocity.

@@ -3,10 +3,7 @@
 # DESIGN.md section 5, CSV written with a header, bad input named with exit code 2.
 # usage: test_statics.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 
 "$exe" swing --action grand --json --out swing.csv >swing.json
 python3 - swing.json swing.csv <<'PY'

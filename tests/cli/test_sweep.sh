@@ -3,10 +3,7 @@
 # CSV, bad input named. Narrow bands keep it short.
 # usage: test_sweep.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 
 # chirp: stable keys, per-cycle rows in the CSV agree with the JSON cycles
 "$exe" sweep --action upright --stroke full --fstart 10 --fmax 12 --out cycles.csv --json >chirp.json

@@ -6,11 +6,7 @@
 # usage: test_window.sh PIANOACTION_EXE PROJECT_SOURCE_DIR
 set -euo pipefail
 
-exe="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
-work="$(mktemp -d)"
-cleanup() { rm -rf "$work"; }
-trap cleanup EXIT
-cd "$work"
+source "$(dirname "$0")/common.sh"
 export QT_QPA_PLATFORM=offscreen
 export XDG_CONFIG_HOME="$work/config"
 
