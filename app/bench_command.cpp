@@ -43,8 +43,7 @@ int run_bench(const std::vector<std::string>& args) {
   options.input = cl.value_or("--input", options.input);
   const std::vector<BenchCase> cases = run_bench(options);
   const std::vector<EqualAccuracy> comparisons = compare_at_equal_accuracy(cases);
-  if (plot.write(bench_plots(cases)) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write(bench_plots(cases), !cl.has("--json"));
   if (cl.has("--json")) {
     nlohmann::json list = nlohmann::json::array();
     for (const BenchCase& c : cases)

@@ -82,8 +82,7 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
   times.x_categories = gains.x_categories;
   gains.curves = {std::move(passed_gain), std::move(failed_gain)};
   times.curves = {std::move(wall)};
-  if (plot.write({gains, times}) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write({gains, times}, !cl.has("--json"));
   if (cl.has("--json"))
     std::cout << nlohmann::json{{"cases", cases}, {"passed", passed}, {"total", total}}.dump(1)
               << "\n";

@@ -53,8 +53,7 @@ int run_bench_window(const std::vector<std::string>& args) {
     moves.add(double(i + 1), r.latency_ms[i]);
   }
   latency.curves.push_back(std::move(moves));
-  if (plot.write({latency}) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write({latency}, !cl.has("--json"));
   if (cl.has("--json")) {
     std::cout << nlohmann::json{{"action", options.action},
                                 {"input", options.input},

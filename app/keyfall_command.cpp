@@ -4,6 +4,7 @@
 
 #include "action_setup.h"
 #include "analysis/key_fall.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
 #include "plot_output.h"
@@ -18,19 +19,13 @@ int run_keyfall(const std::vector<std::string>& args) {
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
   const PlotOption plot(cl.value_or("--plot", ""));
   const KeyFallResult result = key_fall(model, options);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) {
-    CsvTable table = result.trace;
-    table.metadata["action"] = model.name;
-    table.metadata["analysis"] = "key fall: key alone released from its rest position";
-    write_csv(out_path, table);
-  }
-  if (plot.write({table_plot(result.trace, "Key front falling", "dip (mm)",
-                             {{"key_front_dip_mm", "key front dip"}}),
-                  table_plot(result.trace, "Front-rail punching", "force (N)",
-                             {{"punching_force_n", "punching force"}})}) &&
-      !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  write_analysis_csv(cl, result.trace, model,
+                     "key fall: key alone released from its rest position");
+  plot.write({table_plot(result.trace, "Key front falling", "dip (mm)",
+                         {{"key_front_dip_mm", "key front dip"}}),
+              table_plot(result.trace, "Front-rail punching", "force (N)",
+                         {{"punching_force_n", "punching force"}})},
+             !cl.has("--json"));
   const bool touched = result.fall_time_s >= 0.0;
   if (cl.has("--json")) {
     nlohmann::json out{

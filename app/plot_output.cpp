@@ -1,5 +1,6 @@
 #include "plot_output.h"
 
+#include <iostream>
 #include <utility>
 
 #include "core/error.h"
@@ -67,6 +68,10 @@ bool PlotOption::write(const std::vector<PlotSpec>& plots) const {
   if (!given()) return false;
   write_plots(path_, plots);
   return true;
+}
+
+void PlotOption::write(const std::vector<PlotSpec>& plots, bool announce) const {
+  if (write(plots) && announce) std::cout << "plot written to " << path_ << "\n";
 }
 
 }  // namespace pat::app

@@ -26,6 +26,9 @@ class PlotOption {
   const std::string& path() const { return path_; }
   /// Writes when given; returns whether it wrote.
   bool write(const std::vector<PlotSpec>& plots) const;
+  /// Writes when given and then, if `announce`, says "plot written to PATH" on stdout (commands
+  /// pass false under --json, whose stdout holds only the JSON object).
+  void write(const std::vector<PlotSpec>& plots, bool announce) const;
 
  private:
   std::string path_;

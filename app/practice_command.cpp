@@ -133,8 +133,7 @@ int run_new(const CommandLine& cl) {
   }
   const std::vector<Symptom> symptoms = describe_symptoms(seen, regulated_seen);
   const std::vector<FaultAnswer> answers = exercise_answers(loaded.exercise);
-  if (plot.write(observation_plots(seen, regulated_seen)) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write(observation_plots(seen, regulated_seen), !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json out = exercise_header(loaded.exercise);

@@ -84,8 +84,7 @@ int run_regulate(const std::vector<std::string>& args) {
   const PlotOption plot(cl.value_or("--plot", ""));
   const RegulationResult result = regulate(model, options);
   // a regulation that failed is plotted too: its steps show where it got stuck
-  if (plot.write(regulation_plots(model, result)) && text)
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write(regulation_plots(model, result), text);
   const std::string out_path = cl.value_or("--out", "");
   // a regulation that did not converge writes nothing: the previous file stays as it was
   if (result.converged && !out_path.empty()) write_preset(result.model, out_path);

@@ -77,8 +77,7 @@ int run_study_compare(const std::vector<std::string>& args) {
   const ComparisonResult result = compare_actions({&grand, &upright}, options);
   const std::string out_path = cl.value_or("--out", "");
   if (!out_path.empty()) write_csv(out_path, result.overlay);
-  if (plot.write(comparison_plots(result)) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write(comparison_plots(result), !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json actions = nlohmann::json::array();

@@ -4,6 +4,7 @@
 
 #include "action_setup.h"
 #include "analysis/double_blow_study.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
 #include "plot_output.h"
@@ -26,20 +27,14 @@ int run_study_double_blow(const std::vector<std::string>& args) {
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
   const PlotOption plot(cl.value_or("--plot", ""));
   const DoubleBlowStudy study = double_blow_study(model, options);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) {
-    CsvTable table = study.trace;
-    table.metadata["action"] = model.name;
-    table.metadata["analysis"] = "double blow with and without bridle strap and butt spring";
-    write_csv(out_path, table);
-  }
-  if (plot.write({table_plot(study.trace, "Hammer under a double blow", "hammer angle (deg)",
-                             {{"both_hammer_angle_deg", "bridle and butt spring"},
-                              {"no_bridle_hammer_angle_deg", "no bridle"},
-                              {"no_butt_spring_hammer_angle_deg", "no butt spring"},
-                              {"neither_hammer_angle_deg", "neither"}})}) &&
-      !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  write_analysis_csv(cl, study.trace, model,
+                     "double blow with and without bridle strap and butt spring");
+  plot.write({table_plot(study.trace, "Hammer under a double blow", "hammer angle (deg)",
+                         {{"both_hammer_angle_deg", "bridle and butt spring"},
+                          {"no_bridle_hammer_angle_deg", "no bridle"},
+                          {"no_butt_spring_hammer_angle_deg", "no butt spring"},
+                          {"neither_hammer_angle_deg", "neither"}})},
+             !cl.has("--json"));
   auto or_null = [](bool known, double value) {
     return known ? nlohmann::json(value) : nlohmann::json(nullptr);
   };

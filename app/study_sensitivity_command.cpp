@@ -77,15 +77,16 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       }
     }
     std::string names;
-    for (std::size_t s = 0; s < result.rows.size(); ++s)
-      names += (s ? " " : "") + std::to_string(s) + "=" + result.rows[s].setting;
+    for (std::size_t s = 0; s < result.rows.size(); ++s) {
+      if (s > 0) names += ' ';
+      names += std::to_string(s) + "=" + result.rows[s].setting;
+    }
     table.metadata["settings"] = names;
     table.metadata["action"] = model.name;
     write_csv(out_path, table);
   }
 
-  if (plot.write(sensitivity_plots(result, options.step_mm)) && !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write(sensitivity_plots(result, options.step_mm), !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json settings = nlohmann::json::array();

@@ -5,8 +5,10 @@
 
 #include "action_setup.h"
 #include "analysis/swing_test.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "plot_output.h"
 
 namespace pat::app {
@@ -23,21 +25,15 @@ int run_swing(const std::vector<std::string>& args) {
   }
   const PlotOption plot(cl.value_or("--plot", ""));
   const SwingResult result = swing_test(model, options);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) {
-    CsvTable table = result.trace;
-    table.metadata["action"] = model.name;
-    table.metadata["analysis"] = "swing test: hammer alone on its flange, released from " +
-                                 std::to_string(options.release_angle_rad * 180.0 / M_PI) +
-                                 " deg from hanging";
-    write_csv(out_path, table);
-  }
-  if (plot.write({table_plot(result.trace, "Hammer swing", "angle from hanging (deg)",
-                             {{"swing_angle_deg", "angle"}}),
-                  table_plot(result.trace, "Swing rate", "rate (deg/s)",
-                             {{"swing_rate_deg_per_s", "rate"}})}) &&
-      !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  write_analysis_csv(cl, result.trace, model,
+                     "swing test: hammer alone on its flange, released from " +
+                         format_number(options.release_angle_rad * 180.0 / M_PI) +
+                         " deg from hanging");
+  plot.write(
+      {table_plot(result.trace, "Hammer swing", "angle from hanging (deg)",
+                  {{"swing_angle_deg", "angle"}}),
+       table_plot(result.trace, "Swing rate", "rate (deg/s)", {{"swing_rate_deg_per_s", "rate"}})},
+      !cl.has("--json"));
   if (cl.has("--json")) {
     nlohmann::json out{{"round_trips", result.round_trips},
                        {"half_swings", result.half_swings},

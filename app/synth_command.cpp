@@ -44,10 +44,9 @@ int run_synth(const std::vector<std::string>& args) {
   const PlotOption plot(cl.value_or("--plot", ""));
   const CsvTable table = synthesize(model, cl.value("--input"), o);
   write_csv(out_path, table);
-  if (plot.write({table_plot(table, "Synthetic measurement", "angle (deg)",
-                             {{"hammer_angle_deg", "hammer"}, {"key_angle_deg", "key"}})}) &&
-      !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  plot.write({table_plot(table, "Synthetic measurement", "angle (deg)",
+                         {{"hammer_angle_deg", "hammer"}, {"key_angle_deg", "key"}})},
+             !cl.has("--json"));
   if (cl.has("--json"))
     std::cout << nlohmann::json{{"out", out_path},
                                 {"samples", table.rows.size()},

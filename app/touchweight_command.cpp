@@ -4,6 +4,7 @@
 
 #include "action_setup.h"
 #include "analysis/touchweight.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
 #include "model/model_variations.h"
@@ -29,21 +30,15 @@ int run_touchweight(const std::vector<std::string>& args) {
     model = with_key_front_lead(model, parse_number(cl.value("--key-lead-g"), "--key-lead-g"));
   const PlotOption plot(cl.value_or("--plot", ""));
   const TouchweightResult result = measure_touchweight(model);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) {
-    CsvTable table = result.table();
-    table.metadata["action"] = model.name;
-    table.metadata["analysis"] = "quasi-static touchweight at the key front (Coulomb friction)";
-    write_csv(out_path, table);
-  }
-  if (plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",
-                             {{"down_weight_g", "downweight"},
-                              {"up_weight_g", "upweight"},
-                              {"balance_weight_g", "balance weight"},
-                              {"friction_weight_g", "friction weight"}},
-                             "dip_mm", "key dip (mm)", "mm")}) &&
-      !cl.has("--json"))
-    std::cout << "plot written to " << plot.path() << "\n";
+  write_analysis_csv(cl, result.table(), model,
+                     "quasi-static touchweight at the key front (Coulomb friction)");
+  plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",
+                         {{"down_weight_g", "downweight"},
+                          {"up_weight_g", "upweight"},
+                          {"balance_weight_g", "balance weight"},
+                          {"friction_weight_g", "friction weight"}},
+                         "dip_mm", "key dip (mm)", "mm")},
+             !cl.has("--json"));
   if (cl.has("--json")) {
     nlohmann::json out{{"downweight_g", result.downweight_g},
                        {"upweight_g", result.upweight_g},
