@@ -105,11 +105,18 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
                           {"metrics", metrics}});
     }
     nlohmann::json baseline = nlohmann::json::object();
-    for (std::size_t m = 0; m < result.metrics.size(); ++m)
+    nlohmann::json ranking = nlohmann::json::object();
+    for (std::size_t m = 0; m < result.metrics.size(); ++m) {
       baseline[result.metrics[m]] = number_or_null(result.baseline[m]);
+      nlohmann::json ranks = nlohmann::json::array();
+      for (const SensitivityRank& rank : rank_by_change(result, m))
+        ranks.push_back({{"setting", rank.setting}, {"change", rank.change}});
+      ranking[result.metrics[m]] = ranks;
+    }
     std::cout << nlohmann::json{{"step_mm", options.step_mm},
                                 {"baseline", baseline},
-                                {"settings", settings}}
+                                {"settings", settings},
+                                {"ranking", ranking}}
                      .dump(1)
               << "\n";
     return 0;
@@ -130,6 +137,20 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       std::cout << std::setw(26) << cell.str();
     }
     std::cout << "\n";
+  }
+  // which screw matters most: the same turn of each adjuster, the largest change first
+  std::cout << "\nlargest change over the -" << options.step_mm << " ... +" << options.step_mm
+            << " mm turn:\n";
+  for (std::size_t m = 0; m < result.metrics.size(); ++m) {
+    std::cout << "  " << std::setw(22) << result.metrics[m];
+    const std::vector<SensitivityRank> ranks = rank_by_change(result, m);
+    for (std::size_t i = 0; i < ranks.size() && i < 3; ++i) {
+      // a setting that leaves the metric alone (a change at rounding level) is not a rank
+      if (i > 0 && !(ranks[i].change > 1e-6 * ranks[0].change)) break;
+      std::cout << (i ? ", " : "") << ranks[i].setting << " " << std::setprecision(3)
+                << ranks[i].change;
+    }
+    std::cout << (ranks.empty() ? "(no setting measurable on both sides)\n" : "\n");
   }
   return 0;
 }

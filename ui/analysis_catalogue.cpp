@@ -239,18 +239,14 @@ AnalysisEntry regulation_sensitivity() {
                                       .arg(number(row.plus[m])),
                                   ""});
       }
-      // the setting that moves impact velocity most, per unit of the measured setting
-      int largest = -1;
-      double largest_change = 0.0;
-      for (std::size_t s = 0; s < r.rows.size(); ++s) {
-        const double d = std::abs(r.rows[s].plus[0] - r.rows[s].minus[0]);
-        if (std::isfinite(d) && d > largest_change) largest = int(s), largest_change = d;
-      }
+      // the setting that moves impact velocity most for the same turn of its adjuster
+      const std::vector<SensitivityRank> ranks = rank_by_change(r, 0);
       result.summary =
-          largest < 0 ? QObject::tr("no setting changed the blow measurably.")
-                      : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
-                            .arg(QString::fromStdString(r.rows[largest].setting))
-                            .arg(number(largest_change));
+          ranks.empty() || !(ranks.front().change > 0.0)
+              ? QObject::tr("no setting changed the blow measurably.")
+              : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
+                    .arg(QString::fromStdString(ranks.front().setting))
+                    .arg(number(ranks.front().change));
       return result;
     };
   };

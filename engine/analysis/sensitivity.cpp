@@ -1,5 +1,6 @@
 #include "analysis/sensitivity.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -175,6 +176,19 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
     result.rows.push_back(std::move(row));
   }
   return result;
+}
+
+std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::size_t metric) {
+  std::vector<SensitivityRank> ranks;
+  for (const SensitivityRow& row : r.rows) {
+    if (metric >= row.minus.size() || metric >= row.plus.size()) continue;
+    const double change = std::abs(row.plus[metric] - row.minus[metric]);
+    if (std::isfinite(change)) ranks.push_back({row.setting, change});
+  }
+  std::stable_sort(
+      ranks.begin(), ranks.end(),
+      [](const SensitivityRank& a, const SensitivityRank& b) { return a.change > b.change; });
+  return ranks;
 }
 
 }  // namespace pat

@@ -60,6 +60,17 @@ struct SensitivityResult {
   std::vector<SensitivityRow> rows;
 };
 
+/// One setting's effect on one metric: |plus − minus|, the metric's change across the adjuster's
+/// −step … +step (the same screw turn for every setting: what a technician compares).
+struct SensitivityRank {
+  std::string setting;
+  double change = 0.0;  ///< in the metric's unit
+};
+
+/// "Which screw matters most" for metric `metric` (an index into r.metrics): the settings by
+/// |plus − minus|, largest first; a setting where the metric is NaN on either side is left out.
+std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::size_t metric);
+
 /// Runs every (setting × {−, 0, +}) × group case in parallel on the available cores. Settings
 /// are those of the model's regulation list. Cancels through `progress` (throws Cancelled).
 SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,

@@ -202,11 +202,14 @@ CsvTable read_csv(const std::string& path) {
       std::string problem;
       if (fields[i].empty()) {
         problem = "column " + column + " is empty (expected a number)";
-      } else if (result == NumberParse::kNotFinite) {
-        problem =
-            "'" + std::string(fields[i]) + "' in column " + column + " is not a finite number";
       } else {
-        problem = "'" + std::string(fields[i]) + "' in column " + column + " is not a number";
+        // appended piece by piece: GCC 12 warns falsely (-Wrestrict, its bug 105651) about
+        // "'" + std::string(...)
+        problem = "'";
+        problem.append(fields[i]);
+        problem += "' in column " + column;
+        problem +=
+            result == NumberParse::kNotFinite ? " is not a finite number" : " is not a number";
       }
       throw InputError(located_message(path, line_label(line_number), problem));
     }

@@ -22,7 +22,8 @@ CsvTable synthesize(const ActionModel& base, const std::string& input_spec, cons
   std::string effects_text;
   for (const Effect& e : o.effects) {
     model = with_effect(model, e);
-    effects_text += (effects_text.empty() ? "" : " ") + describe(e, describe_effect(base, e.name));
+    if (!effects_text.empty()) effects_text += ' ';
+    effects_text += describe(e, describe_effect(base, e.name));
   }
   // the model runs past the end of the file by the offset (samples at t − offset)
   const double run_s = o.duration_s + std::max(0.0, -o.time_offset_s) + 1e-3;

@@ -9,8 +9,8 @@ namespace {
 // they give the drift as a change of the measured value. The adjuster ranges are those that give
 // that change on the shipped presets, whose sensitivities (measured / adjuster, from
 // measure_setting at ±0.1, ±0.3, ±1 mm) are quoted; PracticeSymptoms checks every sense by
-// simulation. Where the present model cannot show one direction (regulation geometry still
-// being fixed on branch `geometry`), the range is one-sided and model_limit says why.
+// simulation. Where the present model cannot show one direction, the range is one-sided and
+// model_limit says why.
 
 const std::vector<NeglectRange> kGrand = {
     {"key_dip", 0.5, 1.5, -1,

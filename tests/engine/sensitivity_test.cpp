@@ -112,6 +112,34 @@ TEST(Sensitivity, BackcheckTooCloseSlowsTheHammer) {
   EXPECT_LT(impact_velocity(closer), impact_velocity(regulated) - 0.1);  // 3.94 against 4.26 m/s
 }
 
+// "Which screw matters most": the settings by |plus − minus| of one metric, largest first.
+TEST(Sensitivity, RanksTheSettingsByTheChangeOfAMetric) {
+  SensitivityResult r;
+  r.metrics = {"impact_velocity_mps", "let_off_time_ms"};
+  auto row = [](const char* name, std::vector<double> minus, std::vector<double> plus) {
+    SensitivityRow out;
+    out.setting = name;
+    out.minus = std::move(minus);
+    out.plus = std::move(plus);
+    return out;
+  };
+  r.rows = {row("a", {1.0, 10.0}, {3.0, 10.0}), row("b", {NAN, 10.0}, {2.0, 12.0}),
+            row("c", {5.0, 9.0}, {0.0, 9.5}), row("d", {2.0, 10.0}, {2.0, 10.0})};
+  const std::vector<SensitivityRank> velocity = rank_by_change(r, 0);
+  ASSERT_EQ(velocity.size(), 3u);  // b has no value on its minus side
+  EXPECT_EQ(velocity[0].setting, "c");
+  EXPECT_DOUBLE_EQ(velocity[0].change, 5.0);  // a decrease counts by its size
+  EXPECT_EQ(velocity[1].setting, "a");
+  EXPECT_DOUBLE_EQ(velocity[1].change, 2.0);
+  EXPECT_EQ(velocity[2].setting, "d");
+  EXPECT_DOUBLE_EQ(velocity[2].change, 0.0);
+  const std::vector<SensitivityRank> let_off = rank_by_change(r, 1);
+  ASSERT_EQ(let_off.size(), 4u);
+  EXPECT_EQ(let_off[0].setting, "b");
+  EXPECT_EQ(let_off[1].setting, "c");
+  EXPECT_TRUE(rank_by_change(r, 2).empty());  // no such metric
+}
+
 TEST(Sensitivity, RejectsANonPositiveStep) {
   SensitivityOptions options;
   options.step_mm = 0.0;
