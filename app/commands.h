@@ -12,6 +12,8 @@ int run_bench(const std::vector<std::string>& args);
 /// bench --window: the trainer window's frame rate and slider latency (bench_window_command.cpp)
 int run_bench_window(const std::vector<std::string>& args);
 int run_regulate(const std::vector<std::string>& args);
+/// measure: the regulation settings read on the action as given, nothing adjusted
+int run_measure(const std::vector<std::string>& args);
 int run_deregulate(const std::vector<std::string>& args);
 int run_swing(const std::vector<std::string>& args);
 int run_keyfall(const std::vector<std::string>& args);

@@ -24,6 +24,8 @@ usage:
                         [--sample-interval S] [--json]
   pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--plot FILE]
                         [--json]
+  pianoaction measure   --action A [--set ADJUSTER=MM]... [--without PART]...
+                        [--effect NAME=VALUE]... [--json]
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--plot FILE] [--json]
@@ -127,6 +129,7 @@ int main(int argc, char** argv) {
     if (command == "simulate") return pat::app::run_simulate(args);
     if (command == "bench") return pat::app::run_bench(args);
     if (command == "regulate") return pat::app::run_regulate(args);
+    if (command == "measure") return pat::app::run_measure(args);
     if (command == "deregulate") return pat::app::run_deregulate(args);
     if (command == "sweep") return pat::app::run_sweep(args);
     if (command == "swing") return pat::app::run_swing(args);
