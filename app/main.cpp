@@ -25,7 +25,7 @@ usage:
   pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--plot FILE]
                         [--json]
   pianoaction measure   --action A [--set ADJUSTER=MM]... [--without PART]...
-                        [--effect NAME=VALUE]... [--json]
+                        [--effect NAME=VALUE]... [--plot FILE] [--json]
   pianoaction deregulate --action A --setting NAME --rate MM_PER_S [--frequency HZ]
                         [--duration S] [--step-interval S] [--set ADJUSTER=MM]... [--out CSV]
                         [--plot FILE] [--json]

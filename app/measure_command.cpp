@@ -7,10 +7,12 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
+#include "plot_output.h"
 #include "regulation/measurements.h"
 
 namespace pat::app {
@@ -43,13 +45,31 @@ std::string padded(const std::string& text, std::size_t width) {
   return text + std::string(characters < width ? width - characters : 1, ' ');
 }
 
+/// Each setting's distance from its target in tolerances (within ±1: regulated); a setting
+/// that cannot be read has no point.
+std::vector<PlotSpec> measure_plots(const std::vector<Reading>& readings) {
+  PlotSpec plot = category_plot("Settings as read: distance from the target",
+                                "measured − target (tolerances)", "setting", "setting_index");
+  PlotCurve distance = point_curve("measured − target", "off_target_tolerances");
+  for (std::size_t i = 0; i < readings.size(); ++i) {
+    const SettingReading& s = readings[i].setting;
+    plot.x_categories.push_back(s.name);
+    if (readings[i].problem.empty()) distance.add(double(i), (s.measured - s.target) / s.tolerance);
+  }
+  plot.curves.push_back(std::move(distance));
+  std::vector<PlotSpec> plots;
+  add_plot(plots, std::move(plot));
+  return plots;
+}
+
 }  // namespace
 
 int run_measure(const std::vector<std::string>& args) {
-  const CommandLine cl(args, {"--action", "--set", "--without", "--effect"}, {"--json"});
+  const CommandLine cl(args, {"--action", "--set", "--without", "--effect", "--plot"}, {"--json"});
   const ActionModel model = load_configured_action(cl);
   if (model.regulation.empty())
     throw InputError(model.source_file + ": the preset lists no regulation settings");
+  const PlotOption plot(cl.value_or("--plot", ""));
   const RestState rest = find_rest_state(model);
   std::vector<Reading> readings;
   bool all_within = true;
@@ -71,6 +91,8 @@ int run_measure(const std::vector<std::string>& args) {
     all_within = all_within && r.problem.empty() && r.setting.within_tolerance();
     readings.push_back(r);
   }
+
+  plot.write(measure_plots(readings), !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json settings = nlohmann::json::array();

@@ -52,6 +52,7 @@ awk 'BEGIN {
 }' >raw.txt
 
 expect regulate 3 regulate --action grand --set let_off=0.3 --quiet
+expect measure 1 measure --action grand --set checking=1
 expect deregulate 4 deregulate --action grand --setting hammer_blow --rate 2 --duration 1
 expect sweep_steps 2 sweep --action grand --stroke full --mode steps --fstart 6 --fmax 7 \
   --step-hz 1
