@@ -12,6 +12,7 @@
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
+#include "json_output.h"
 #include "plot_output.h"
 #include "regulation/measurements.h"
 
@@ -22,10 +23,6 @@ struct Reading {
   SettingReading setting;
   std::string problem;  ///< why it could not be read (empty: read)
 };
-
-nlohmann::json number_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-}
 
 /// A value in a setting's unit as a technician writes it: mm to 0.01, a fraction to 0.001
 /// (a value that rounds to zero is written without a minus sign).
@@ -98,17 +95,15 @@ int run_measure(const std::vector<std::string>& args) {
     nlohmann::json settings = nlohmann::json::array();
     for (std::size_t i = 0; i < readings.size(); ++i) {
       const SettingReading& s = readings[i].setting;
-      settings.push_back(
-          {{"name", s.name},
-           {"measurement", model.regulation[i].measurement},
-           {"unit", s.unit},
-           {"target", s.target},
-           {"tolerance", s.tolerance},
-           {"measured", number_or_null(s.measured)},
-           {"adjuster_mm", s.adjuster_mm},
-           {"within_tolerance", readings[i].problem.empty() && s.within_tolerance()},
-           {"problem", readings[i].problem.empty() ? nlohmann::json(nullptr)
-                                                   : nlohmann::json(readings[i].problem)}});
+      settings.push_back({{"name", s.name},
+                          {"measurement", model.regulation[i].measurement},
+                          {"unit", s.unit},
+                          {"target", s.target},
+                          {"tolerance", s.tolerance},
+                          {"measured", number_or_null(s.measured)},
+                          {"adjuster_mm", s.adjuster_mm},
+                          {"within_tolerance", readings[i].problem.empty() && s.within_tolerance()},
+                          {"problem", text_or_null(readings[i].problem)}});
     }
     std::cout << nlohmann::json{{"action", model.kind},
                                 {"settings", settings},

@@ -7,15 +7,12 @@
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
+#include "json_output.h"
 #include "plot_output.h"
 #include "regulation/regulation.h"
 
 namespace pat::app {
 namespace {
-
-nlohmann::json number_or_null(double x) {
-  return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
-}
 
 /// The steps in the technician's order (each setting's distance from its target, in
 /// tolerances, and the adjuster chosen; a marker where each pass begins), then every setting

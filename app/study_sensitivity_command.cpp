@@ -13,14 +13,11 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "io/csv.h"
+#include "json_output.h"
 #include "plot_output.h"
 
 namespace pat::app {
 namespace {
-
-nlohmann::json number_or_null(double v) {
-  return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
 
 /// One plot per metric: its change from the regulated action with each adjuster moved by
 /// −step and +step, settings side by side (the window's sensitivity plots).
