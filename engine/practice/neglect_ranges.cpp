@@ -26,16 +26,13 @@ const std::vector<NeglectRange> kGrand = {
      "hammer felt wear and capstan felt compression: specs differ by 3 mm (44.5 vs 47.6 mm "
      "[SW]), an uneven hammer line by a few mm, never >5/16 in above the rail [EF10]. Model: "
      "≈12 mm of blow per mm of capstan"},
-    {"let_off", 0.15, 0.3, +1,
+    {"let_off", 0.1, 0.2, +1,
      "let-off drifts by about 1 mm (1/16–1/8 in band [QRS], 1.5–2.5 mm [PTG-L]) as the button "
-     "felt compresses, closer to the string. Model: from −0.25 mm the jack never escapes",
-     -1,
-     "screwing the button down by more than 0.03 mm makes the slow press read 'the jack never "
-     "lifts the hammer' instead of a far let-off (capstan geometry)"},
-    {"drop", 0.1, 0.3, +1,
-     "drop ≤1/16 in (1.6 mm) below let-off [SW][QRS]: a drift of 0.5–1.5 mm. Model: ≈5 mm/mm", +1,
-     "raising the drop screw by more than 0.03 mm lets the repetition lever carry the hammer so "
-     "that the jack never lifts it, instead of a hammer held close to the string"},
+     "felt compresses or the screw turns. Model: ≈6 mm/mm (0.56 mm at −0.2 mm, 2.77 mm at "
+     "+0.2 mm; from +0.25 mm the jack no longer escapes before the key bottoms)"},
+    {"drop", 0.1, 0.2, +1,
+     "drop ≤1/16 in (1.6 mm) below let-off [SW][QRS]: a drift of 0.5–1.5 mm. Model: ≈5 mm/mm "
+     "(2.06 mm at −0.2 mm, 3.93 mm at +0.2 mm; from −0.3 mm the jack no longer escapes)"},
     {"checking", 0.5, 1.0, -1,
      "checking 14–16 mm [ANT], ≈5/8 in [PP]: backcheck wires bend with use by a few mm. Model: "
      "≈−2 mm/mm (the preset's + bends toward the hammer, so the catch comes nearer the "
