@@ -247,26 +247,21 @@ AnalysisEntry regulation_sensitivity() {
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
         QStringList row{QString::fromStdString(r.metrics[m])};
         const std::vector<SensitivityRank> by_change = rank_by_change(r, m);
-        for (std::size_t i = 0; i < 3; ++i) {
-          // a setting that leaves the metric alone (a change at rounding level) is not a rank
-          const bool ranked =
-              i < by_change.size() && (i == 0 || by_change[i].change > 1e-6 * by_change[0].change);
-          row << (ranked ? QObject::tr("%1 (%2)")
-                               .arg(QString::fromStdString(by_change[i].setting))
-                               .arg(number(by_change[i].change))
-                         : QObject::tr("—"));
-        }
+        for (std::size_t i = 0; i < 3; ++i)
+          row << (i < by_change.size() ? QObject::tr("%1 (%2)")
+                                             .arg(QString::fromStdString(by_change[i].setting))
+                                             .arg(number(by_change[i].change))
+                                       : QObject::tr("—"));
         ranking.rows.push_back(row);
       }
       result.grids.push_back(ranking);
       // the setting that moves impact velocity most for the same turn of its adjuster
       const std::vector<SensitivityRank> ranks = rank_by_change(r, 0);
       result.summary =
-          ranks.empty() || !(ranks.front().change > 0.0)
-              ? QObject::tr("no setting changed the blow measurably.")
-              : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
-                    .arg(QString::fromStdString(ranks.front().setting))
-                    .arg(number(ranks.front().change));
+          ranks.empty() ? QObject::tr("no setting changed the blow measurably.")
+                        : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
+                              .arg(QString::fromStdString(ranks.front().setting))
+                              .arg(number(ranks.front().change));
       return result;
     };
   };

@@ -188,6 +188,10 @@ std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::siz
   std::stable_sort(
       ranks.begin(), ranks.end(),
       [](const SensitivityRank& a, const SensitivityRank& b) { return a.change > b.change; });
+  // a setting that leaves the metric alone (e.g. 1e-11 g of downweight from the hammer blow,
+  // the rounding of two static solutions) is no rank
+  const double noise = ranks.empty() ? 0.0 : 1e-6 * ranks.front().change;
+  while (!ranks.empty() && !(ranks.back().change > noise)) ranks.pop_back();
   return ranks;
 }
 

@@ -68,7 +68,8 @@ struct SensitivityRank {
 };
 
 /// "Which screw matters most" for metric `metric` (an index into r.metrics): the settings by
-/// |plus − minus|, largest first; a setting where the metric is NaN on either side is left out.
+/// |plus − minus|, largest first. Left out: a setting where the metric is NaN on either side,
+/// and one whose change is at rounding level (at most 1e-6 of the largest, or none at all).
 std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::size_t metric);
 
 /// Runs every (setting × {−, 0, +}) × group case in parallel on the available cores. Settings
