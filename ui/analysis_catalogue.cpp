@@ -240,10 +240,11 @@ AnalysisEntry regulation_sensitivity() {
                                   ""});
       }
       // which screw matters most: per metric, the settings by the change across the same turn
-      AnalysisGrid ranking{
-          QObject::tr("Which screw matters most"),
-          {QObject::tr("metric"), QObject::tr("1st"), QObject::tr("2nd"), QObject::tr("3rd")},
-          {}};
+      // (the tab is short: the dock is narrow)
+      AnalysisGrid ranking{QObject::tr("Ranking"),
+                           {QObject::tr("metric"), QObject::tr("moves most"), QObject::tr("2nd"),
+                            QObject::tr("3rd")},
+                           {}};
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
         QStringList row{QString::fromStdString(r.metrics[m])};
         const std::vector<SensitivityRank> by_change = rank_by_change(r, m);
