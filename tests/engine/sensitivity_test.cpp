@@ -90,6 +90,37 @@ TEST(Sensitivity, UprightLostMotionWeakensTheBlow) {
   EXPECT_LT(velocity_slope("upright", "lost_motion"), 0.0);
 }
 
+// The same row of the table where it applies in the model: lost motion that uses up the
+// aftertouch. With the capstan 3 mm down the key reaches its punching before the jack trips, and
+// the hammer, thrown instead of driven to let-off, arrives slower than on the regulated action
+// (4.24 against 4.49 m/s under 20 N; 2 mm down, with the key on its punching only 1.4 ms before
+// let-off, it still arrives faster, 4.80 m/s).
+TEST(Sensitivity, UprightLostMotionThatUsesUpTheAftertouchWeakensTheBlow) {
+  struct Blow {
+    double impact_velocity = NAN, key_bottom_t = NAN, escapement_t = NAN;
+  };
+  auto blow = [](const ActionModel& model) {
+    const SimulationResult run = test::run(model, "force:const:20", 0.2);
+    Blow b;
+    for (const SimEvent* e : test::events_of(run, "impact"))
+      if (std::isnan(b.impact_velocity)) b.impact_velocity = e->hammer_velocity;
+    for (const SimEvent* e : test::events_of(run, "key_bottom"))
+      if (std::isnan(b.key_bottom_t)) b.key_bottom_t = e->t;
+    for (const SimEvent* e : test::events_of(run, "escapement"))
+      if (std::isnan(b.escapement_t)) b.escapement_t = e->t;
+    return b;
+  };
+  const ActionModel regulated = test::shipped("upright");
+  const Blow normal = blow(regulated);
+  const Blow slack = blow(with_adjuster(regulated, "lost_motion", -3.0e-3));
+  EXPECT_GT(normal.key_bottom_t, normal.escapement_t);  // regulated: let-off, then the punching
+  // the key bottoms 6 ms before let-off; asking 3 ms keeps the case one where it clearly does
+  EXPECT_LT(slack.key_bottom_t, slack.escapement_t - 3e-3);
+  // 0.25 m/s slower; asking 0.1 m/s (2 % of the blow) keeps it a clear weakening, not a change
+  // at the level of the ±0.5 mm sensitivity (0.19 m/s over the whole ±0.5 mm)
+  EXPECT_LT(slack.impact_velocity, normal.impact_velocity - 0.1);
+}
+
 // "Backcheck too close / high: tail brushes on the way up → lower hammer speed" [ANT][CAUT98]:
 // a smaller checking distance (backcheck closer) gives a slower hammer.
 // (grand only: the upright checks at about 5 mm, its backcheck never meets the hammer on the way
