@@ -7,7 +7,6 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <utility>
 
 #include "action_setup.h"
 #include "commands.h"
@@ -15,14 +14,10 @@
 #include "json_output.h"
 #include "plot_output.h"
 #include "regulation/measurements.h"
+#include "settings_output.h"
 
 namespace pat::app {
 namespace {
-
-struct Reading {
-  SettingReading setting;
-  std::string problem;  ///< why it could not be read (empty: read)
-};
 
 /// A value in a setting's unit as a technician writes it: mm to 0.01, a fraction to 0.001
 /// (a value that rounds to zero is written without a minus sign).
@@ -42,23 +37,6 @@ std::string padded(const std::string& text, std::size_t width) {
   return text + std::string(characters < width ? width - characters : 1, ' ');
 }
 
-/// Each setting's distance from its target in tolerances (within ±1: regulated); a setting
-/// that cannot be read has no point.
-std::vector<PlotSpec> measure_plots(const std::vector<Reading>& readings) {
-  PlotSpec plot = category_plot("Settings as read: distance from the target",
-                                "measured − target (tolerances)", "setting", "setting_index");
-  PlotCurve distance = point_curve("measured − target", "off_target_tolerances");
-  for (std::size_t i = 0; i < readings.size(); ++i) {
-    const SettingReading& s = readings[i].setting;
-    plot.x_categories.push_back(s.name);
-    if (readings[i].problem.empty()) distance.add(double(i), (s.measured - s.target) / s.tolerance);
-  }
-  plot.curves.push_back(std::move(distance));
-  std::vector<PlotSpec> plots;
-  add_plot(plots, std::move(plot));
-  return plots;
-}
-
 }  // namespace
 
 int run_measure(const std::vector<std::string>& args) {
@@ -67,43 +45,20 @@ int run_measure(const std::vector<std::string>& args) {
   if (model.regulation.empty())
     throw InputError(model.source_file + ": the preset lists no regulation settings");
   const PlotOption plot(cl.value_or("--plot", ""));
-  const RestState rest = find_rest_state(model);
-  std::vector<Reading> readings;
+  const std::vector<SettingReading> readings = read_settings(model);
   bool all_within = true;
-  for (const RegulationSetting& s : model.regulation) {
-    Reading r;
-    r.setting.name = s.name;
-    r.setting.unit = s.unit;
-    r.setting.target = s.target;
-    r.setting.tolerance = s.tolerance;
-    r.setting.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
-    try {
-      r.setting.measured = measure_setting(model, s.name, &rest);
-    } catch (const InputError&) {
-      throw;
-    } catch (const std::exception& e) {
-      r.setting.measured = NAN;
-      r.problem = e.what();
-    }
-    all_within = all_within && r.problem.empty() && r.setting.within_tolerance();
-    readings.push_back(r);
-  }
+  for (const SettingReading& r : readings) all_within = all_within && r.within_tolerance();
 
-  plot.write(measure_plots(readings), !cl.has("--json"));
+  plot.write({settings_plot("Settings as read: distance from the target", readings)},
+             !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json settings = nlohmann::json::array();
     for (std::size_t i = 0; i < readings.size(); ++i) {
-      const SettingReading& s = readings[i].setting;
-      settings.push_back({{"name", s.name},
-                          {"measurement", model.regulation[i].measurement},
-                          {"unit", s.unit},
-                          {"target", s.target},
-                          {"tolerance", s.tolerance},
-                          {"measured", number_or_null(s.measured)},
-                          {"adjuster_mm", s.adjuster_mm},
-                          {"within_tolerance", readings[i].problem.empty() && s.within_tolerance()},
-                          {"problem", text_or_null(readings[i].problem)}});
+      nlohmann::json setting = setting_json(readings[i]);
+      setting["measurement"] = model.regulation[i].measurement;
+      setting["problem"] = text_or_null(readings[i].problem);
+      settings.push_back(setting);
     }
     std::cout << nlohmann::json{{"action", model.kind},
                                 {"settings", settings},
@@ -115,18 +70,17 @@ int run_measure(const std::vector<std::string>& args) {
   std::cout << model.name << ": the regulation settings as a technician reads them\n";
   std::cout << padded("setting", 16) << padded("measured", 16) << padded("target", 24)
             << padded("adjuster", 11) << "\n";
-  for (const Reading& r : readings) {
-    const SettingReading& s = r.setting;
+  for (const SettingReading& s : readings) {
     std::ostringstream adjuster;  // signed: which way the adjuster was turned
     adjuster << (s.adjuster_mm < 0.0 ? "" : "+") << number_in(s.adjuster_mm, "mm") << " mm";
     std::cout << padded(s.name, 16)
-              << padded(r.problem.empty() ? number_in(s.measured, s.unit) + " " + s.unit : "-", 16)
+              << padded(s.problem.empty() ? number_in(s.measured, s.unit) + " " + s.unit : "-", 16)
               << padded(number_in(s.target, s.unit) + " ± " + number_in(s.tolerance, s.unit) + " " +
                             s.unit,
                         24)
               << padded(adjuster.str(), 11);
-    if (!r.problem.empty())
-      std::cout << "cannot be read: " << r.problem;
+    if (!s.problem.empty())
+      std::cout << "cannot be read: " << s.problem;
     else if (!s.within_tolerance())
       std::cout << "OUT OF TOLERANCE";
     std::cout << "\n";

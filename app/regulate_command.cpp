@@ -10,6 +10,7 @@
 #include "json_output.h"
 #include "plot_output.h"
 #include "regulation/regulation.h"
+#include "settings_output.h"
 
 namespace pat::app {
 namespace {
@@ -39,17 +40,8 @@ std::vector<PlotSpec> regulation_plots(const ActionModel& model, const Regulatio
   off.curves.push_back(std::move(distance));
   adjusters.curves.push_back(std::move(adjuster));
 
-  PlotSpec settings =
-      category_plot(r.converged ? "Settings after regulation" : "Settings where regulation stopped",
-                    "measured − target (tolerances)", "setting", "setting_index");
-  PlotCurve final_distance = point_curve("measured − target", "off_target_tolerances");
-  for (std::size_t i = 0; i < r.settings.size(); ++i) {
-    const SettingReading& s = r.settings[i];
-    settings.x_categories.push_back(s.name);
-    if (!std::isfinite(s.measured)) continue;
-    final_distance.add(double(i), (s.measured - s.target) / s.tolerance);
-  }
-  settings.curves.push_back(std::move(final_distance));
+  PlotSpec settings = settings_plot(
+      r.converged ? "Settings after regulation" : "Settings where regulation stopped", r.settings);
   std::vector<PlotSpec> plots;
   add_plot(plots, std::move(off));
   add_plot(plots, std::move(adjusters));
@@ -88,14 +80,7 @@ int run_regulate(const std::vector<std::string>& args) {
 
   if (!text) {
     nlohmann::json settings = nlohmann::json::array();
-    for (const SettingReading& r : result.settings)
-      settings.push_back({{"name", r.name},
-                          {"unit", r.unit},
-                          {"target", r.target},
-                          {"tolerance", r.tolerance},
-                          {"measured", number_or_null(r.measured)},
-                          {"adjuster_mm", r.adjuster_mm},
-                          {"within_tolerance", r.within_tolerance()}});
+    for (const SettingReading& r : result.settings) settings.push_back(setting_json(r));
     nlohmann::json steps = nlohmann::json::array();
     for (const RegulationStep& s : result.steps) {
       nlohmann::json step{{"pass", s.pass},

@@ -51,42 +51,19 @@ AnalysisEntry technician_measurements() {
       "press, forte blow), with its target and tolerance");
   e.make = [](std::shared_ptr<const ActionModel> model, const AnalysisSettings&) -> AnalysisTask {
     return [model](const ProgressCallback& progress) {
-      const std::size_t n = model->regulation.size();
-      ProgressReporter reporter(progress, n);
-      std::vector<std::optional<SettingReading>> readings(n);
-      std::vector<std::string> errors(n);
-      const RestState rest = find_rest_state(*model);
-      run_parallel(
-          n,
-          [&](std::size_t i) {
-            const RegulationSetting& s = model->regulation[i];
-            SettingReading r;
-            r.name = s.name;
-            r.unit = s.unit;
-            r.target = s.target;
-            r.tolerance = s.tolerance;
-            try {
-              r.measured = measure_setting(*model, s.name, &rest);
-              readings[i] = r;
-            } catch (const std::exception& ex) {
-              errors[i] = ex.what();
-            }
-          },
-          &reporter);
+      const std::vector<SettingReading> readings = read_settings(*model, progress);
       AnalysisResult result;
       int off = 0;
-      for (std::size_t i = 0; i < n; ++i) {
-        const RegulationSetting& s = model->regulation[i];
-        const QString name = QString::fromStdString(s.name);
-        const QString unit = QString::fromStdString(s.unit);
-        if (!readings[i]) {
+      for (const SettingReading& r : readings) {
+        const QString name = QString::fromStdString(r.name);
+        const QString unit = QString::fromStdString(r.unit);
+        if (!r.problem.empty()) {
           result.table.push_back(
-              {name, QObject::tr("not measurable: %1").arg(QString::fromStdString(errors[i])),
+              {name, QObject::tr("not measurable: %1").arg(QString::fromStdString(r.problem)),
                unit});
           ++off;
           continue;
         }
-        const SettingReading& r = *readings[i];
         const bool ok = r.within_tolerance();
         off += !ok;
         result.table.push_back({name,
@@ -97,9 +74,10 @@ AnalysisEntry technician_measurements() {
                                     .arg(ok ? QString() : QObject::tr("  OUT")),
                                 unit});
       }
-      result.summary = off == 0
-                           ? QObject::tr("Every setting is within its tolerance.")
-                           : QObject::tr("%1 of %2 settings are out of tolerance.").arg(off).arg(n);
+      result.summary = off == 0 ? QObject::tr("Every setting is within its tolerance.")
+                                : QObject::tr("%1 of %2 settings are out of tolerance.")
+                                      .arg(off)
+                                      .arg(readings.size());
       return result;
     };
   };

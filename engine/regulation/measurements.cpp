@@ -5,6 +5,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "analysis/parallel_runs.h"
 #include "core/error.h"
 #include "dynamics/action_dynamics.h"
 #include "regulation/technician_tests.h"
@@ -122,19 +123,36 @@ double measure_setting(const ActionModel& model, const std::string& name,
   throw InputError("setting '" + name + "' has no measurement procedure");
 }
 
-std::vector<SettingReading> measure_settings(const ActionModel& model) {
+std::vector<SettingReading> read_settings(const ActionModel& model,
+                                          const ProgressCallback& progress, unsigned threads) {
   const RestState rest = find_rest_state(model);
-  std::vector<SettingReading> readings;
-  for (const RegulationSetting& s : model.regulation) {
-    SettingReading r;
-    r.name = s.name;
-    r.unit = s.unit;
-    r.target = s.target;
-    r.tolerance = s.tolerance;
-    r.measured = measure_setting(model, s.name, &rest);
-    r.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
-    readings.push_back(r);
-  }
+  std::vector<SettingReading> readings(model.regulation.size());
+  ProgressReporter reporter(progress, readings.size());
+  run_parallel(
+      readings.size(),
+      [&](std::size_t i) {
+        const RegulationSetting& s = model.regulation[i];
+        SettingReading& r = readings[i];
+        r.name = s.name;
+        r.unit = s.unit;
+        r.target = s.target;
+        r.tolerance = s.tolerance;
+        r.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
+        try {
+          r.measured = measure_setting(model, s.name, &rest);
+        } catch (const std::exception& e) {
+          r.measured = std::numeric_limits<double>::quiet_NaN();
+          r.problem = e.what();
+        }
+      },
+      &reporter, threads);
+  return readings;
+}
+
+std::vector<SettingReading> measure_settings(const ActionModel& model) {
+  std::vector<SettingReading> readings = read_settings(model, {}, 1);
+  for (const SettingReading& r : readings)
+    if (!r.problem.empty()) throw std::runtime_error(r.problem);
   return readings;
 }
 

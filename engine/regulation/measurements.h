@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/progress.h"
 #include "model/action_model.h"
 #include "sim/simulation.h"
 
@@ -29,7 +30,9 @@ struct SettingReading {
   double tolerance = 0.0;
   double measured = 0.0;
   double adjuster_mm = 0.0;  ///< adjuster offset from the preset's regulated position
-  bool within_tolerance() const;
+  /// Why the setting could not be read there (measured is then NaN); empty when it was read.
+  std::string problem;
+  bool within_tolerance() const;  ///< false when not read
 };
 
 /// Measures setting `name` of `model` (its unit). `rest` may pass the model's rest state.
@@ -38,7 +41,15 @@ struct SettingReading {
 double measure_setting(const ActionModel& model, const std::string& name,
                        const RestState* rest = nullptr);
 
-/// Every setting of the model's regulation list, in the technician's order.
+/// Every setting of the model's regulation list, in the technician's order, from one rest state.
+/// A setting that cannot be read there gets measured = NaN and its `problem`; the others are
+/// still read. The settings are read in parallel on `threads` threads (0: one per core); each
+/// read one counts as an item of `progress`, which can cancel (throws Cancelled).
+std::vector<SettingReading> read_settings(const ActionModel& model,
+                                          const ProgressCallback& progress = {},
+                                          unsigned threads = 0);
+
+/// The same on one thread, throwing the first setting's problem (std::runtime_error) instead.
 std::vector<SettingReading> measure_settings(const ActionModel& model);
 
 }  // namespace pat
