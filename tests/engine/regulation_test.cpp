@@ -189,8 +189,6 @@ TEST(Regulation, DamperLiftingAfterLetOffIsNotReadAsAFraction) {
   }
 }
 
-// A regulated (here: deliberately offset) preset written and read back measures the same, and
-// its adjusters read 0 again. Tolerance 1e-3 mm: offsets are written to 0.1 µm.
 // Reading every setting at once: a setting that cannot be read (the button 0.3 mm down: no
 // escapement before the key bottoms, so no let-off and no drop) gets its reason and the others
 // are still read, as each reads alone; measure_settings throws that reason instead.
@@ -212,6 +210,8 @@ TEST(Regulation, ReadingEverySettingReportsTheUnreadableOnesAndReadsTheRest) {
   EXPECT_THROW(measure_settings(model), std::runtime_error);
 }
 
+// A regulated (here: deliberately offset) preset written and read back measures the same, and
+// its adjusters read 0 again. Tolerance 1e-3 mm: offsets are written to 0.1 µm.
 TEST(Regulation, WrittenPresetReadsBackWithTheSameMeasurements) {
   ActionModel model = shipped("grand");
   model = with_adjuster(model, "hammer_blow", 0.4e-3);

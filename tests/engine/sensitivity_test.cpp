@@ -97,18 +97,19 @@ TEST(Sensitivity, UprightLostMotionWeakensTheBlow) {
 // let-off, it still arrives faster, 4.80 m/s).
 TEST(Sensitivity, UprightLostMotionThatUsesUpTheAftertouchWeakensTheBlow) {
   struct Blow {
-    double impact_velocity = NAN, key_bottom_t = NAN, escapement_t = NAN;
+    double impact_velocity, key_bottom_t, escapement_t;
   };
   auto blow = [](const ActionModel& model) {
     const SimulationResult run = test::run(model, "force:const:20", 0.2);
-    Blow b;
-    for (const SimEvent* e : test::events_of(run, "impact"))
-      if (std::isnan(b.impact_velocity)) b.impact_velocity = e->hammer_velocity;
-    for (const SimEvent* e : test::events_of(run, "key_bottom"))
-      if (std::isnan(b.key_bottom_t)) b.key_bottom_t = e->t;
-    for (const SimEvent* e : test::events_of(run, "escapement"))
-      if (std::isnan(b.escapement_t)) b.escapement_t = e->t;
-    return b;
+    auto first = [&](const char* type) {  // the first event of that type (pointer into `run`)
+      const auto events = test::events_of(run, type);
+      return events.empty() ? nullptr : events.front();
+    };
+    const SimEvent* impact = first("impact");
+    const SimEvent* bottom = first("key_bottom");
+    const SimEvent* escapement = first("escapement");
+    return Blow{impact ? impact->hammer_velocity : NAN, bottom ? bottom->t : NAN,
+                escapement ? escapement->t : NAN};
   };
   const ActionModel regulated = test::shipped("upright");
   const Blow normal = blow(regulated);
