@@ -1,5 +1,6 @@
 #include "sim/simulator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -7,6 +8,11 @@
 
 namespace pat {
 namespace {
+
+constexpr double kMaxTurnFromRest = M_PI;  // rad
+// a check contact is a catch once the hammer has lost this much of its speed away from the string
+// (as the regulation's checking reading, regulation/technician_tests.h: BackcheckCatch)
+constexpr double kCaughtSpeedFraction = 0.8;
 
 std::string part_name(const ActionModel& model, int body) {
   return body < 0 ? std::string("frame") : model.bodies[body].name;
@@ -108,6 +114,15 @@ bool Simulator::step(double t_max) {
       stop("the simulation diverged (non-finite state)");
       return false;
     }
+    // no part of an action turns half a turn from rest (the largest, the hammer, about 25°; the
+    // contacts stop every part long before): past that, the integration has blown up (a step
+    // far too long, say) even while the numbers are still finite
+    if (std::abs(q1_[i] - rest_.q[i]) > kMaxTurnFromRest) {
+      stop("the simulation diverged: the " + part_name(*model_, i) + " turned " +
+           format_number(std::abs(q1_[i] - rest_.q[i]) * 180.0 / M_PI) +
+           "° from rest (more than half a turn; a shorter step may help)");
+      return false;
+    }
   }
   dynamics_->contact_penetration_bounds(q1_, next_penetration_);
   check_penetrations();
@@ -187,9 +202,32 @@ void Simulator::detect_events() {
     events_.push_back({"impact", t1_, -marks.string_normal.dot(vel), gap_now()});
     impact_since_check_ = true;
   }
-  if (became_active(marks.check_contact) && impact_since_check_) {
-    events_.push_back({"check", t1_, 0.0, gap_now()});
-    impact_since_check_ = false;
+  // check: the backcheck catches the returning hammer. A contact is a catch once it has taken a
+  // fifth of the hammer's speed away from the string; one that opens before is a brush (on the
+  // upright the whippen, flung up as a forte key bottoms, carries the backcheck against the
+  // hammer just after the strike and lets it go on at over 90 % of its speed). The event keeps
+  // the time and gap where the catching contact closed.
+  if (marks.check_contact >= 0) {
+    auto speed_away = [&](const DofVector& q, const DofVector& v) {
+      return marks.string_normal.dot(
+          dynamics_->point_velocity(marks.hammer, marks.strike_point, q, v));
+    };
+    if (became_active(marks.check_contact) && impact_since_check_)
+      pending_check_ = PendingCheck{t1_, gap_now(), speed_away(q0_, v0_)};
+    if (pending_check_) {
+      if (!(current[marks.check_contact] > 0.0)) {
+        pending_check_.reset();  // a brush: the hammer goes on
+      } else if (speed_away(q1_, v1_) <=
+                 kCaughtSpeedFraction * std::max(pending_check_->speed, 0.0)) {
+        const SimEvent check{"check", pending_check_->t, 0.0, pending_check_->gap};
+        // in time order (another event may have come while the catch was being confirmed)
+        auto at = events_.end();
+        while (at != events_.begin() && (at - 1)->t > check.t) --at;
+        events_.insert(at, check);
+        impact_since_check_ = false;
+        pending_check_.reset();
+      }
+    }
   }
   if (became_active(marks.key_bottom_contact)) {
     if (last_key_bottom_ < 0.0 || t1_ - last_key_bottom_ > 5e-3)

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -110,6 +111,12 @@ class Simulator {
   DynamicsReading reading_;  // scratch for trace_row
   int new_events_ = 0;
   bool impact_since_check_ = false;
+  // a check contact that has not yet shown itself a catch: where and when it closed, and the
+  // hammer's speed away from the string just before (m/s)
+  struct PendingCheck {
+    double t = 0.0, gap = 0.0, speed = 0.0;
+  };
+  std::optional<PendingCheck> pending_check_;
   double last_key_bottom_ = -1.0;
   double last_letoff_active_ = -1.0;
 };
