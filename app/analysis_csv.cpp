@@ -4,11 +4,10 @@
 
 namespace pat::app {
 
-void write_analysis_csv(const CommandLine& cl, CsvTable table, const ActionModel& model,
+void write_analysis_csv(const std::string& path, CsvTable table, const ActionModel& model,
                         const std::string& analysis) {
-  const std::string path = cl.value_or("--out", "");
   if (path.empty()) return;
-  table.metadata["action"] = model.name;
+  table.metadata["action"] = model.kind;  // as in every CSV: grand or upright
   table.metadata["analysis"] = analysis;
   write_csv(path, table);
 }

@@ -4,15 +4,15 @@
 
 #include <string>
 
-#include "command_line.h"
 #include "io/csv.h"
 #include "model/action_model.h"
 
 namespace pat::app {
 
-/// Writes `table` to the --out path, when given, with `# action:` (the model's name) and
+/// Writes `table` to `path` (the --out path, checked before the work by
+/// CommandLine::output_path; "" writes nothing) with `# action:` (grand or upright) and
 /// `# analysis:` metadata. Throws InputError naming the file when it cannot be written.
-void write_analysis_csv(const CommandLine& cl, CsvTable table, const ActionModel& model,
+void write_analysis_csv(const std::string& path, CsvTable table, const ActionModel& model,
                         const std::string& analysis);
 
 }  // namespace pat::app

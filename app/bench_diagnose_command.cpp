@@ -9,6 +9,7 @@
 
 #include "action_setup.h"
 #include "commands.h"
+#include "core/error.h"
 #include "measured/hidden_effects.h"
 #include "model/preset_loader.h"
 #include "plot_output.h"
@@ -22,7 +23,18 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
   const int seeds = static_cast<int>(cl.positive_number_or("--seeds", 3));
   const int null_seeds = static_cast<int>(cl.positive_number_or("--null-seeds", 3));
   const std::vector<std::string> only = cl.values("--family");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const std::vector<HiddenEffectRange> ranges = hidden_effect_ranges(model);
+  for (const std::string& family : only)
+    if (std::none_of(ranges.begin(), ranges.end(),
+                     [&](const HiddenEffectRange& r) { return r.effect == family; })) {
+      std::string known;
+      for (const HiddenEffectRange& r : ranges) known += (known.empty() ? "" : ", ") + r.effect;
+      throw InputError("--family " + family + ": not a family of the " + model.kind +
+                       "'s candidate library (" + known + ")");
+    }
+  const unsigned threads =
+      cl.has("--threads") ? static_cast<unsigned>(cl.positive_number("--threads")) : 0;
+  const PlotOption plot(cl.output_path("--plot"));
   nlohmann::json cases = nlohmann::json::array();
   // per case: the gain of the found cause (passed and failed cases apart) and the wall time
   PlotSpec gains =
@@ -67,17 +79,18 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
                 << ", gain " << d.gain * 100 << " %, " << (o.passed ? "PASS" : "FAIL") << " ("
                 << d.wall_time_s << " s, " << d.simulations << " simulations)" << std::endl;
   };
-  for (const HiddenEffectRange& range : hidden_effect_ranges(model)) {
+  for (const HiddenEffectRange& range : ranges) {
     if (!only.empty() && std::find(only.begin(), only.end(), range.effect) == only.end()) continue;
     for (int s = 1; s <= seeds; ++s) {
       const Effect hidden{range.effect, hidden_value(range, static_cast<unsigned long long>(s))};
-      record(run_hidden_effect_case(model, hidden, static_cast<unsigned long long>(s)),
+      record(run_hidden_effect_case(model, hidden, static_cast<unsigned long long>(s), {}, threads),
              static_cast<unsigned long long>(s));
     }
   }
   if (only.empty())
     for (int s = 1; s <= null_seeds; ++s)
-      record(run_hidden_effect_case(model, std::nullopt, static_cast<unsigned long long>(100 + s)),
+      record(run_hidden_effect_case(model, std::nullopt, static_cast<unsigned long long>(100 + s),
+                                    {}, threads),
              static_cast<unsigned long long>(100 + s));
   times.x_categories = gains.x_categories;
   gains.curves = {std::move(passed_gain), std::move(failed_gain)};

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "io/csv.h"
 
 namespace pat::app {
 
@@ -65,6 +66,17 @@ double CommandLine::positive_number(const std::string& option) const {
 
 double CommandLine::positive_number_or(const std::string& option, double fallback) const {
   return has(option) ? positive_number(option) : fallback;
+}
+
+std::string CommandLine::output_path(const std::string& option, bool required) const {
+  if (!has(option) && !required) return "";
+  const std::string path = value(option);  // throws for a missing required option
+  try {
+    check_output_path(path);
+  } catch (const InputError& e) {
+    throw InputError(option + ": " + e.what());
+  }
+  return path;
 }
 
 }  // namespace pat::app

@@ -26,6 +26,10 @@ class CommandLine {
   /// A positive number (seconds, hertz...); names the option in the error.
   double positive_number(const std::string& option) const;
   double positive_number_or(const std::string& option, double fallback) const;
+  /// The path of an output option ("" when absent), checked before any work: not empty, in a
+  /// folder that exists, not a folder (the error names the option).
+  /// `required`: absent is an error too.
+  std::string output_path(const std::string& option, bool required = false) const;
 
  private:
   std::map<std::string, std::vector<std::string>> values_;

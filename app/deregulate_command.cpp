@@ -60,11 +60,12 @@ int run_deregulate(const std::vector<std::string>& args) {
                                 : 0.5;
   if (options.step_interval_s < 0.0)
     throw InputError("--step-interval: must not be negative (0 moves the adjuster continuously)");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const DeregulationResult result = deregulate(model, options);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) write_csv(out_path, result.trace);
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(deregulation_plots(model, options.setting, result));
+  if (!out_path.empty()) write_csv(out_path, result.trace);
 
   if (cl.has("--json")) {
     nlohmann::json samples = nlohmann::json::array();

@@ -1,8 +1,10 @@
 // pianoaction diagnose: what the model gets wrong on measured data, the cause among the
 // candidate extensions, and the gain (DESIGN.md sections 4 and 5).
+#include <cmath>
 #include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <utility>
 
 #include "action_setup.h"
@@ -60,6 +62,19 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
   return plots;
 }
 
+/// --report names a folder (made if missing) in a folder that exists; checked before the run.
+void check_report_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  if (dir.empty()) throw InputError("--report: empty folder name");
+  std::error_code ec;
+  const fs::path path(dir);
+  if (fs::exists(path, ec) && !fs::is_directory(path, ec))
+    throw InputError("--report " + dir + ": it is a file, not a folder");
+  const fs::path parent = path.parent_path();
+  if (!parent.empty() && !fs::is_directory(parent, ec))
+    throw InputError("--report " + dir + ": the folder '" + parent.string() + "' does not exist");
+}
+
 }  // namespace
 
 int run_diagnose(const std::vector<std::string>& args) {
@@ -68,15 +83,23 @@ int run_diagnose(const std::vector<std::string>& args) {
       {"--json"}, {"--measured"});
   const ActionModel model = load_configured_action(cl);
   std::vector<MeasuredTrial> trials;
-  for (const std::string& path : cl.values("--measured"))
+  std::set<std::filesystem::path> seen;
+  for (const std::string& path : cl.values("--measured")) {
+    // a file given twice would count as its own held-out validation
+    if (!seen.insert(std::filesystem::weakly_canonical(path)).second)
+      throw InputError("--measured: " + path +
+                       " is given twice (each trial must be another "
+                       "measurement: the others validate the fit on it)");
     trials.push_back(read_measured(path, model.kind));
+  }
   if (trials.empty())
     throw InputError("missing option --measured (one or more measured CSV files)");
   DiagnoseOptions options;
   options.candidates = cl.values("--candidate");
   if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
   const std::string report = cl.value_or("--report", "");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  if (cl.has("--report")) check_report_folder(report);
+  const PlotOption plot(cl.output_path("--plot"));
   const Diagnosis d = diagnose(model, trials, options);
   const nlohmann::json json = diagnosis_json(d);
   if (!report.empty()) {
@@ -97,9 +120,15 @@ int run_diagnose(const std::vector<std::string>& args) {
   for (std::size_t i = 0; i < d.discrepancies.size() && i < 12; ++i)
     std::cout << "  " << d.discrepancies[i] << "\n";
   std::cout << "ranking (" << (d.held_out ? "held-out" : "training, a single trial") << " rms):\n";
-  for (const CandidateFit& c : d.ranking)
-    std::cout << "  " << c.effect << " = " << c.value << " " << c.unit << ": "
-              << c.validated_rms_deg << " deg" << (c.completed ? "" : " (" + c.note + ")") << "\n";
+  for (const CandidateFit& c : d.ranking) {
+    std::cout << "  " << c.effect << " = " << c.value << " " << c.unit << ": ";
+    if (std::isfinite(c.validated_rms_deg))
+      std::cout << c.validated_rms_deg << " deg";
+    else
+      std::cout << "not validated";
+    if (!c.note.empty()) std::cout << " (" << c.note << ")";
+    std::cout << "\n";
+  }
   if (d.cause)
     std::cout << "cause: " << d.cause->name << " = " << d.cause->value << " " << d.cause_unit
               << "\n";

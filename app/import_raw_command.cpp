@@ -54,8 +54,8 @@ int run_import_raw(const std::vector<std::string>& args) {
   const CommandLine cl(options, kValueOptions, {"--json"});
   if (raw_path.empty())
     throw InputError("missing the raw trace file (import-raw RAW --rate HZ ...)");
-  const std::string out_path = cl.value("--out");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const std::string out_path = cl.output_path("--out", true);
+  const PlotOption plot(cl.output_path("--plot"));
 
   RawImportOptions o;
   if (!cl.has("--rate")) throw InputError("missing option --rate (samples per second of RAW)");
@@ -71,7 +71,6 @@ int run_import_raw(const std::vector<std::string>& args) {
   const RawTrace trace = read_raw_trace(raw_path, column, bits);
   o.contact_angle_deg = hammer_contact_angle_deg(model);
   const RawImport result = import_raw(trace, o);
-  write_csv(out_path, result.table);
   std::vector<PlotSpec> plots;
   PlotSpec angle = table_plot(result.table, "Imported hammer angle", "hammer angle (deg)",
                               {{"hammer_angle_deg", "hammer"}});
@@ -81,7 +80,9 @@ int run_import_raw(const std::vector<std::string>& args) {
   add_plot(plots, std::move(angle));
   add_plot(plots, table_plot(result.table, "Raw sensor reading", "reading (fraction of full scale)",
                              {{"sensor_reading", "reading"}}));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(plots);
+  write_csv(out_path, result.table);
 
   const std::size_t samples = result.table.rows.size();
   if (cl.has("--json")) {

@@ -17,23 +17,27 @@ int run_keyfall(const std::vector<std::string>& args) {
   const ActionModel model = load_configured_action(cl);
   KeyFallOptions options;
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const KeyFallResult result = key_fall(model, options);
-  write_analysis_csv(cl, result.trace, model,
-                     "key fall: key alone released from its rest position");
   plot.write({table_plot(result.trace, "Key front falling", "dip (mm)",
                          {{"key_front_dip_mm", "key front dip"}}),
               table_plot(result.trace, "Front-rail punching", "force (N)",
                          {{"punching_force_n", "punching force"}})},
              !cl.has("--json"));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
+  write_analysis_csv(out_path, result.trace, model,
+                     "key fall: key alone released from its rest position");
   const bool touched = result.fall_time_s >= 0.0;
   if (cl.has("--json")) {
     nlohmann::json out{
         {"fall_time_s", touched ? nlohmann::json(result.fall_time_s) : nlohmann::json(nullptr)},
         {"fall_distance_mm", result.fall_distance_mm},
-        {"impact_velocity_mps", result.impact_velocity_mps},
+        {"impact_velocity_mps",
+         touched ? nlohmann::json(result.impact_velocity_mps) : nlohmann::json(nullptr)},
         {"bounces", result.bounces},
-        {"first_rebound_mm", result.first_rebound_mm},
+        {"first_rebound_mm",
+         touched ? nlohmann::json(result.first_rebound_mm) : nlohmann::json(nullptr)},
         {"final_dip_mm", result.final_dip_mm},
         {"action", model.kind}};
     std::cout << out.dump(1) << "\n";

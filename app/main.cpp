@@ -1,6 +1,9 @@
 // pianoaction: the Piano Action Trainer. Subcommands run headless work (DESIGN.md section 5).
+#include <cmath>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -16,8 +19,8 @@ namespace {
 const char* kUsage = R"(Piano Action Trainer: grand and upright piano actions as multibody models.
 
 usage:
-  pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking] [--screenshot PNG]
-                                                                    the trainer window
+  pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking]
+                        [--size WIDTHxHEIGHT] [--screenshot PNG]      the trainer window
   pianoaction simulate  --action grand|upright|FILE --input SPEC --duration S
                         [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
                         [--without PART]... [--effect NAME=VALUE]... [--out CSV] [--plot FILE]
@@ -78,14 +81,71 @@ butt, let-off button) or of the checking (hammer head and tail, backcheck); View
 screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";
 
+// The usage lines of one subcommand (its entries in kUsage with their continuation lines),
+// then the shared notes from "input SPEC:" on; empty if kUsage has no entry for it.
+std::string subcommand_usage(const std::string& command) {
+  std::istringstream in(kUsage);
+  std::string line, entries, notes;
+  bool in_entry = false, in_notes = false;
+  const std::string head = "  pianoaction " + command + " ";
+  while (std::getline(in, line)) {
+    if (line.rfind("input SPEC:", 0) == 0) in_notes = true;
+    if (in_notes) {
+      notes += line + "\n";
+      continue;
+    }
+    if (line.rfind("  pianoaction ", 0) == 0)
+      in_entry = line.rfind(head, 0) == 0;
+    else if (line.rfind("      ", 0) != 0)
+      in_entry = false;
+    if (in_entry) entries += line + "\n";
+  }
+  return entries.empty() ? std::string() : "usage:\n" + entries + "\n" + notes;
+}
+
+bool asks_for_help(const std::vector<std::string>& args) {
+  for (const std::string& a : args)
+    if (a == "--help" || a == "-h") return true;
+  return false;
+}
+
+// The window needs a display: without one (and no QT_QPA_PLATFORM such as offscreen), Qt would
+// abort; say so instead.
+bool has_display() {
+  auto set = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value != nullptr && *value != '\0';
+  };
+  return set("DISPLAY") || set("WAYLAND_DISPLAY") || set("QT_QPA_PLATFORM");
+}
+
 // The window: no subcommand, or only --action / --view / --screenshot.
 int run_window(int argc, char** argv, const std::vector<std::string>& args) {
 #ifdef PAT_HAVE_UI
-  const pat::app::CommandLine cl(args, {"--action", "--view", "--screenshot"}, {});
+  const pat::app::CommandLine cl(args, {"--action", "--view", "--screenshot", "--size"}, {});
+  if (!has_display())
+    throw pat::InputError(
+        "no display to open the window on (DISPLAY and WAYLAND_DISPLAY are not set): start it "
+        "in a desktop session or under xvfb-run, or use a subcommand (pianoaction --help)");
   pat::ui::TrainerOptions options;
   options.action_given = cl.has("--action");
   options.action = cl.value_or("--action", "grand");
   options.screenshot = cl.value_or("--screenshot", "");
+  if (cl.has("--size")) {
+    // WIDTHxHEIGHT in pixels, e.g. 1024x640 (a projector) or 1920x1080
+    const std::string size = cl.value("--size");
+    const auto x = size.find('x');
+    const double w =
+        x == std::string::npos ? 0.0 : pat::app::parse_number(size.substr(0, x), "--size");
+    const double h =
+        x == std::string::npos ? 0.0 : pat::app::parse_number(size.substr(x + 1), "--size");
+    if (!(w >= 640 && h >= 400 && w <= 10000 && h <= 10000) || w != std::floor(w) ||
+        h != std::floor(h))
+      throw pat::InputError(
+          "--size: expected WIDTHxHEIGHT in whole pixels, at least 640x400 (got '" + size + "')");
+    options.width = static_cast<int>(w);
+    options.height = static_cast<int>(h);
+  }
   const std::string view = cl.value_or("--view", "whole");
   if (view == "escapement") {
     options.view = pat::ui::ViewFocus::escapement;
@@ -125,6 +185,13 @@ int main(int argc, char** argv) {
   }
   const std::string command = args[0];
   args.erase(args.begin());
+  if (asks_for_help(args)) {
+    const std::string usage = subcommand_usage(command);
+    if (!usage.empty()) {
+      std::cout << usage;
+      return 0;
+    }
+  }
   try {
     if (command == "simulate") return pat::app::run_simulate(args);
     if (command == "bench") return pat::app::run_bench(args);

@@ -44,7 +44,7 @@ int run_measure(const std::vector<std::string>& args) {
   const ActionModel model = load_configured_action(cl);
   if (model.regulation.empty())
     throw InputError(model.source_file + ": the preset lists no regulation settings");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
   const std::vector<SettingReading> readings = read_settings(model);
   bool all_within = true;
   for (const SettingReading& r : readings) all_within = all_within && r.within_tolerance();

@@ -4,6 +4,7 @@
 //                  [--reveal] [--json]
 // `new` simulates the technician's tests on the hidden and the regulated action and prints the
 // symptoms; `check` judges a diagnosis from the exercise alone (no simulation).
+#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -98,9 +99,14 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
     const std::string unit = o.unit.empty() ? "count" : o.unit;
     PlotSpec& plot = by_unit[unit];
     if (plot.curves.empty()) {
+      // columns named by the unit: each unit's plot has its own observations, so their CSV
+      // columns must not pass for one table (a .csv --plot then says so instead of merging them)
+      std::string slug = unit;
+      for (char& c : slug)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       plot = category_plot("Observed minus regulated (" + unit + ")", "difference (" + unit + ")",
-                           "observation", "observation_index");
-      plot.curves = {point_curve("this action − regulated", "difference")};
+                           "observation", "observation_index_" + slug);
+      plot.curves = {point_curve("this action − regulated", "difference_" + slug)};
     }
     const double x = double(plot.x_categories.size());
     plot.x_categories.push_back(o.id.substr(o.id.find('.') + 1));
@@ -114,7 +120,12 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
 
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string& plot_path = plot.path();
+  if (plot_path.size() >= 4 && plot_path.compare(plot_path.size() - 4, 4, ".csv") == 0)
+    throw InputError("--plot " + plot_path + ": the observations come in several units, one " +
+                     "plot each, and a CSV holds one table: use .png, .pdf or .svg (--json " +
+                     "gives every number)");
   const ActionModel hidden = hidden_model(loaded.model, loaded.exercise);
   std::vector<Observation> regulated_seen, seen;
   try {
@@ -194,6 +205,9 @@ int run_check(const CommandLine& cl) {
     std::cout << (judgement.correct ? "correct" : "not correct") << ", score " << judgement.score
               << "\n";
     for (const std::string& r : judgement.remarks) std::cout << "  " << r << "\n";
+    if (cl.has("--reveal"))
+      for (const FaultAnswer& a : exercise_answers(loaded.exercise))
+        std::cout << "answer: " << a.setting << ":" << a.direction << "\n";
   }
   return 0;
 }

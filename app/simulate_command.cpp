@@ -36,12 +36,13 @@ int run_simulate(const std::vector<std::string>& args) {
   make_integrator(options.integrator, options.integrator_options);  // validates the name early
   const RestState rest = find_rest_state(model);
   const auto input = parse_input_spec(cl.value("--input"), input_context(model, rest));
-  const std::string out_path = cl.value_or("--out", "");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const std::string out_path = cl.output_path("--out");
+  const PlotOption plot(cl.output_path("--plot"));
 
   const SimulationResult result = simulate(model, input.get(), options, &rest);
-  if (!out_path.empty()) write_csv(out_path, result.trace);
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(trace_plots(result.trace));
+  if (!out_path.empty()) write_csv(out_path, result.trace);
 
   if (cl.has("--json")) {
     nlohmann::json out{{"status", result.status},

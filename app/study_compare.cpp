@@ -73,11 +73,12 @@ int run_study_compare(const std::vector<std::string>& args) {
     options.f_max_full_hz = options.f_max_half_hz = cl.positive_number("--fmax");
   const ActionModel grand = load_action("grand");
   const ActionModel upright = load_action("upright");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const ComparisonResult result = compare_actions({&grand, &upright}, options);
-  const std::string out_path = cl.value_or("--out", "");
-  if (!out_path.empty()) write_csv(out_path, result.overlay);
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(comparison_plots(result), !cl.has("--json"));
+  if (!out_path.empty()) write_csv(out_path, result.overlay);
 
   if (cl.has("--json")) {
     nlohmann::json actions = nlohmann::json::array();

@@ -25,16 +25,18 @@ int run_study_double_blow(const std::vector<std::string>& args) {
     if (options.gap_ms < 0.0) throw InputError("--gap-ms must not be negative");
   }
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const DoubleBlowStudy study = double_blow_study(model, options);
-  write_analysis_csv(cl, study.trace, model,
-                     "double blow with and without bridle strap and butt spring");
   plot.write({table_plot(study.trace, "Hammer under a double blow", "hammer angle (deg)",
                          {{"both_hammer_angle_deg", "bridle and butt spring"},
                           {"no_bridle_hammer_angle_deg", "no bridle"},
                           {"no_butt_spring_hammer_angle_deg", "no butt spring"},
                           {"neither_hammer_angle_deg", "neither"}})},
              !cl.has("--json"));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
+  write_analysis_csv(out_path, study.trace, model,
+                     "double blow with and without bridle strap and butt spring");
   auto or_null = [](bool known, double value) {
     return known ? nlohmann::json(value) : nlohmann::json(nullptr);
   };
@@ -44,9 +46,11 @@ int run_study_double_blow(const std::vector<std::string>& args) {
       nlohmann::json item{
           {"name", v.name},
           {"hammer_return_s", or_null(v.hammer_return_s >= 0.0, v.hammer_return_s)},
-          {"second_impact_velocity_mps", v.second_impact_velocity_mps},
+          {"second_impact_velocity_mps",
+           or_null(v.second_impact_t_s >= 0.0, v.second_impact_velocity_mps)},
           {"first_impact_t_s", or_null(v.first_impact_t_s >= 0.0, v.first_impact_t_s)},
-          {"first_impact_velocity_mps", v.first_impact_velocity_mps},
+          {"first_impact_velocity_mps",
+           or_null(v.first_impact_t_s >= 0.0, v.first_impact_velocity_mps)},
           {"second_impact_t_s", or_null(v.second_impact_t_s >= 0.0, v.second_impact_t_s)}};
       if (!v.stop_cause.empty()) item["stop_cause"] = v.stop_cause;
       variants.push_back(item);
@@ -63,7 +67,10 @@ int run_study_double_blow(const std::vector<std::string>& args) {
         std::cout << v.hammer_return_s * 1e3 << " ms after the first impact";
       else
         std::cout << "never within the run";
-      std::cout << ", second impact " << v.second_impact_velocity_mps << " m/s";
+      if (v.second_impact_t_s >= 0.0)
+        std::cout << ", second impact " << v.second_impact_velocity_mps << " m/s";
+      else
+        std::cout << ", no second impact within the run";
       if (!v.stop_cause.empty()) std::cout << "  [" << v.stop_cause << "]";
       std::cout << "\n";
     }

@@ -55,10 +55,12 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   SensitivityOptions options;
   options.step_mm = cl.positive_number_or("--step", 0.5);
   options.groups = sensitivity_metric_groups(cl.positive_number_or("--force", 20.0));
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const SensitivityResult result = sensitivity(model, options);
 
-  const std::string out_path = cl.value_or("--out", "");
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
+  plot.write(sensitivity_plots(result, options.step_mm), !cl.has("--json"));
   if (!out_path.empty()) {
     // one row per setting and side: the setting's measured value and every metric
     CsvTable table;
@@ -79,11 +81,9 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       names += std::to_string(s) + "=" + result.rows[s].setting;
     }
     table.metadata["settings"] = names;
-    table.metadata["action"] = model.name;
+    table.metadata["action"] = model.kind;  // as in every CSV: grand or upright
     write_csv(out_path, table);
   }
-
-  plot.write(sensitivity_plots(result, options.step_mm), !cl.has("--json"));
 
   if (cl.has("--json")) {
     nlohmann::json settings = nlohmann::json::array();

@@ -32,14 +32,15 @@ int run_sweep(const std::vector<std::string>& args) {
                        ")");
     options.window_cycles = static_cast<int>(window);
   }
-  const std::string out_path = cl.value_or("--out", "");
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const std::string out_path = cl.output_path("--out");
+  const PlotOption plot(cl.output_path("--plot"));
   // the chirp run is traced for its plot: a sample every 0.5 ms, ten or more per cycle
   if (plot.given() && options.mode == SweepMode::chirp) options.trace_interval_s = 5e-4;
 
   const SweepResult result = run_repetition_sweep(model, options);
-  if (!out_path.empty()) write_csv(out_path, sweep_cycles_table(result, model));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(sweep_plots(result));
+  if (!out_path.empty()) write_csv(out_path, sweep_cycles_table(result, model));
 
   if (cl.has("--json")) {
     nlohmann::json out = sweep_json(result);

@@ -23,17 +23,19 @@ int run_swing(const std::vector<std::string>& args) {
     if (degrees > 179.0) throw InputError("--release-deg: at most 179 degrees from hanging");
     options.release_angle_rad = degrees * M_PI / 180.0;
   }
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const SwingResult result = swing_test(model, options);
-  write_analysis_csv(cl, result.trace, model,
-                     "swing test: hammer alone on its flange, released from " +
-                         format_number(options.release_angle_rad * 180.0 / M_PI) +
-                         " deg from hanging");
   plot.write(
       {table_plot(result.trace, "Hammer swing", "angle from hanging (deg)",
                   {{"swing_angle_deg", "angle"}}),
        table_plot(result.trace, "Swing rate", "rate (deg/s)", {{"swing_rate_deg_per_s", "rate"}})},
       !cl.has("--json"));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
+  write_analysis_csv(out_path, result.trace, model,
+                     "swing test: hammer alone on its flange, released from " +
+                         format_number(options.release_angle_rad * 180.0 / M_PI) +
+                         " deg from hanging");
   if (cl.has("--json")) {
     nlohmann::json out{{"round_trips", result.round_trips},
                        {"half_swings", result.half_swings},
@@ -44,6 +46,10 @@ int run_swing(const std::vector<std::string>& args) {
                        {"turning_amplitudes_deg", result.turning_amplitudes_deg},
                        {"action", model.kind}};
     std::cout << out.dump(1) << "\n";
+  } else if (result.stopped && result.half_swings == 0) {
+    std::cout << model.name << ": hammer swing test\n  released within the stick angle ("
+              << result.stick_angle_deg
+              << " deg from hanging): the flange's friction holds it, no swing\n";
   } else {
     std::cout << model.name << ": hammer swing test\n  " << result.round_trips << " round trips ("
               << result.half_swings << " half swings), "

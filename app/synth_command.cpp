@@ -20,7 +20,7 @@ int run_synth(const std::vector<std::string>& args) {
       {"--action", "--input", "--duration", "--effect", "--noise-deg", "--fps", "--time-offset-ms",
        "--angle-offset-deg", "--seed", "--set", "--out", "--plot"},
       {"--json"});
-  const std::string out_path = cl.value("--out");
+  const std::string out_path = cl.output_path("--out", true);
   // --set adjusts the base model; the effects go into SynthOptions so that they are recorded
   ActionModel model = load_action(cl.value("--action"));
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
@@ -41,12 +41,13 @@ int run_synth(const std::vector<std::string>& args) {
       throw InputError("--seed must be a whole number ≥ 0");
     o.seed = static_cast<unsigned long long>(seed);
   }
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
   const CsvTable table = synthesize(model, cl.value("--input"), o);
-  write_csv(out_path, table);
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write({table_plot(table, "Synthetic measurement", "angle (deg)",
                          {{"hammer_angle_deg", "hammer"}, {"key_angle_deg", "key"}})},
              !cl.has("--json"));
+  write_csv(out_path, table);
   if (cl.has("--json"))
     std::cout << nlohmann::json{{"out", out_path},
                                 {"samples", table.rows.size()},

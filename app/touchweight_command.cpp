@@ -28,10 +28,9 @@ int run_touchweight(const std::vector<std::string>& args) {
   }
   if (cl.has("--key-lead-g"))
     model = with_key_front_lead(model, parse_number(cl.value("--key-lead-g"), "--key-lead-g"));
-  const PlotOption plot(cl.value_or("--plot", ""));
+  const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");
   const TouchweightResult result = measure_touchweight(model);
-  write_analysis_csv(cl, result.table(), model,
-                     "quasi-static touchweight at the key front (Coulomb friction)");
   plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",
                          {{"down_weight_g", "downweight"},
                           {"up_weight_g", "upweight"},
@@ -39,6 +38,9 @@ int run_touchweight(const std::vector<std::string>& args) {
                           {"friction_weight_g", "friction weight"}},
                          "dip_mm", "key dip (mm)", "mm")},
              !cl.has("--json"));
+  // the plot first: a plot that cannot be written leaves an existing --out file as it was
+  write_analysis_csv(out_path, result.table(), model,
+                     "quasi-static touchweight at the key front (Coulomb friction)");
   if (cl.has("--json")) {
     nlohmann::json out{{"downweight_g", result.downweight_g},
                        {"upweight_g", result.upweight_g},

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "core/types.h"
+#include "inputs/key_input.h"
 #include "sim/key_travel.h"
 
 namespace pat {
@@ -265,6 +266,10 @@ void check_options(const SweepOptions& o) {
   if (!(o.f_max_hz > o.f_start_hz))
     throw InputError("sweep maximum frequency (--fmax) must be above the start frequency " +
                      format_number(o.f_start_hz) + " Hz (got " + format_number(o.f_max_hz) +
+                     " Hz)");
+  if (o.f_max_hz > kMaxKeyMotionHz)
+    throw InputError("sweep maximum frequency (--fmax) must be at most " +
+                     format_number(kMaxKeyMotionHz) + " Hz (got " + format_number(o.f_max_hz) +
                      " Hz)");
   if (o.settle_cycles < 0) throw InputError("settling cycles must not be negative");
   if (o.window_cycles < 1) throw InputError("steady window must have at least one cycle");

@@ -51,6 +51,12 @@ SwingResult swing_test(const ActionModel& action, const SwingOptions& options,
     result.trace.rows.push_back({t, phi * to_deg, rate * to_deg});
   };
   add_row(0.0, phi0, 0.0);
+  // released within the stick angle: the pin's friction holds it where it is, no swing at all
+  if (std::abs(phi0) <= stick) {
+    result.stopped = true;
+    result.stop_time_s = 0.0;
+    return result;
+  }
   double next_sample = options.sample_interval_s;
   double t_prev = 0.0, phi_prev = phi0, rate_prev = 0.0;
   double next_report = 0.0;

@@ -94,6 +94,13 @@ void require_positive(const std::string& spec, double value, const std::string& 
   }
 }
 
+void require_key_frequency(const std::string& spec, double hz, const std::string& what) {
+  require_positive(spec, hz, what, "Hz");
+  if (hz > kMaxKeyMotionHz)
+    spec_error(spec, what + " must be at most " + number_text(kMaxKeyMotionHz) + " Hz (got " +
+                         number_text(hz) + " Hz): no key is moved faster");
+}
+
 class InputBase : public KeyInput {
  public:
   explicit InputBase(std::string spec) : spec_(std::move(spec)) {}
@@ -394,7 +401,7 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
     const std::string form = "expected motion:sine:HZ[:full|half] (hertz)";
     if (f.size() != 3 && f.size() != 4) spec_error(spec, form);
     const double hz = parse_field(spec, f[2], form);
-    require_positive(spec, hz, "the frequency", "Hz");
+    require_key_frequency(spec, hz, "the frequency");
     const bool half = f.size() == 4 && parse_stroke(spec, f[3]);
     require_full_dip(spec, context);
     return std::make_unique<StrokeMotion>(spec, context.full_dip_angle_rad, hz, hz,
@@ -408,8 +415,8 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
     const double f0 = parse_field(spec, f[2], form);
     const double f1 = parse_field(spec, f[3], form);
     const double seconds = parse_field(spec, f[4], form);
-    require_positive(spec, f0, "the start frequency F0", "Hz");
-    require_positive(spec, f1, "the end frequency F1", "Hz");
+    require_key_frequency(spec, f0, "the start frequency F0");
+    require_key_frequency(spec, f1, "the end frequency F1");
     require_positive(spec, seconds, "the sweep duration SECONDS", "s");
     const bool half = f.size() == 6 && parse_stroke(spec, f[5]);
     require_full_dip(spec, context);

@@ -9,6 +9,12 @@
 
 namespace pat {
 
+/// Highest frequency of a key motion (motion:sine, motion:chirp, sweeps), Hz. A finger trills at
+/// about 10–15 Hz and the actions stop repeating near 11–20 Hz (fact F4); 100 Hz leaves room
+/// for any study while refusing numbers that are slips (1e6 Hz: every 1e-5 s step would land
+/// on the same phase and the key would never move).
+constexpr double kMaxKeyMotionHz = 100.0;
+
 /// Prescribed key angle and its first two time derivatives (rad, rad/s, rad/s²).
 struct KeyMotionSample {
   double angle = 0.0;

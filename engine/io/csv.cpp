@@ -266,9 +266,9 @@ std::string format_csv(const CsvTable& table) {
   return out;
 }
 
-void write_csv(const std::string& path, const CsvTable& table) {
+void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;
-  const std::string text = format_csv(table);
+  if (path.empty()) throw InputError("cannot write a file with an empty name");
   const fs::path target(path);
   const fs::path folder = target.parent_path();
   std::error_code ec;
@@ -279,6 +279,14 @@ void write_csv(const std::string& path, const CsvTable& table) {
   if (fs::is_directory(target, ec)) {
     throw InputError(located_message(path, "", "cannot write the file: it is a folder"));
   }
+}
+
+void write_csv(const std::string& path, const CsvTable& table) {
+  namespace fs = std::filesystem;
+  const std::string text = format_csv(table);
+  const fs::path target(path);
+  check_output_path(path);
+  std::error_code ec;
 
   // A unique temporary name next to the target, so the rename stays on one file system.
   std::random_device random;

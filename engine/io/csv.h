@@ -29,6 +29,9 @@ CsvTable read_csv(const std::string& path);
 /// locale-independent). Writes to a temporary file in the same folder and renames it over
 /// `path`, so an existing file is never left half-written. Throws InputError if the file cannot
 /// be written.
+/// Throws InputError (naming the path) unless a file could be written there: a non-empty path
+/// whose folder exists and that is not itself a folder. Commands call it before their work.
+void check_output_path(const std::string& path);
 void write_csv(const std::string& path, const CsvTable& table);
 
 /// The same text as write_csv would write, as a string.

@@ -498,8 +498,12 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     r.data = prepared[j].data;
     r.input_spec = prepared[j].spec;
     r.input_estimated = prepared[j].estimated;
-    r.baseline =
-        simulate_trace(model, prepared[j].spec, prepared[j].model_duration_s, 1e-4, &base_rest);
+    try {
+      r.baseline =
+          simulate_trace(model, prepared[j].spec, prepared[j].model_duration_s, 1e-4, &base_rest);
+    } catch (const InputError& e) {  // a bad '# input:' line: the file that carries it
+      throw InputError(r.path + ": '# input: " + r.input_spec + "': " + e.what());
+    }
     if (!r.baseline.completed)
       throw InputError(r.path + ": the model stops under the input '" + r.input_spec +
                        "': " + r.baseline.stop_cause);

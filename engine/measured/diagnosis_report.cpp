@@ -127,7 +127,7 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
   const nlohmann::json json = diagnosis_json(d);
   namespace fs = std::filesystem;
   std::error_code ec;
-  fs::create_directories(dir, ec);
+  fs::create_directory(dir, ec);  // one level: a mistyped parent is an error, not a new tree
   if (ec || !fs::is_directory(dir))
     throw InputError(dir + ": cannot create the folder (" + ec.message() + ")");
   {

@@ -64,11 +64,13 @@ std::vector<MeasuredTrial> hidden_effect_trials(const ActionModel& model,
 HiddenEffectOutcome run_hidden_effect_case(const ActionModel& model,
                                            const std::optional<Effect>& hidden,
                                            unsigned long long seed,
-                                           const std::vector<std::string>& candidates) {
+                                           const std::vector<std::string>& candidates,
+                                           unsigned threads) {
   HiddenEffectOutcome out;
   out.hidden = hidden;
   DiagnoseOptions options;
   options.candidates = candidates;
+  options.threads = threads;
   out.diagnosis = diagnose(model, hidden_effect_trials(model, hidden, seed), options);
   const auto& cause = out.diagnosis.cause;
   if (!hidden) {

@@ -46,10 +46,11 @@ struct HiddenEffectOutcome {
 };
 
 /// Runs one case: synthesizes the trials and diagnoses them with `candidates` (empty: the whole
-/// library).
+/// library) on `threads` threads (0: every core).
 HiddenEffectOutcome run_hidden_effect_case(const ActionModel& model,
                                            const std::optional<Effect>& hidden,
                                            unsigned long long seed,
-                                           const std::vector<std::string>& candidates = {});
+                                           const std::vector<std::string>& candidates = {},
+                                           unsigned threads = 0);
 
 }  // namespace pat

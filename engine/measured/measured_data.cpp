@@ -37,7 +37,7 @@ MeasuredTrial measured_from_table(const CsvTable& table, const std::string& path
   trial.action = meta("action");
   trial.input_spec = meta("input");
   if (!expected_action.empty() && !trial.action.empty() && trial.action != expected_action)
-    throw InputError(path + ": the data were measured on a " + trial.action +
+    throw InputError(path + ": the data were measured on the " + trial.action +
                      " action ('# action: " + trial.action + "') but the " + expected_action +
                      " action was requested");
   trial.t = table.column("time_s");

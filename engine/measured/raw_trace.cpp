@@ -49,10 +49,22 @@ RawTrace read_raw_trace(const std::string& path, int column, int bits) {
   trace.bits = bits;
   std::string text;
   int line_number = 0;
+  int blank_line = 0;  // the first blank line after a sample (0: none yet)
   while (std::getline(in, text)) {
     ++line_number;
     const auto first = text.find_first_not_of(" \t\r");
-    if (first == std::string::npos || text[first] == '#') continue;
+    if (first == std::string::npos) {
+      if (!trace.reading.empty() && blank_line == 0) blank_line = line_number;
+      continue;
+    }
+    if (text[first] == '#') continue;
+    // one sample a line at a fixed rate: a blank line between samples is a lost sample, and
+    // skipping it would shift every later one by a period (blank lines at the end are fine)
+    if (blank_line > 0)
+      throw InputError(located_message(
+          path, "line " + std::to_string(blank_line),
+          "blank line between samples: each line is one sample at the given rate, so a missing "
+          "one would shift the rest in time (remove the line or fill in the sample)"));
     const std::vector<std::string> fields = split_fields(text);
     const std::string where = "line " + std::to_string(line_number);
     if (static_cast<int>(fields.size()) < column)

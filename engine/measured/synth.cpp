@@ -12,6 +12,9 @@ namespace pat {
 
 CsvTable synthesize(const ActionModel& base, const std::string& input_spec, const SynthOptions& o) {
   if (!(o.fps > 0) || !std::isfinite(o.fps)) throw InputError("--fps must be a positive number");
+  // high-speed cameras film at up to about 100,000 frames a second; more is a slip that would
+  // fill the memory with samples
+  if (o.fps > 1e5) throw InputError("--fps must be at most 100000 frames per second");
   if (!(o.duration_s > 0)) throw InputError("--duration must be positive");
   if (!(o.noise_deg >= 0)) throw InputError("--noise-deg must be zero or positive");
   if (!std::isfinite(o.time_offset_s) || std::abs(o.time_offset_s) > 0.1)

@@ -357,11 +357,15 @@ void apply_regulated_offsets(const PresetReader& r, const json& root, ActionMode
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string path = item_path("adjusters", i, list[i]);
     const double offset = r.number_or(list[i], path, "regulated_offset_mm", 0.0) * kMm;
-    if (std::abs(offset) > 0.05)
-      r.fail(path + ".regulated_offset_mm",
-             "must be within ±50 mm (got " + PresetReader::format(offset / kMm) + ")");
-    if (offset == 0.0) continue;
     const Adjuster original = model.adjusters[i];
+    // a regulation moves the adjuster within its physical range, so its offset lies there too
+    if (offset < original.min || offset > original.max)
+      r.fail(path + ".regulated_offset_mm", "must lie within the adjuster's range_mm [" +
+                                                PresetReader::format(original.min / kMm) + ", " +
+                                                PresetReader::format(original.max / kMm) +
+                                                "] (got " + PresetReader::format(offset / kMm) +
+                                                ")");
+    if (offset == 0.0) continue;
     model.adjusters[i].min = model.adjusters[i].max = offset;
     model = with_adjuster(model, original.name, offset);
     model.adjusters[i].min = original.min;

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "model/model_edits.h"
 #include "regulation/measurements.h"
 #include "sim/key_travel.h"
@@ -81,8 +82,12 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
     const double wanted = start_value + rate * interval * std::floor((t + 1e-9) / interval);
     if (std::abs(wanted - value) > 1e-12) {
       if (wanted < adjuster.min || wanted > adjuster.max) {
-        sim.stop("the adjuster '" + options.setting + "' reached the end of its range (" +
-                 std::to_string(wanted * 1e3) + " mm)");
+        // the turn that would leave the range is not made: the stop names the range and where
+        // the screw stands
+        sim.stop("the adjuster '" + options.setting + "' reached the end of its range [" +
+                 format_number(adjuster.min * 1e3) + ", " + format_number(adjuster.max * 1e3) +
+                 "] mm at " + format_number(value * 1e3) + " mm (the next turn would take it to " +
+                 format_number(wanted * 1e3) + " mm)");
         break;
       }
       value = wanted;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/error.h"
 #include "core/format.h"
 #include "dynamics/action_dynamics.h"
 #include "sim/simulator.h"
@@ -109,6 +110,14 @@ RestState find_rest_state(const ActionModel& model) {
 
 SimulationResult simulate(const ActionModel& model, const KeyInput* input,
                           const SimulationOptions& options, const RestState* given_rest) {
+  // a trace row holds every angle and contact force (about 30 numbers): 5 million rows are over
+  // a gigabyte; more than that is a slip in the sampling interval, refused before any work
+  constexpr double kMaxTraceRows = 5e6;
+  if (options.sample_interval_s > 0.0 &&
+      options.duration_s / options.sample_interval_s > kMaxTraceRows)
+    throw InputError("sampling every " + format_number(options.sample_interval_s) + " s for " +
+                     format_number(options.duration_s) + " s makes more than 5 million trace " +
+                     "rows: sample less often (--sample-interval) or run shorter");
   // the caller owns model and input for the whole call
   Simulator sim(borrow(model), input ? borrow(*input) : nullptr, options, given_rest);
   SimulationResult result;

@@ -157,7 +157,42 @@ fi
 if compgen -G "keep.csv?*" >/dev/null || compgen -G ".keep.csv*" >/dev/null; then
   fail "existing --out file: a temporary file was left behind: $(ls -a)"
 fi
+# a plot that cannot be written (its folder is missing; a CSV plot over several x axes) fails
+# before the --out file is touched
+status=0
+"$exe" simulate --action grand --input mass:1kg --duration 0.05 --out keep.csv \
+  --plot no_such_folder/plot.png >stdout.txt 2>stderr.txt || status=$?
+if [[ $status -ne 2 ]]; then fail "missing --plot folder: exit code $status (expected 2)"; fi
+grep -qF "no_such_folder" stderr.txt || fail "missing --plot folder: not named: $(cat stderr.txt)"
+cmp -s keep.csv keep.expected || fail "missing --plot folder: keep.csv was changed"
+status=0
+"$exe" sweep --action grand --stroke full --fstart 6 --fmax 7 \
+  --out keep.csv --plot several_axes.csv >stdout.txt 2>stderr.txt || status=$?
+if [[ $status -ne 2 ]]; then fail "CSV plot over several axes: exit code $status (expected 2)"; fi
+grep -qF "different x axes" stderr.txt || fail "CSV plot over several axes: $(cat stderr.txt)"
+cmp -s keep.csv keep.expected || fail "CSV plot over several axes: keep.csv was changed"
 if [[ $failures -eq $failures_before ]]; then echo "ok: existing --out file left byte-identical"; fi
+
+# --- impossible numbers are refused before any work ---------------------------------------------
+expect_failure "a key motion faster than any key moves" "motion:sine:1e6|at most 100 Hz" \
+  simulate --action grand --input motion:sine:1e6 --duration 0.05 --out out.csv
+expect_failure "a sweep beyond the key motion limit" "--fmax|at most 100 Hz" \
+  sweep --action grand --stroke full --fstart 6 --fmax 1e9 --out out.csv
+expect_failure "a trace of billions of rows" "--sample-interval|5 million" \
+  simulate --action grand --input mass:1kg --duration 0.05 --sample-interval 1e-12 --out out.csv
+expect_failure "an empty --out name" "--out|empty name" \
+  simulate --action grand --input mass:1kg --duration 0.05 --out ""
+
+# --- a run that blows up says so (a step far too long), it does not report "ok" -------------------
+cases=$((cases + 1))
+status=0
+"$exe" simulate --action grand --input force:const:20 --duration 0.1 --step 0.1 --json \
+  >stdout.txt 2>stderr.txt || status=$?
+if ! grep -q '"status": "stopped"' stdout.txt || ! grep -q "diverged" stdout.txt; then
+  fail "a diverging run: not reported as stopped and diverged: $(cat stdout.txt stderr.txt)"
+else
+  echo "ok: a diverging run is stopped: $(grep stop_cause stdout.txt)"
+fi
 
 echo "$cases cases, $failures failures"
 [[ $failures -eq 0 ]]

@@ -150,6 +150,13 @@ if [[ "$(header_of u.csv)" == *bridle* ]]; then
 fi
 echo "ok: --without bridle removes the bridle column"
 
+# --- the grand without its repetition spring (issue 2): it rests and still strikes -------------
+"$exe" simulate --action grand --input mass:1kg --duration 0.2 --without repetition_spring \
+  --json --out g-nospring.csv >grand-nospring.json ||
+  { echo "FAIL: simulate --without repetition_spring on the grand failed" >&2; exit 1; }
+check_json grand-nospring.json 1
+echo "ok: the grand runs without its repetition spring"
+
 # --- the other integrators ------------------------------------------------------------------------
 for integrator in rodas cvode; do
   for action in grand upright; do
@@ -197,6 +204,12 @@ echo "ok: --out replaces an existing file"
 # --- help -----------------------------------------------------------------------------------------
 "$exe" --help >help.txt
 grep -q "simulate" help.txt || { echo "FAIL: --help does not mention simulate" >&2; exit 1; }
+# a subcommand's own --help: its usage lines and the input SPEC notes, exit 0
+"$exe" simulate --help >simulate-help.txt ||
+  { echo "FAIL: simulate --help failed" >&2; exit 1; }
+grep -q "pianoaction simulate" simulate-help.txt && grep -q "input SPEC" simulate-help.txt &&
+  ! grep -q "pianoaction regulate" simulate-help.txt ||
+  { echo "FAIL: simulate --help: $(cat simulate-help.txt)" >&2; exit 1; }
 echo "ok: --help"
 
 echo "all simulate checks passed"

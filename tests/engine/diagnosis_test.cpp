@@ -54,7 +54,7 @@ TEST(MeasuredData, BadFilesGetClearMessages) {
   const std::string nan = read_error("time_s,hammer_angle_deg\n0,0\n0.0005,nan\n" + rows(30, 5e-4));
   EXPECT_NE(nan.find("line 3"), std::string::npos) << nan;
   EXPECT_NE(read_error("# action: upright\ntime_s,hammer_angle_deg\n" + rows(30, 5e-4))
-                .find("measured on a upright action ('# action: upright') but the grand"),
+                .find("measured on the upright action ('# action: upright') but the grand"),
             std::string::npos);
   EXPECT_NE(read_error("time_s,hammer_angle_deg\n" + rows(30, 5e-3))
                 .find("too slow to resolve the hammer-string impact"),

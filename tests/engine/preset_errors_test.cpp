@@ -13,6 +13,8 @@
 #include "model/action_model.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
+#include "sim/key_travel.h"
+#include "sim/simulation.h"
 
 namespace pat {
 namespace {
@@ -226,6 +228,13 @@ TEST(PresetErrors, ClearFirstNamesAnotherAdjusterWithinItsRange) {
                                      "outside the adjuster's physical range"});
 }
 
+// A regulated offset (written by regulate) lies within the adjuster's physical range.
+TEST(PresetErrors, RegulatedOffsetOutsideTheAdjustersRange) {
+  json preset = preset_json("grand");
+  preset["adjusters"][0]["regulated_offset_mm"] = 50;  // key_dip's range is [-3, 3]
+  expect_preset_error(preset, {"adjusters[0]", "regulated_offset_mm", "range_mm [-3, 3]", "50"});
+}
+
 TEST(PresetErrors, MissingFileNamesThePath) {
   const std::string path = preset_path("no_such_preset");
   try {
@@ -332,6 +341,26 @@ TEST(PresetEdits, WithoutBridleOnTheUpright) {
   ASSERT_EQ(without.removed_parts.size(), 1u);
   EXPECT_EQ(without.removed_parts[0], "bridle");
   EXPECT_GE(upright.strap_index("bridle"), 0);  // the original is unchanged
+}
+
+// Issue 2: --without repetition_spring on the grand. Without the spring nothing holds the
+// lever's front up: it comes to rest on the lever rest (the stand-in for the whippen body under
+// it), the hammer a little lower on its jack, and a blow still strikes.
+TEST(PresetEdits, GrandWithoutTheRepetitionSpringRestsAndStrikes) {
+  const ActionModel grand = without_part(load_action("grand"), "repetition_spring");
+  const RestState rest = find_rest_state(grand);
+  const auto input = parse_input_spec("force:pulse:20:40", input_context(grand, rest));
+  SimulationOptions options;
+  options.duration_s = 0.1;
+  const SimulationResult r = simulate(grand, input.get(), options, &rest);
+  ASSERT_EQ(r.status, "ok") << r.stop_cause;
+  EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(),
+                          [](const SimEvent& e) { return e.type == "impact"; }));
+  // at rest the lever lies on its rest: that contact carries its weight
+  const std::vector<double> rest_force =
+      r.trace.column(column_name("repetition lever–whippen (lever rest)") + "_force_n");
+  ASSERT_FALSE(rest_force.empty());
+  EXPECT_GT(rest_force.front(), 0.0);
 }
 
 TEST(PresetEdits, WithoutBridleOnTheGrandListsRemovableParts) {

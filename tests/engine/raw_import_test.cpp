@@ -312,6 +312,10 @@ TEST(RawImport, BadRawFilesAreNamed) {
                  {"line 2", "neither a normalized reading in [0, 1] nor a whole ADC count"});
   const auto empty = write_file("empty.txt", "# nothing\n\n");
   expect_message(error_of([&] { read_raw_trace(empty, 1); }), {empty, "no samples"});
+  // a blank line between samples would shift the later ones by a period; at the end it is fine
+  const auto gap = write_file("gap.txt", "0.2\n0.3\n\n0.4\n");
+  expect_message(error_of([&] { read_raw_trace(gap, 1); }), {gap, "line 3", "blank line"});
+  EXPECT_EQ(read_raw_trace(write_file("tail.txt", "0.2\n0.3\n\n\n"), 1).reading.size(), 2u);
 }
 
 TEST(RawImport, BadRatesWindowsAndMissingStrikesAreNamed) {

@@ -109,6 +109,18 @@ TEST(SwingTest, MoreFlangeFrictionStopsTheHammerSooner) {
   EXPECT_LT(swing_test(tight).round_trips, swing_test(test::shipped("grand")).round_trips);
 }
 
+// Released within the stick angle (asin(A / m g d), about 4.9° on the grand) the pin's friction
+// holds the hammer: it stops where it was let go, at once, without a swing.
+TEST(SwingTest, ReleasedWithinTheStickAngleItDoesNotSwing) {
+  SwingOptions options;
+  options.release_angle_rad = 1.0 * M_PI / 180.0;
+  const SwingResult r = swing_test(test::shipped("grand"), options);
+  ASSERT_GT(r.stick_angle_deg, 1.0);
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.half_swings, 0);
+  EXPECT_EQ(r.stop_time_s, 0.0);
+}
+
 TEST(SwingTest, CancelsThroughItsProgressCallback) {
   // frictionless: it would swing for the whole 30 s
   const ActionModel free = with_hammer_friction(test::shipped("grand"), JointFriction{});
