@@ -43,6 +43,9 @@ void draw_arrow(QPainter& painter, const QPointF& from, const QPointF& to, const
   painter.drawPolygon(tip);
 }
 
+// Pixels per metre at which the whole action fills the view at the window's usual size.
+constexpr double kWholeActionScale = 1500.0;
+
 /// The point of a closed outline polygon (body rest coordinates, m) nearest to `p`.
 Vec2 nearest_outline_point(const std::vector<Vec2>& outline, const Vec2& p) {
   Vec2 best = outline.empty() ? p : outline.front();
@@ -224,7 +227,10 @@ void ActionView::paintEvent(QPaintEvent*) {
 void ActionView::paint_frame(QPainter& painter) {
   const ActionModel& model = *model_;
   QFont label_font = font();
-  label_font.setPointSizeF(std::max(9.0, label_font.pointSizeF()));
+  // labels grow in a close-up (about 1.5 px/mm when the whole action fits a 770 px view), up to
+  // half as large again, so that they stay readable from the back of a classroom
+  const double zoom = std::clamp(std::sqrt(scale_ / kWholeActionScale), 1.0, 1.5);
+  label_font.setPointSizeF(std::max(9.0, label_font.pointSizeF()) * zoom);
   label_font.setBold(true);
   painter.setFont(label_font);
 
@@ -242,6 +248,17 @@ void ActionView::paint_frame(QPainter& painter) {
     const Body& body = model.bodies[b];
     QPolygonF polygon;
     for (const Vec2& p : body.outline) polygon << to_screen(body_point(b, p));
+    // a pivot away from the drawn part (the grand's damper lever turns on a flange behind the
+    // string): the arm that joins them, so that the pivot does not float on its own
+    QPolygonF rest_outline;
+    for (const Vec2& p : body.outline) rest_outline << QPointF(p.x(), p.y());
+    if (!body.outline.empty() &&
+        !rest_outline.containsPoint(QPointF(body.pivot.x(), body.pivot.y()), Qt::OddEvenFill)) {
+      const Vec2 foot = nearest_outline_point(body.outline, body.pivot);
+      painter.setPen(QPen(body_colour(body.name).darker(170), 2.5, Qt::SolidLine, Qt::RoundCap));
+      painter.drawLine(to_screen(body_point(body.parent, body.pivot)),
+                       to_screen(body_point(b, foot)));
+    }
     QColor fill = body_colour(body.name);
     fill.setAlpha(215);
     painter.setPen(QPen(fill.darker(200), 2.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
@@ -346,9 +363,11 @@ void ActionView::paint_frame(QPainter& painter) {
     Vec2 centre = Vec2::Zero();
     for (const Vec2& p : body.outline) centre += p;
     centre /= std::max<std::size_t>(1, body.outline.size());
-    labels.push_back({to_screen(body_point(b, centre)) + QPointF(-16, 5),
-                      QString::fromStdString(body.name), body_colour(body.name).darker(250),
-                      false});
+    // the joint is called "lever" (DESIGN.md); a technician calls the part the repetition lever
+    const QString name =
+        body.name == "lever" ? tr("repetition lever") : QString::fromStdString(body.name);
+    labels.push_back({to_screen(body_point(b, centre)) + QPointF(-16, 5), name,
+                      body_colour(body.name).darker(250), false});
   }
   labels.push_back({key_front + QPointF(-24, 28), tr("finger"), QColor(0, 90, 170), false});
   // the adjustable fixtures (buttons, screws) and the string before the forces, rails last
@@ -375,6 +394,22 @@ void ActionView::paint_frame(QPainter& painter) {
   if (backcheck_label_at)
     fixture_labels.push_back(
         {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true});
+  // the part the jack lifts, where escapement happens: the grand's knuckle (a circle on the
+  // hammer), the upright's butt (the face on the hammer)
+  const int escapement = model.landmarks.escapement_contact;
+  if (escapement >= 0) {
+    const Contact& c = model.contacts[escapement];
+    const int hammer = model.landmarks.hammer;
+    std::optional<QPointF> at;
+    if (c.body_a == hammer && c.radius_a > 0.0)
+      at = to_screen(body_point(hammer, c.center_a)) + QPointF(c.radius_a * scale_ + 3, -6);
+    else if (c.body_b == hammer && c.shape == ContactShape::CircleSegment)
+      at = to_screen(body_point(hammer, 0.5 * (c.segment_start + c.segment_end))) + QPointF(6, -6);
+    if (at)
+      fixture_labels.insert(fixture_labels.begin(),
+                            {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
+                             body_colour(model.bodies[hammer].name).darker(250), true});
+  }
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());

@@ -83,16 +83,20 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   table_->verticalHeader()->hide();
   table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
   table_->setMinimumHeight(70);
+  table_->setWordWrap(false);  // a value on one line (a cut one is in full in its tooltip)
   plot_tabs_ = new QTabWidget(this);
   plot_tabs_->setMinimumHeight(200);
   // the table and the plots share the height; the user drags the handle between them
-  auto* results = new QSplitter(Qt::Vertical, this);
-  results->setChildrenCollapsible(false);
-  results->addWidget(table_);
-  results->addWidget(plot_tabs_);
-  results->setStretchFactor(0, 1);
-  results->setStretchFactor(1, 3);
-  results->setSizes({90, 1000});  // the plots first: the summary line says the headline
+  results_ = new QSplitter(Qt::Vertical, this);
+  results_->setChildrenCollapsible(false);
+  results_->addWidget(table_);
+  results_->addWidget(plot_tabs_);
+  results_->setStretchFactor(0, 1);
+  results_->setStretchFactor(1, 3);
+  results_->hide();  // until there is a result; the summary line says how to get one
+  summary_->setText(
+      tr("Choose an analysis and press Run: it runs on the action in the window, "
+         "as regulated there."));
   export_plots_ = new QPushButton(tr("Export plots…"), this);
   export_table_ = new QPushButton(tr("Export table (CSV)…"), this);
   export_report_ = new QPushButton(tr("Export report…"), this);
@@ -125,13 +129,18 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   layout->addWidget(progress_);
   layout->addWidget(stage_);
   layout->addWidget(summary_);
-  layout->addWidget(results, 1);
+  layout->addWidget(results_, 1);
+  layout->addStretch(0);
   layout->addLayout(export_row);
 
   connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
     const int entry = choice_->itemData(index).toInt();
     description_->setText(index >= 0 ? catalogue_[entry].description : QString());
     rebuild_form(current_model_ ? current_model_().get() : nullptr);
+  });
+  // picking the shown entry again restores its description (a result from elsewhere replaced it)
+  connect(choice_, &QComboBox::activated, this, [this](int index) {
+    if (index >= 0) description_->setText(catalogue_[choice_->itemData(index).toInt()].description);
   });
   connect(run_button_, &QPushButton::clicked, this, [this] {
     if (runner_->running())
@@ -405,6 +414,10 @@ QString AnalysesPanel::summary() const {
   return summary_->text();
 }
 
+QString AnalysesPanel::description() const {
+  return description_->text();
+}
+
 void AnalysesPanel::set_busy(bool busy) {
   run_button_->setText(busy ? tr("Cancel") : tr("Run"));
   choice_->setEnabled(!busy);
@@ -450,6 +463,28 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
     plot_tabs_->setTabToolTip(plot_tabs_->count() - 1, p.title);
   }
   for (const AnalysisGrid& grid : result.grids) add_grid(grid);
+  // a result with a table only gets the whole height; with plots, the table shows up to six
+  // rows (the summary line says the headline) and the plots the rest
+  results_->show();
+  plot_tabs_->setVisible(plot_tabs_->count() > 0);
+  if (plot_tabs_->count() > 0) {
+    const int rows = std::min(table_->rowCount(), 6);
+    const int row_height = table_->verticalHeader()->defaultSectionSize();
+    const int table_height =
+        table_->horizontalHeader()->height() + rows * row_height + 2 * table_->frameWidth() + 2;
+    const int total = std::max(results_->height(), table_height + plot_tabs_->minimumHeight());
+    results_->setSizes({table_height, total - table_height});
+  }
+  // the selector and its description name the analysis shown; a result from elsewhere (the
+  // regulation panel's deregulation demo) says so instead
+  const int entry = choice_->findText(title);
+  if (entry >= 0 && entry != choice_->currentIndex() && !runner_->running()) {
+    choice_->setCurrentIndex(entry);  // its description and form follow
+  } else if (entry < 0) {
+    description_->setText(tr("Shown: %1 (not one of the analyses above; choose one and press "
+                             "Run to replace it).")
+                              .arg(title));
+  }
   result_ = result;
   export_plots_->setEnabled(!plots_.empty());
   export_table_->setEnabled(table_->rowCount() > 0);

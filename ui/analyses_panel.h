@@ -20,6 +20,7 @@ class QFormLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QSplitter;
 class QTableWidget;
 class QTabWidget;
 
@@ -46,6 +47,9 @@ class AnalysesPanel : public QWidget {
   AnalysisRunner* runner() const { return runner_; }
   QStringList analysis_names() const;
   QString summary() const;
+  /// The line under the selector: the chosen analysis's description, or where a shown result
+  /// from elsewhere comes from.
+  QString description() const;
   QTableWidget* table() const { return table_; }
   std::vector<PlotPanel*> plots() const { return plots_; }
   /// The tables of the result that have their own columns (ranking, cycles), one tab each.
@@ -93,6 +97,7 @@ class AnalysesPanel : public QWidget {
   QLabel* summary_;
   QTableWidget* table_;
   QTabWidget* plot_tabs_;
+  QSplitter* results_;  ///< the table above the plot tabs
   QPushButton* export_plots_;
   QPushButton* export_table_;
   QPushButton* export_report_;

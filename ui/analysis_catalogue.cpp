@@ -167,6 +167,36 @@ AnalysisEntry impact_velocity_range() {
   return e;
 }
 
+namespace {
+
+/// A sensitivity metric as the window names it: its words and its unit, from the engine's key
+/// (impact_velocity_mps → "impact velocity", "m/s"; the keys stay in the CSV and JSON).
+struct MetricName {
+  QString words, unit;
+  QString with_unit() const { return unit.isEmpty() ? words : words + " (" + unit + ")"; }
+};
+
+MetricName metric_name(const std::string& key) {
+  static const std::pair<const char*, const char*> kUnits[] = {
+      {"_mps", "m/s"}, {"_ms", "ms"}, {"_mm", "mm"}, {"_hz", "Hz"}, {"_g", "g"}, {"_n", "N"}};
+  std::string words = key;
+  QString unit;
+  for (const auto& [suffix, symbol] : kUnits) {
+    const std::string tail = suffix;
+    if (words.size() > tail.size() &&
+        words.compare(words.size() - tail.size(), tail.size(), tail) == 0) {
+      words.resize(words.size() - tail.size());
+      unit = symbol;
+      break;
+    }
+  }
+  if (words == "max_repetition") words = "repetition limit";
+  std::replace(words.begin(), words.end(), '_', ' ');
+  return {QString::fromStdString(words), unit};
+}
+
+}  // namespace
+
 // Which screw matters most: every setting ±0.5 mm and what changes.
 AnalysisEntry regulation_sensitivity() {
   AnalysisEntry e;
@@ -182,7 +212,8 @@ AnalysisEntry regulation_sensitivity() {
       for (const SensitivityRow& row : r.rows)
         settings.push_back(QString::fromStdString(row.setting));
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
-        const QString metric = QString::fromStdString(r.metrics[m]);
+        const QString metric = QString::fromStdString(r.metrics[m]);  // the CSV column's stem
+        const MetricName name = metric_name(r.metrics[m]);
         AnalysisSeries minus{QObject::tr("adjuster −0.5 mm"), metric + "_minus", {}, {}, true};
         AnalysisSeries plus{QObject::tr("adjuster +0.5 mm"), metric + "_plus", {}, {}, true};
         for (std::size_t s = 0; s < r.rows.size(); ++s) {
@@ -191,11 +222,11 @@ AnalysisEntry regulation_sensitivity() {
           plus.x.push_back(double(s));
           plus.y.push_back(r.rows[s].plus[m] - r.baseline[m]);
         }
-        AnalysisPlot plot{metric,
+        AnalysisPlot plot{name.words,
                           QObject::tr("setting"),
                           "setting_index",
                           "",
-                          QObject::tr("change of %1").arg(metric),
+                          QObject::tr("change of %1").arg(name.with_unit()),
                           {minus, plus}};
         plot.x_categories = settings;
         result.plots.push_back(plot);
@@ -210,12 +241,12 @@ AnalysisEntry regulation_sensitivity() {
                                     .arg(number(row.measured[2])),
                                 QString::fromStdString(row.unit)});
         for (std::size_t m = 0; m < r.metrics.size(); ++m)
-          result.table.push_back({QStringLiteral("   ") + QString::fromStdString(r.metrics[m]),
+          result.table.push_back({QStringLiteral("   ") + metric_name(r.metrics[m]).words,
                                   QObject::tr("%1 / %2 / %3")
                                       .arg(number(row.minus[m]))
                                       .arg(number(r.baseline[m]))
                                       .arg(number(row.plus[m])),
-                                  ""});
+                                  metric_name(r.metrics[m]).unit});
       }
       // which screw matters most: per metric, the settings by the change across the same turn
       // (the tab is short: the dock is narrow)
@@ -224,7 +255,7 @@ AnalysisEntry regulation_sensitivity() {
                             QObject::tr("3rd")},
                            {}};
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
-        QStringList row{QString::fromStdString(r.metrics[m])};
+        QStringList row{metric_name(r.metrics[m]).with_unit()};
         const std::vector<SensitivityRank> by_change = rank_by_change(r, m);
         for (std::size_t i = 0; i < 3; ++i)
           row << (i < by_change.size() ? QObject::tr("%1 (%2)")

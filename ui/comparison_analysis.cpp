@@ -61,7 +61,7 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
                       {QObject::tr("full stroke"), QObject::tr("half stroke")},
                       {},
                       QObject::tr("Limits")};
-  QStringList impact_words;
+  QStringList impact_words, missing_limits;
   for (const ActionComparison& a : r.actions) {
     const QString name = QString::fromStdString(a.action);
     if (a.first_impact) {
@@ -86,18 +86,36 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
           {name + QObject::tr(": repetition limit, full stroke"), limit_text(a.full_stroke), "Hz"});
       result.table.push_back(
           {name + QObject::tr(": repetition limit, half stroke"), limit_text(a.half_stroke), "Hz"});
-      AnalysisSeries series{
-          name, QString::fromStdString(a.action) + "_max_frequency_hz", {}, {}, true};
+      // a limit found, and a lower bound (no failure up to the sweep's end) as its own series
+      // so that the two do not look alike; a stroke without a repeating range has no point,
+      // and the title says so
+      const QString stem = QString::fromStdString(a.action);
+      AnalysisSeries found{name, stem + "_max_frequency_hz", {}, {}, true};
+      AnalysisSeries bound{QObject::tr("%1: at least (no failure in the sweep)").arg(name),
+                           stem + "_no_failure_up_to_hz",
+                           {},
+                           {},
+                           true};
       const std::optional<SweepResult>* sweeps[] = {&a.full_stroke, &a.half_stroke};
-      for (int s = 0; s < 2; ++s)
-        if (*sweeps[s] && (*sweeps[s])->max_frequency_hz) {
-          series.x.push_back(s);
-          series.y.push_back(*(*sweeps[s])->max_frequency_hz);
+      const QString stroke_names[] = {QObject::tr("full"), QObject::tr("half")};
+      for (int s = 0; s < 2; ++s) {
+        if (!*sweeps[s]) continue;
+        const SweepResult& sweep = **sweeps[s];
+        if (!sweep.max_frequency_hz) {
+          missing_limits << QObject::tr("%1 %2 stroke").arg(name, stroke_names[s]);
+          continue;
         }
-      if (!series.x.empty()) limits.series.push_back(series);
+        AnalysisSeries& series = sweep.limit_found ? found : bound;
+        series.x.push_back(s);
+        series.y.push_back(*sweep.max_frequency_hz);
+      }
+      for (AnalysisSeries* series : {&found, &bound})
+        if (!series->x.empty()) limits.series.push_back(*series);
     }
   }
-  if (!limits.series.empty()) result.plots.push_back(limits);
+  if (!missing_limits.isEmpty())
+    limits.title += QObject::tr(" (no repeating range: %1)").arg(missing_limits.join(", "));
+  if (!limits.series.empty() || !missing_limits.isEmpty()) result.plots.push_back(limits);
   result.summary = QObject::tr("under %1, %2.").arg(input, impact_words.join(QObject::tr("; ")));
   return result;
 }

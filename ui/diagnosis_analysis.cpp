@@ -107,7 +107,7 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                              .arg(number(d.gain * 100.0, 2))
                        : QObject::tr(
                              "no candidate explains the residual (%1 deg) beyond the noise (%2 "
-                             "deg): cause null.")
+                             "deg): no cause named.")
                              .arg(number(d.baseline_rms_deg))
                              .arg(number(d.noise_deg));
   result.table = {
@@ -230,7 +230,8 @@ AnalysisEntry diagnosis_entry() {
   AnalysisEntry e;
   e.name = QObject::tr("Diagnosis of measured data");
   e.description = QObject::tr(
-      "Measured hammer traces (CSV, DESIGN.md section 5) against this action: what the model "
+      "Measured hammer traces (CSV files with time_s and hammer_angle_deg; `pianoaction "
+      "import-raw` converts a camera's export) against this action: what the model "
       "gets wrong by phase, which candidate extension explains it on held-out trials, and the "
       "gain. The same analysis as `pianoaction diagnose`.");
   AnalysisParameter files;

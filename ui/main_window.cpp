@@ -13,6 +13,7 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QShortcut>
@@ -104,12 +105,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
   connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
+  connect(controller_, &PlaybackController::frameShown, plots_,
+          [this](const Frame& frame) { plots_->mark_time(frame.t); });
+  // paused, a step or a seek changes the time the status bar gives
+  connect(controller_, &PlaybackController::frameShown, this, [this] {
+    if (!controller_->playing()) show_run_status();
+  });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
     show_banner(tr("Run paused at t = %1 ms: %2. Move the setting back and press \"Start from "
                    "rest\".")
                     .arg(controller_->display_time() * 1e3, 0, 'f', 2)
                     .arg(cause));
   });
+  connect(controller_, &PlaybackController::inputChanged, this, [this](const QString& what) {
+    running_input_ = what;
+    show_run_status();
+  });
+  connect(controller_, &PlaybackController::playingChanged, this, &MainWindow::show_run_status);
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
     hide_banner();
     plots_->clear();
@@ -293,10 +305,12 @@ void MainWindow::build_menus() {
   connect(follow, &QAction::toggled, plots_, &PlotStack::set_following);
   connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
   QMenu* practice = menuBar()->addMenu(tr("&Practice"));
-  QAction* mode = practice_dock_->toggleViewAction();
-  mode->setText(tr("&Practice mode (find a hidden deregulation)"));
-  mode->setShortcut(QKeySequence(tr("Ctrl+P")));
-  practice->addAction(mode);
+  // its own action, not the dock's toggleViewAction: Qt disables that one for a dock without a
+  // close button, and this dock has none (below)
+  practice_action_ = practice->addAction(tr("&Practice mode (find a hidden deregulation)"));
+  practice_action_->setCheckable(true);
+  practice_action_->setShortcut(QKeySequence(tr("Ctrl+P")));
+  connect(practice_action_, &QAction::toggled, this, &MainWindow::show_practice);
   view->addSeparator();
   view->addAction(tr("&Fit the action"), QKeySequence(tr("Ctrl+1")), this,
                   [this] { view_->set_focus(ViewFocus::whole); });
@@ -356,9 +370,6 @@ void MainWindow::build_practice() {
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
   practice_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-  connect(practice_dock_->toggleViewAction(), &QAction::triggered, this, [this](bool shown) {
-    if (!shown) end_practice();
-  });
 }
 
 void MainWindow::end_practice() {
@@ -370,6 +381,10 @@ void MainWindow::end_practice() {
 }
 
 void MainWindow::show_practice(bool on) {
+  if (practice_action_ && practice_action_->isChecked() != on) {
+    practice_action_->setChecked(on);  // its toggled signal comes back here
+    return;
+  }
   practice_dock_->setVisible(on);
   if (on)
     practice_dock_->raise();
@@ -437,9 +452,21 @@ void MainWindow::start(const std::string& spec) {
   run_controls_->input_form()->set_spec(spec);  // the form shows what runs
   controller_->restart(model_, spec);
   controller_->play();
-  statusBar()->showMessage(tr("Running %1 with %2")
-                               .arg(QString::fromStdString(model_->name))
-                               .arg(spec.empty() ? tr("no finger") : QString::fromStdString(spec)));
+}
+
+void MainWindow::show_run_status() {
+  if (!model_) return;
+  const QString name = QString::fromStdString(model_->name);
+  if (controller_->playing())
+    statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_));
+  else if (!controller_->run_stopped())
+    statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
+                                "Step back move one frame")
+                                 .arg((controller_->has_frame() ? controller_->current_frame().t
+                                                                : controller_->display_time()) *
+                                          1e3,
+                                      0, 'f', 2)
+                                 .arg(name, running_input_));
 }
 
 void MainWindow::set_adjuster(const std::string& name, double mm) {
@@ -515,15 +542,29 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
     adjuster.y.push_back(s.adjuster_mm);
     gap.x.push_back(s.t);
     gap.y.push_back(s.hammer_string_gap_mm);
-    shown.table.push_back({tr("t = %1 s, adjuster %2 mm").arg(s.t, 0, 'f', 2).arg(s.adjuster_mm),
+    shown.table.push_back({tr("%1 at t = %2 s (adjuster %3 mm)")
+                               .arg(setting)
+                               .arg(s.t, 0, 'f', 2)
+                               .arg(s.adjuster_mm, 0, 'f', 2),
                            QString::number(s.measured, 'f', 3), unit});
   }
-  shown.plots.push_back({tr("%1 over time").arg(setting),
+  // the setting and its adjuster on their own axes: a 2 mm turn beside a 45 mm reading would
+  // look flat
+  shown.plots.push_back({tr("%1 measured over time").arg(setting),
                          tr("time (s)"),
                          "time_s",
                          "s",
-                         tr("measured, adjuster (mm)"),
-                         {measured, adjuster},
+                         tr("%1 (%2)").arg(setting, unit),
+                         {measured},
+                         {},
+                         {},
+                         {}});
+  shown.plots.push_back({tr("Its adjuster, turned at a steady rate"),
+                         tr("time (s)"),
+                         "time_s",
+                         "s",
+                         tr("adjuster (mm)"),
+                         {adjuster},
                          {},
                          {},
                          {}});
@@ -603,13 +644,22 @@ void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QS
 
 void MainWindow::restore_settings() {
   QSettings settings;
-  restoreGeometry(settings.value("window/geometry").toByteArray());
+  if (!restoreGeometry(settings.value("window/geometry").toByteArray())) {
+    // the first start: the size the window's layout is designed for, within the screen (Qt's
+    // default, from the widgets' size hints, leaves the plots and readout unreadable)
+    QSize size(1280, 800);
+    if (const QScreen* screen = this->screen())
+      size = size.boundedTo(screen->availableGeometry().size() * 0.95);
+    resize(size);
+  }
   restoreState(settings.value("window/state").toByteArray());
+  practice_dock_->hide();  // a saved state may show it; an exercise starts from the menu only
   export_size_ = settings.value("export/size", export_size_).toSize();
   run_controls_->set_speed_index(settings.value("run/speed_index", 3).toInt());
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  show_practice(false);  // the saved layout is the regulated action's, with its panels shown
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());

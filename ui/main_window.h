@@ -102,6 +102,8 @@ class MainWindow : public QMainWindow {
   void build_practice();
   void practise_on(std::shared_ptr<const ActionModel> model);
   void end_practice();
+  /// The status bar: what runs now and with which input, or where the run is paused.
+  void show_run_status();
   /// Shares the height between the action view and the plots by the action's shape: a tall
   /// upright gets more of it than a flat grand.
   void fit_split_to_action(const ActionModel& model);
@@ -129,6 +131,8 @@ class MainWindow : public QMainWindow {
   PracticePanel* practice_ = nullptr;
   bool practising_ = false;
   QAction* grand_action_;
+  QAction* practice_action_ = nullptr;
+  QString running_input_;  ///< what drives the key (PlaybackController::inputChanged)
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

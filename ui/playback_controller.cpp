@@ -50,6 +50,8 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   passed_time_ = -1.0;
   worker_->take_frames();
   worker_->set_sample_interval(sample_interval());
+  key_played_ = false;
+  emit inputChanged(input_spec.empty() ? tr("no finger") : QString::fromStdString(input_spec));
   const RunSetup setup{model_, input_spec, run_id_};
   QMetaObject::invokeMethod(
       worker_, [w = worker_, setup] { w->start_run(setup); }, Qt::QueuedConnection);
@@ -69,6 +71,8 @@ void PlaybackController::replay(std::vector<Frame> frames) {
   passed_time_ = -1.0;
   has_frame_ = false;
   emit runRestarted();
+  key_played_ = false;
+  emit inputChanged(tr("a recorded replay"));
   if (history_.empty()) return;
   model_ = history_.at(0).model;
   show_time(history_.first_time());
@@ -87,11 +91,15 @@ void PlaybackController::strike(const std::string& force_spec) {
   if (stopped_ || replay_) return;
   seek(history_.last_time());
   worker_->request_blow(force_spec);
+  key_played_ = false;
+  emit inputChanged(tr("a blow struck (%1)").arg(QString::fromStdString(force_spec)));
   play();
 }
 
 void PlaybackController::play_key(double angle_rad) {
   if (stopped_ || replay_) return;
+  if (!key_played_) emit inputChanged(tr("the key played with the mouse"));
+  key_played_ = true;
   if (!playing_) {
     seek(history_.last_time());
     play();

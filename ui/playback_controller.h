@@ -69,6 +69,9 @@ class PlaybackController : public QObject {
   /// New frames reached the display (in time order): the plots append them.
   void framesPassed(const std::vector<pat::ui::Frame>& frames);
   void playingChanged(bool playing);
+  /// What drives the key now, in words: the run's input, a blow struck, the key played with the
+  /// mouse, or a recorded replay.
+  void inputChanged(const QString& what);
   void runRestarted();
   /// The run stopped by itself or could not start; the message says why.
   void runStopped(const QString& message);
@@ -97,7 +100,8 @@ class PlaybackController : public QObject {
   double full_dip_rad_ = 0.0;
   bool playing_ = false;
   bool stopped_ = false;
-  bool replay_ = false;  // frames from an analysis: no worker behind them
+  bool replay_ = false;      // frames from an analysis: no worker behind them
+  bool key_played_ = false;  // the mouse drives the key since the last run start or blow
   double speed_ = 0.1;
   double display_time_ = 0.0;
   double passed_time_ = -1.0;  // frames up to here went to framesPassed

@@ -69,6 +69,9 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
     cursor_lines_[i]->setPen(QPen(kCursorColours[i], 1.5, Qt::DashLine));
     cursor_lines_[i]->setVisible(false);
   }
+  time_mark_line_ = new QCPItemStraightLine(plot_);
+  time_mark_line_->setPen(QPen(QColor(90, 90, 90, 170), 1.5));
+  time_mark_line_->setVisible(false);
   readout_ = new QCPItemText(plot_);
   readout_->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
   readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
@@ -109,9 +112,11 @@ int PlotPanel::add_series(const QString& label, const QString& column, const QCo
   graph->setPen(QPen(colour, 2.0));
   graph->setAdaptiveSampling(true);
   series_.push_back({graph, label, column});
-  // many series: the legend wraps into rows of three
+  // many series: the legend wraps into rows of three, under the plot, where it covers no data
+  // (inside, two rows of it hid the peaks of the contact forces)
   plot_->legend->setWrap(series_count() > 4 ? 3 : 0);
   plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // re-arranged with the wrap
+  if (series_count() > 4) move_legend_below();
   return series_count() - 1;
 }
 
@@ -172,13 +177,16 @@ void PlotPanel::fit_values() {
   if (!any) return;
   // categories compare sizes (errors, frequencies, changes): the axis shows zero
   if (categories_ > 0) range = QCPRange(std::min(range.lower, 0.0), std::max(range.upper, 0.0));
-  // a flat line gets a visible band around it
-  if (range.size() < 1e-9) range = QCPRange(range.lower - 1.0, range.upper + 1.0);
-  // headroom at the top for the legend
+  // a flat line gets a visible band around it, and an almost flat one at least the minimum span
+  const double span = std::max(minimum_value_span_, 1e-9);
+  if (range.size() < span) {
+    const double half = (minimum_value_span_ > 0.0 ? minimum_value_span_ : 2.0) / 2.0;
+    range = QCPRange(range.center() - half, range.center() + half);
+  }
+  // headroom at the top for the legend (none when it is under the plot)
   const int legend_rows = (series_count() + 2) / 3;
   const double pad = 0.08 * range.size();
-  // (categories: the legend is under the plot)
-  const double headroom = categories_ > 0 ? 0.0 : 0.3 * legend_rows * range.size();
+  const double headroom = legend_below_ ? 0.0 : 0.3 * legend_rows * range.size();
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
 }
 
@@ -279,10 +287,21 @@ void PlotPanel::render(QPaintDevice& device,
   painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
   for (const auto& [panel, rect] : plots) {
     panel->update_cursor_items();
+    panel->time_mark_line_->setVisible(false);
     painter.save();
     painter.translate(rect.topLeft());
     panel->plot_->toPainter(&painter, rect.width(), rect.height());
     painter.restore();
+    panel->time_mark_line_->setVisible(panel->time_mark_.has_value());
+  }
+}
+
+void PlotPanel::set_time_mark(std::optional<double> t) {
+  time_mark_ = t;
+  time_mark_line_->setVisible(t.has_value());
+  if (t) {
+    time_mark_line_->point1->setCoords(*t, 0.0);
+    time_mark_line_->point2->setCoords(*t, 1.0);
   }
 }
 
@@ -311,14 +330,18 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   }
   categories_ = names.size();
   // a few points often sit right where an inset legend would be: the legend goes under the plot
-  if (plot_->axisRect()->insetLayout()->take(plot_->legend)) {
-    plot_->axisRect()->insetLayout()->simplify();
-    const int row = plot_->plotLayout()->rowCount();
-    plot_->plotLayout()->addElement(row, 0, plot_->legend);
-    plot_->plotLayout()->setRowStretchFactor(row, 0.001);
-    plot_->legend->setMargins(QMargins(6, 0, 6, 4));
-    plot_->legend->setBorderPen(Qt::NoPen);
-  }
+  move_legend_below();
+}
+
+void PlotPanel::move_legend_below() {
+  if (legend_below_ || !plot_->axisRect()->insetLayout()->take(plot_->legend)) return;
+  plot_->axisRect()->insetLayout()->simplify();
+  const int row = plot_->plotLayout()->rowCount();
+  plot_->plotLayout()->addElement(row, 0, plot_->legend);
+  plot_->plotLayout()->setRowStretchFactor(row, 0.001);
+  plot_->legend->setMargins(QMargins(6, 0, 6, 4));
+  plot_->legend->setBorderPen(Qt::NoPen);
+  legend_below_ = true;
 }
 
 void PlotPanel::set_points_only(int series) {

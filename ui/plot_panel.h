@@ -54,6 +54,13 @@ class PlotPanel : public QWidget {
   /// successive markers are stacked downwards so that close ones stay readable.
   void add_marker(double x, const QString& label);
   int marker_count() const { return static_cast<int>(markers_.size()); }
+  /// A solid vertical line at the time the action view shows (none: hidden); left out of
+  /// exports.
+  void set_time_mark(std::optional<double> t);
+  std::optional<double> time_mark() const { return time_mark_; }
+  /// The value axis spans at least this much (in its unit) when fitted, so that the settling
+  /// noise of an action at rest does not fill the plot as if it moved (default 0: any span).
+  void set_minimum_value_span(double span) { minimum_value_span_ = span; }
 
   QString title() const { return title_; }
   /// The x axis' CSV column (time_s unless set_x_axis named another).
@@ -92,6 +99,8 @@ class PlotPanel : public QWidget {
 
  private:
   void update_cursor_items();
+  /// Takes the legend out of the plot area into a row under it (categories, many series).
+  void move_legend_below();
 
   QString title_;
   QString y_title_;
@@ -110,6 +119,10 @@ class PlotPanel : public QWidget {
   std::vector<std::pair<QCPItemStraightLine*, QCPItemText*>> markers_;
   QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
   QCPItemText* readout_ = nullptr;
+  QCPItemStraightLine* time_mark_line_ = nullptr;
+  std::optional<double> time_mark_;
+  double minimum_value_span_ = 0.0;
+  bool legend_below_ = false;
   std::optional<double> cursors_[2];
   bool cursors_enabled_ = true;
   bool setting_range_ = false;

@@ -12,6 +12,11 @@ namespace {
 
 constexpr double kKeptSeconds = 60.0;  // plot memory bound in long runs
 constexpr int kReplotIntervalMs = 33;
+// Smallest value spans of the live plots: an action at rest settles by thousandths of a degree
+// or millimetre, which an axis fitted to the data would show as large motion.
+constexpr double kMinimumAngleSpanDeg = 2.0;
+constexpr double kMinimumGapSpanMm = 2.0;
+constexpr double kMinimumForceSpanN = 1.0;
 
 // a legend label short enough for six series on one line
 QString short_contact_label(const ActionModel& model, int c) {
@@ -38,6 +43,10 @@ PlotStack::PlotStack(QWidget* parent) : QWidget(parent) {
   angles_->add_series(tr("hammer"), "hammer_angle_deg", series_colour(1));
   gap_->add_series(tr("hammer–string gap"), "hammer_string_gap_mm", series_colour(2));
   finger_->add_series(tr("finger force"), "finger_force_n", series_colour(3));
+  angles_->set_minimum_value_span(kMinimumAngleSpanDeg);
+  gap_->set_minimum_value_span(kMinimumGapSpanMm);
+  finger_->set_minimum_value_span(kMinimumForceSpanN);
+  contacts_->set_minimum_value_span(kMinimumForceSpanN);
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(0, 0, 0, 0);
   grid->setSpacing(4);
@@ -79,6 +88,8 @@ void PlotStack::set_model(const ActionModel& model) {
   old->deleteLater();
   connect(contacts_, &PlotPanel::userChangedTimeRange, this,
           [this, panel = contacts_](double lo, double hi) { sync_time_range(panel, lo, hi); });
+  contacts_->set_minimum_value_span(kMinimumForceSpanN);
+  contacts_->set_time_mark(marked_t_);
   plotted_contacts_ = wanted;
   int colour = 0;
   for (int c : wanted) {
@@ -90,8 +101,12 @@ void PlotStack::set_model(const ActionModel& model) {
 }
 
 void PlotStack::clear() {
-  for (PlotPanel* panel : panels()) panel->clear_data();
+  for (PlotPanel* panel : panels()) {
+    panel->clear_data();
+    panel->set_time_mark(std::nullopt);
+  }
   latest_t_ = 0.0;
+  marked_t_.reset();
   set_following(true);
   replot();
 }
@@ -124,6 +139,17 @@ void PlotStack::show_time(double t) {
       panel->set_x_range(lo, hi);
       panel->fit_values();
     }
+  }
+  replot();
+}
+
+void PlotStack::mark_time(double t) {
+  marked_t_ = t;
+  for (PlotPanel* panel : panels()) panel->set_time_mark(t);
+  const auto [lo, hi] = angles_->x_range();
+  if (following_ && (t < lo || t > hi)) {
+    show_time(t);  // stepped or rewound out of the window: it moves back to the shown time
+    return;
   }
   replot();
 }

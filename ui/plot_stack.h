@@ -7,6 +7,7 @@
 #include <QTimer>
 #include <QWidget>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "frame.h"
@@ -29,6 +30,9 @@ class PlotStack : public QWidget {
   void append(const std::vector<Frame>& frames);
   /// The displayed time (a rewind moves it back inside the plotted data).
   void show_time(double t);
+  /// The time the action view shows: a line on every plot (stepping back, rewinding or seeking
+  /// moves it within the data already plotted; following, the time window keeps it in view).
+  void mark_time(double t);
   void set_following(bool follow);
   bool following() const { return following_; }
   /// Width of the followed time window, s.
@@ -56,6 +60,7 @@ class PlotStack : public QWidget {
   bool following_ = true;
   double window_s_ = 0.25;
   double latest_t_ = 0.0;
+  std::optional<double> marked_t_;
   // replots at most about 30 times a second (the action view takes the full 60)
   QElapsedTimer since_replot_;
   QTimer deferred_replot_;

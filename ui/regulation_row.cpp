@@ -1,9 +1,11 @@
 #include "regulation_row.h"
 
 #include <QDoubleSpinBox>
+#include <QFontMetrics>
 #include <QGridLayout>
 #include <QLabel>
 #include <QSlider>
+#include <algorithm>
 #include <cmath>
 
 namespace pat::ui {
@@ -11,12 +13,16 @@ namespace {
 
 constexpr double kSliderStepsPerMm = 100.0;  // 0.01 mm per slider step
 
+// A setting's value with its unit; a fraction (the upright's damper lift: of the hammer's
+// travel) reads as a percentage.
 QString format_value(double value, const std::string& unit) {
-  const int decimals = unit == "fraction" ? 3 : 2;
+  const bool fraction = unit == "fraction";
+  if (fraction) value *= 100.0;
+  const int decimals = fraction ? 1 : 2;
   // a value that rounds to zero reads "0.00", not "-0.00"
   if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
   const QString number = QString::number(value, 'f', decimals);
-  return unit == "fraction" ? number : number + " " + QString::fromStdString(unit);
+  return number + " " + (fraction ? QStringLiteral("%") : QString::fromStdString(unit));
 }
 
 }  // namespace
@@ -47,14 +53,21 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   spin_->setKeyboardTracking(false);
 
   measured_label_ = new QLabel(tr("—"), parent);
-  measured_label_->setMinimumWidth(72);
+  // wide enough for "no reading" in bold (its reason in the tooltip): the columns do not move
+  // when a reading fails
+  QFont bold_label = measured_label_->font();
+  bold_label.setBold(true);
+  measured_label_->setMinimumWidth(
+      std::max(72, QFontMetrics(bold_label).horizontalAdvance(tr("no reading")) + 10));
   measured_label_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   measured_label_->setToolTip(tr("Measured the way a technician measures it"));
   target_label_ = new QLabel(parent);
   if (setting_)
-    target_label_->setText(tr("%1 ± %2")
-                               .arg(format_value(setting_->target, setting_->unit))
-                               .arg(setting_->tolerance, 0, 'g', 3));
+    // "10.00 ± 0.05 mm": the unit once, after the tolerance (the dock stays narrow)
+    target_label_->setText(
+        tr("%1 ± %2")
+            .arg(format_value(setting_->target, setting_->unit).section(' ', 0, 0))
+            .arg(format_value(setting_->tolerance, setting_->unit)));
   else
     target_label_->setText(tr("no target"));
   target_label_->setToolTip(setting_ ? QString::fromStdString(setting_->source) : QString());
@@ -104,9 +117,9 @@ void RegulationRow::set_measured(double value) {
 
 void RegulationRow::set_measurement_failed(const QString& reason) {
   measured_.reset();
-  measured_label_->setText(tr("cannot measure"));
+  measured_label_->setText(tr("no reading"));
+  measured_label_->setStyleSheet("color: #c0392b; font-weight: bold; padding: 1px 3px;");
   measured_label_->setToolTip(reason);
-  measured_label_->setStyleSheet("color: #c0392b;");
 }
 
 void RegulationRow::set_measuring() {

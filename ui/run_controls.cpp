@@ -89,8 +89,13 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
   bottom->addWidget(factor_);
   connect(controller_, &PlaybackController::realtimeFactorChanged, this, [this](double f) {
-    factor_->setText(f >= 0.1 ? tr("achieved ×%1").arg(f, 0, 'f', 2)
-                              : tr("achieved 1/%1").arg(f > 0 ? qRound(1.0 / f) : 0));
+    // in the speed list's own terms: "real time" or a fraction 1/N
+    if (!(f > 0.0))
+      factor_->setText(tr("achieved —"));
+    else if (f >= 0.995)
+      factor_->setText(f < 1.005 ? tr("achieved real time") : tr("achieved ×%1").arg(f, 0, 'f', 2));
+    else
+      factor_->setText(tr("achieved 1/%1").arg(1.0 / f, 0, 'f', 1.0 / f < 10.0 ? 1 : 0));
   });
 
   bottom->addSpacing(12);

@@ -26,7 +26,10 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
     window.open_action("grand");  // the remembered preset is gone or broken
   }
   window.view()->set_focus(options.view);
-  if (!options.screenshot.empty()) window.resize(1280, 800);
+  if (options.width > 0 && options.height > 0)
+    window.resize(options.width, options.height);
+  else if (!options.screenshot.empty())
+    window.resize(1280, 800);
   window.show();
   if (options.screenshot.empty()) return app.exec();
 

@@ -102,7 +102,7 @@ void AnalysesPanelTest::every_analysis_runs_from_the_window_for_both_actions() {
         QCOMPARE(panel->grids().size(), std::size_t(1));
         const QTableWidget* ranking = panel->grids().front();
         QCOMPARE(ranking->rowCount(), 5);  // velocity, let-off time, down- and upweight, limit
-        QCOMPARE(ranking->item(0, 0)->text(), QString("impact_velocity_mps"));
+        QCOMPARE(ranking->item(0, 0)->text(), QString("impact velocity (m/s)"));
         if (QString(action) == "grand") {
           QVERIFY2(ranking->item(0, 1)->text().startsWith("jack_position"),
                    qPrintable(ranking->item(0, 1)->text()));

@@ -229,7 +229,16 @@ void AnalysisStudiesTest::comparison_overlays_both_actions() {
     QVERIFY(plot->point_count(0) > 1000 && plot->point_count(1) > 1000);
     QCOMPARE(plot->marker_count(), 2);  // each action's impact
   }
-  QVERIFY(plot_titled(panel, "Repetition limits"));
+  // every action appears in the limits plot: as a point (a limit found, or a lower bound in a
+  // series of its own), or named in the title when a stroke has no repeating range
+  pat::ui::PlotPanel* limits = plot_titled(panel, "Repetition limits");
+  QVERIFY(limits);
+  for (const QString action : {"grand", "upright"}) {
+    bool shown = limits->title().contains(action + " ");
+    for (int s = 0; s < limits->series_count(); ++s)
+      shown = shown || limits->series_label(s).startsWith(action);
+    QVERIFY2(shown, qPrintable(action + " in " + limits->title()));
+  }
   keep_picture(window, "comparison", {"Hammer", "Limits"});
 
   // without the limits: the overlays only

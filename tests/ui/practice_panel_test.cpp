@@ -8,6 +8,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QMenuBar>
 #include <QPushButton>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -37,7 +38,15 @@ void PracticePanelTest::walk_through_an_exercise() {
   window.open_action("grand");
   window.resize(1400, 900);
   window.show();  // shown: the docks' visibility signals run as for a user, also at destruction
-  window.show_practice(true);
+  // opened as a user does, from the Practice menu (Ctrl+P): its action must be enabled
+  QAction* practice_mode = nullptr;
+  for (QAction* action : window.menuBar()->findChildren<QAction*>())
+    if (action->text().contains("Practice mode")) practice_mode = action;
+  QVERIFY(practice_mode);
+  QVERIFY(practice_mode->isEnabled());
+  practice_mode->trigger();
+  QVERIFY(practice_mode->isChecked());
+  QVERIFY(window.findChild<QDockWidget*>("practice_dock")->isVisibleTo(&window));
   PracticePanel* panel = window.practice();
   QSignalSpy active(panel, &PracticePanel::practiceActive);
 
@@ -129,8 +138,11 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(csv_text.contains("score"));
   QVERIFY(csv_text.contains("move,checking"));
 
-  // leaving practice mode returns to the regulated action with its regulation panel
-  window.show_practice(false);
+  // leaving practice mode (the menu entry again) returns to the regulated action with its
+  // regulation panel
+  practice_mode->trigger();
+  QVERIFY(!practice_mode->isChecked());
+  QVERIFY(!window.findChild<QDockWidget*>("practice_dock")->isVisibleTo(&window));
   QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
   for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
 }

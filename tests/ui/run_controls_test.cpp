@@ -6,6 +6,7 @@
 
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTest>
 #include <QTimer>
 #include <algorithm>
@@ -22,6 +23,7 @@
 
 using pat::ui::MainWindow;
 using pat::ui::PlaybackController;
+using pat::ui::PlotPanel;
 using pat::ui::test::wait_until;
 
 class RunControlsTest : public QObject {
@@ -79,9 +81,14 @@ void RunControlsTest::pause_step_and_rewind() {
   window.start("force:pulse:20:40");
   PlaybackController* c = window.controller();
   QVERIFY(wait_until([&] { return c->display_time() > 0.005; }));
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Running"),
+           qPrintable(window.statusBar()->currentMessage()));
   c->pause();
   QVERIFY(!c->playing());
   const double paused_at = c->display_time();
+  // the status bar says so (not the "Running …" of the start)
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Paused at"),
+           qPrintable(window.statusBar()->currentMessage()));
   QTest::qWait(100);
   QCOMPARE(c->display_time(), paused_at);  // paused: time does not move
 
@@ -91,10 +98,17 @@ void RunControlsTest::pause_step_and_rewind() {
   QVERIFY(stepped - paused_at < 1e-3);  // one frame, not a run
   c->step_back();
   QVERIFY(c->current_frame().t < stepped);
+  // every plot marks the time the action view shows, also after a step back
+  for (const PlotPanel* panel : window.plots()->panels())
+    QCOMPARE(panel->time_mark().value_or(-1.0), c->current_frame().t);
 
   c->rewind();
   QCOMPARE(c->current_frame().t, c->history().first_time());
   QCOMPARE(c->current_frame().t, 0.0);
+  for (const PlotPanel* panel : window.plots()->panels()) {
+    QCOMPARE(panel->time_mark().value_or(-1.0), 0.0);
+    QVERIFY(panel->x_range().first <= 0.0);  // the followed window moved back to show it
+  }
   // replay from the history reaches the stepped time again with the same state
   const std::size_t i = c->history().index_at(stepped);
   c->seek(c->history().at(i).t);
