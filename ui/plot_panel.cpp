@@ -72,6 +72,8 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   time_mark_line_ = new QCPItemStraightLine(plot_);
   time_mark_line_->setPen(QPen(QColor(90, 90, 90, 170), 1.5));
   time_mark_line_->setVisible(false);
+  // an invisible anchor at the top left of the plot area: the markers' labels hang from it
+  // (the cursor readout itself is a row under the title, update_cursor_items)
   readout_ = new QCPItemText(plot_);
   readout_->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
   readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
@@ -275,8 +277,25 @@ void PlotPanel::update_cursor_items() {
                .arg(*cursors_[which] * x_readout_scale_, 0, 'f', 2)
                .arg(x_readout_unit_);
   }
-  readout_->setText(text);
-  readout_->setVisible(!text.isEmpty());
+  // the readout in a row of its own under the title, while there is one: inside the plot it ran
+  // into the legend and covered data
+  if (text.isEmpty()) {
+    if (readout_row_) {
+      plot_->plotLayout()->remove(readout_row_);  // deletes it
+      plot_->plotLayout()->simplify();
+      readout_row_ = nullptr;
+    }
+    return;
+  }
+  if (!readout_row_) {
+    plot_->plotLayout()->insertRow(1);
+    readout_row_ = new QCPTextElement(plot_, QString(), readout_->font());
+    readout_row_->setTextFlags(Qt::AlignLeft | Qt::AlignVCenter);
+    readout_row_->setTextColor(QColor(40, 40, 40));
+    readout_row_->setMargins(QMargins(8, 0, 8, 2));
+    plot_->plotLayout()->addElement(1, 0, readout_row_);
+  }
+  readout_row_->setText(text);
 }
 
 void PlotPanel::render(QPaintDevice& device,

@@ -18,6 +18,7 @@ class QCustomPlot;
 class QCPGraph;
 class QCPItemStraightLine;
 class QCPItemText;
+class QCPTextElement;
 class QPaintDevice;
 
 namespace pat::ui {
@@ -118,7 +119,8 @@ class PlotPanel : public QWidget {
   std::vector<Series> series_;
   std::vector<std::pair<QCPItemStraightLine*, QCPItemText*>> markers_;
   QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
-  QCPItemText* readout_ = nullptr;
+  QCPItemText* readout_ = nullptr;         ///< hidden: the anchor of the markers' labels
+  QCPTextElement* readout_row_ = nullptr;  ///< the cursor readout, while there is one
   QCPItemStraightLine* time_mark_line_ = nullptr;
   std::optional<double> time_mark_;
   double minimum_value_span_ = 0.0;

@@ -5,6 +5,7 @@
 #include <QLabel>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QTextCursor>
 #include <QVBoxLayout>
 #include <algorithm>
 
@@ -102,6 +103,10 @@ RegulationRow* RegulationPanel::row(const std::string& name) const {
 
 void RegulationPanel::log(const QString& line) {
   log_->appendPlainText(line);
+  // the newest line in full view (appendPlainText alone can leave a wrapped last line half
+  // below the edge)
+  log_->moveCursor(QTextCursor::End);
+  log_->ensureCursorVisible();
 }
 
 void RegulationPanel::clear_log() {

@@ -114,6 +114,11 @@ void PlotExportTest::cursors_give_delta_t_and_delta_value() {
   QVERIFY2(readout.contains("Δ hammer = 12 deg"), qPrintable(readout));
   QVERIFY2(readout.contains("Δ key = 0.8 deg"), qPrintable(readout));
   QVERIFY(!angles_->value_at(0, 0.5).has_value());  // outside the data
+  // PAT_UI_SHOTS=DIR keeps a picture of the readout (in its row under the title, clear of the
+  // legend) for a person to look at
+  const QString shots = qEnvironmentVariable("PAT_UI_SHOTS");
+  if (!shots.isEmpty())
+    pat::ui::export_plots({angles_.get()}, shots + "/cursor_readout.png", QSize(500, 300));
 }
 
 void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
