@@ -67,7 +67,8 @@ void check_report_folder(const std::string& dir) {
   namespace fs = std::filesystem;
   if (dir.empty()) throw InputError("--report: empty folder name");
   std::error_code ec;
-  const fs::path path(dir);
+  fs::path path(dir);
+  if (!path.has_filename()) path = path.parent_path();  // "report/" names the folder "report"
   if (fs::exists(path, ec) && !fs::is_directory(path, ec))
     throw InputError("--report " + dir + ": it is a file, not a folder");
   const fs::path parent = path.parent_path();

@@ -112,11 +112,15 @@ bool asks_for_help(const std::vector<std::string>& args) {
 // The window needs a display: without one (and no QT_QPA_PLATFORM such as offscreen), Qt would
 // abort; say so instead.
 bool has_display() {
+#ifdef __linux__
   auto set = [](const char* name) {
     const char* value = std::getenv(name);
     return value != nullptr && *value != '\0';
   };
   return set("DISPLAY") || set("WAYLAND_DISPLAY") || set("QT_QPA_PLATFORM");
+#else
+  return true;  // macOS and Windows have their own window systems
+#endif
 }
 
 // The window: no subcommand, or only --action / --view / --screenshot.

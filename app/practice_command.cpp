@@ -121,8 +121,10 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
   const PlotOption plot(cl.output_path("--plot"));
+  std::string extension = std::filesystem::path(plot.path()).extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::string& plot_path = plot.path();
-  if (plot_path.size() >= 4 && plot_path.compare(plot_path.size() - 4, 4, ".csv") == 0)
+  if (extension == ".csv")
     throw InputError("--plot " + plot_path + ": the observations come in several units, one " +
                      "plot each, and a CSV holds one table: use .png, .pdf or .svg (--json " +
                      "gives every number)");

@@ -71,10 +71,10 @@ int run_regulate(const std::vector<std::string>& args) {
     };
   }
   const PlotOption plot(cl.output_path("--plot"));
+  const std::string out_path = cl.output_path("--out");  // checked before the regulation
   const RegulationResult result = regulate(model, options);
   // a regulation that failed is plotted too: its steps show where it got stuck
   plot.write(regulation_plots(model, result), text);
-  const std::string out_path = cl.output_path("--out");
   // a regulation that did not converge writes nothing: the previous file stays as it was
   if (result.converged && !out_path.empty()) write_preset(result.model, out_path);
 

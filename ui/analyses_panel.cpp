@@ -478,8 +478,9 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
   // the selector and its description name the analysis shown; a result from elsewhere (the
   // regulation panel's deregulation demo) says so instead
   const int entry = choice_->findText(title);
-  if (entry >= 0 && entry != choice_->currentIndex() && !runner_->running()) {
-    choice_->setCurrentIndex(entry);  // its description and form follow
+  if (entry >= 0 && !runner_->running()) {
+    choice_->setCurrentIndex(entry);  // its form follows (a changed index rebuilds it)
+    description_->setText(catalogue_[choice_->itemData(entry).toInt()].description);
   } else if (entry < 0) {
     description_->setText(tr("Shown: %1 (not one of the analyses above; choose one and press "
                              "Run to replace it).")

@@ -112,6 +112,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (!controller_->playing()) show_run_status();
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
+    show_run_status();
     show_banner(tr("Run paused at t = %1 ms: %2. Move the setting back and press \"Start from "
                    "rest\".")
                     .arg(controller_->display_time() * 1e3, 0, 'f', 2)
@@ -459,7 +460,12 @@ void MainWindow::show_run_status() {
   const QString name = QString::fromStdString(model_->name);
   if (controller_->playing())
     statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_));
-  else if (!controller_->run_stopped())
+  else if (controller_->run_stopped())
+    statusBar()->showMessage(tr("Stopped at t = %1 ms (%2 with %3): see the message above the "
+                                "action; Start from rest runs again")
+                                 .arg(controller_->display_time() * 1e3, 0, 'f', 2)
+                                 .arg(name, running_input_));
+  else
     statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
                                 "Step back move one frame")
                                  .arg((controller_->has_frame() ? controller_->current_frame().t
@@ -659,7 +665,11 @@ void MainWindow::restore_settings() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-  show_practice(false);  // the saved layout is the regulated action's, with its panels shown
+  // the saved layout is the regulated action's, with its panels shown (no new run or
+  // measurement while the window closes: only the docks)
+  practice_dock_->hide();
+  regulation_dock_->show();
+  analyses_dock_->show();
   QSettings settings;
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());

@@ -14,9 +14,11 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "inputs/key_input.h"
 #include "measured/alignment.h"
 #include "measured/input_estimate.h"
 #include "measured/model_trace.h"
+#include "sim/key_travel.h"
 #include "sim/static_equilibrium.h"
 
 namespace pat {
@@ -498,12 +500,13 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     r.data = prepared[j].data;
     r.input_spec = prepared[j].spec;
     r.input_estimated = prepared[j].estimated;
-    try {
-      r.baseline =
-          simulate_trace(model, prepared[j].spec, prepared[j].model_duration_s, 1e-4, &base_rest);
-    } catch (const InputError& e) {  // a bad '# input:' line: the file that carries it
+    try {  // a bad '# input:' line: the file that carries it
+      parse_input_spec(prepared[j].spec, input_context(model, base_rest));
+    } catch (const InputError& e) {
       throw InputError(r.path + ": '# input: " + r.input_spec + "': " + e.what());
     }
+    r.baseline =
+        simulate_trace(model, prepared[j].spec, prepared[j].model_duration_s, 1e-4, &base_rest);
     if (!r.baseline.completed)
       throw InputError(r.path + ": the model stops under the input '" + r.input_spec +
                        "': " + r.baseline.stop_cause);

@@ -358,13 +358,17 @@ void apply_regulated_offsets(const PresetReader& r, const json& root, ActionMode
     const std::string path = item_path("adjusters", i, list[i]);
     const double offset = r.number_or(list[i], path, "regulated_offset_mm", 0.0) * kMm;
     const Adjuster original = model.adjusters[i];
-    // a regulation moves the adjuster within its physical range, so its offset lies there too
-    if (offset < original.min || offset > original.max)
-      r.fail(path + ".regulated_offset_mm", "must lie within the adjuster's range_mm [" +
-                                                PresetReader::format(original.min / kMm) + ", " +
-                                                PresetReader::format(original.max / kMm) +
-                                                "] (got " + PresetReader::format(offset / kMm) +
-                                                ")");
+    // regulations move the adjuster within its physical range, which stays relative to the
+    // regulated position: a preset regulated again can carry an offset beyond the range, but not
+    // beyond the adjuster's whole travel (max − min), which no turn of a real screw exceeds
+    const double travel = original.max - original.min;
+    if (std::abs(offset) > travel)
+      r.fail(path + ".regulated_offset_mm",
+             "must be within ±" + PresetReader::format(travel / kMm) +
+                 " mm, the whole travel of the adjuster's range_mm [" +
+                 PresetReader::format(original.min / kMm) + ", " +
+                 PresetReader::format(original.max / kMm) + "] (got " +
+                 PresetReader::format(offset / kMm) + ")");
     if (offset == 0.0) continue;
     model.adjusters[i].min = model.adjusters[i].max = offset;
     model = with_adjuster(model, original.name, offset);

@@ -117,7 +117,7 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
       options.duration_s / options.sample_interval_s > kMaxTraceRows)
     throw InputError("sampling every " + format_number(options.sample_interval_s) + " s for " +
                      format_number(options.duration_s) + " s makes more than 5 million trace " +
-                     "rows: sample less often (--sample-interval) or run shorter");
+                     "rows: sample less often or simulate a shorter time");
   // the caller owns model and input for the whole call
   Simulator sim(borrow(model), input ? borrow(*input) : nullptr, options, given_rest);
   SimulationResult result;
@@ -178,6 +178,7 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     }
   }
   const auto wall_end = std::chrono::steady_clock::now();
+  sim.finish_events();
   result.status = sim.stopped() ? "stopped" : "ok";
   result.stop_cause = sim.stop_cause();
   result.events = sim.events();

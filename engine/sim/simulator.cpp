@@ -177,6 +177,10 @@ void Simulator::detect_events() {
   const std::vector<double>& previous = penetration_;
   const std::vector<double>& current = next_penetration_;
   const std::size_t before = events_.size();
+  // events wait in held_events_ while a check is being confirmed (below), so that a check
+  // dated back to its contact's closing still lands in time order and among the step's new
+  // events
+  auto report = [&](SimEvent e) { held_events_.push_back(std::move(e)); };
   auto became_active = [&](int c) { return c >= 0 && current[c] > 0.0 && previous[c] <= 0.0; };
   // the hammer–string gap goes with each event (rare: computed only then)
   double gap = 0.0;
@@ -194,12 +198,12 @@ void Simulator::detect_events() {
   if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
       current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
       t1_ - last_letoff_active_ < 2e-3) {
-    events_.push_back({"escapement", t1_, 0.0, gap_now()});
+    report({"escapement", t1_, 0.0, gap_now()});
   }
   if (became_active(marks.string_contact)) {
     // strike-point speed toward the string just before contact
     const Vec2 vel = dynamics_->point_velocity(marks.hammer, marks.strike_point, q0_, v0_);
-    events_.push_back({"impact", t1_, -marks.string_normal.dot(vel), gap_now()});
+    report({"impact", t1_, -marks.string_normal.dot(vel), gap_now()});
     impact_since_check_ = true;
   }
   // check: the backcheck catches the returning hammer. A contact is a catch once it has taken a
@@ -219,24 +223,48 @@ void Simulator::detect_events() {
         pending_check_.reset();  // a brush: the hammer goes on
       } else if (speed_away(q1_, v1_) <=
                  kCaughtSpeedFraction * std::max(pending_check_->speed, 0.0)) {
-        const SimEvent check{"check", pending_check_->t, 0.0, pending_check_->gap};
-        // in time order (another event may have come while the catch was being confirmed)
-        auto at = events_.end();
-        while (at != events_.begin() && (at - 1)->t > check.t) --at;
-        events_.insert(at, check);
-        impact_since_check_ = false;
-        pending_check_.reset();
+        confirm_pending_check();
       }
     }
   }
   if (became_active(marks.key_bottom_contact)) {
     if (last_key_bottom_ < 0.0 || t1_ - last_key_bottom_ > 5e-3)
-      events_.push_back({"key_bottom", t1_, 0.0, gap_now()});
+      report({"key_bottom", t1_, 0.0, gap_now()});
     last_key_bottom_ = t1_;
   } else if (marks.key_bottom_contact >= 0 && current[marks.key_bottom_contact] > 0.0) {
     last_key_bottom_ = t1_;
   }
+  if (!pending_check_) release_held_events();
   new_events_ = static_cast<int>(events_.size() - before);
+}
+
+void Simulator::confirm_pending_check() {
+  const SimEvent check{"check", pending_check_->t, 0.0, pending_check_->gap};
+  // in time order among the events held since its contact closed
+  auto at = held_events_.end();
+  while (at != held_events_.begin() && (at - 1)->t > check.t) --at;
+  held_events_.insert(at, check);
+  impact_since_check_ = false;
+  pending_check_.reset();
+}
+
+void Simulator::release_held_events() {
+  events_.insert(events_.end(), held_events_.begin(), held_events_.end());
+  held_events_.clear();
+}
+
+void Simulator::finish_events() {
+  // the run ends with the catching contact still closed: a catch (it holds the hammer)
+  if (pending_check_ && marks_check_closed()) confirm_pending_check();
+  pending_check_.reset();
+  const std::size_t before = events_.size();
+  release_held_events();
+  new_events_ = static_cast<int>(events_.size() - before);
+}
+
+bool Simulator::marks_check_closed() const {
+  const int c = model_->landmarks.check_contact;
+  return c >= 0 && static_cast<std::size_t>(c) < penetration_.size() && penetration_[c] > 0.0;
 }
 
 }  // namespace pat

@@ -60,8 +60,14 @@ class Simulator {
   const std::vector<double>& contact_penetrations();
   /// Events found so far, in time order.
   const std::vector<SimEvent>& events() const { return events_; }
-  /// Events found by the latest step() call.
+  /// Events reported by the latest step() (or finish_events()) call: the last ones of
+  /// events(). A step that closes the backcheck contact holds its events back until the contact
+  /// proves a catch (then the check, dated to the closing, comes with them in time order) or a
+  /// brush, a few steps later.
   int new_event_count() const { return new_events_; }
+  /// At the end of a run: a catch still being confirmed whose contact is closed is reported, and
+  /// every held event released (simulate() calls it).
+  void finish_events();
 
   const ActionModel& model() const { return *model_; }
   std::shared_ptr<const ActionModel> model_ptr() const { return model_; }
@@ -117,6 +123,10 @@ class Simulator {
     double t = 0.0, gap = 0.0, speed = 0.0;
   };
   std::optional<PendingCheck> pending_check_;
+  std::vector<SimEvent> held_events_;  // found while a check is pending, not yet in events_
+  void confirm_pending_check();
+  void release_held_events();
+  bool marks_check_closed() const;
   double last_key_bottom_ = -1.0;
   double last_letoff_active_ = -1.0;
 };

@@ -228,11 +228,12 @@ TEST(PresetErrors, ClearFirstNamesAnotherAdjusterWithinItsRange) {
                                      "outside the adjuster's physical range"});
 }
 
-// A regulated offset (written by regulate) lies within the adjuster's physical range.
+// A regulated offset (written by regulate, summed over regulations) stays within the
+// adjuster's whole travel.
 TEST(PresetErrors, RegulatedOffsetOutsideTheAdjustersRange) {
   json preset = preset_json("grand");
   preset["adjusters"][0]["regulated_offset_mm"] = 50;  // key_dip's range is [-3, 3]
-  expect_preset_error(preset, {"adjusters[0]", "regulated_offset_mm", "range_mm [-3, 3]", "50"});
+  expect_preset_error(preset, {"adjusters[0]", "regulated_offset_mm", "±6 mm", "[-3, 3]", "50"});
 }
 
 TEST(PresetErrors, MissingFileNamesThePath) {

@@ -1,0 +1,82 @@
+// Simulation events (sim/simulator.h): each is reported once, in time order, among the step's new
+// events; the check is a catch (the backcheck takes a fifth of the returning hammer's speed), not
+// a brush; a catch still being confirmed when the run ends is reported.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/simulator.h"
+#include "test_support.h"
+
+namespace pat {
+namespace {
+
+std::vector<SimEvent> stepped_events(const ActionModel& model, const std::string& spec,
+                                     double duration, std::vector<SimEvent>& final_events) {
+  const RestState rest = find_rest_state(model);
+  std::shared_ptr<const KeyInput> input = parse_input_spec(spec, input_context(model, rest));
+  SimulationOptions options;
+  options.duration_s = duration;
+  Simulator sim(std::make_shared<const ActionModel>(model), input, options, &rest);
+  std::vector<SimEvent> seen;
+  while (sim.time() < duration - 1e-12 && sim.step(duration))
+    for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
+      seen.push_back(*e);
+  sim.finish_events();
+  for (auto e = sim.events().end() - sim.new_event_count(); e != sim.events().end(); ++e)
+    seen.push_back(*e);
+  final_events = sim.events();
+  return seen;
+}
+
+// On the grand's 20 N blow the escapement after the catch comes while the catch is being
+// confirmed: the new events of each step must still add up to the run's events, each once.
+TEST(Events, EveryEventIsReportedOnceInTimeOrderAmongTheStepsNewEvents) {
+  for (const char* action : {"grand", "upright"}) {
+    std::vector<SimEvent> all;
+    const std::vector<SimEvent> seen =
+        stepped_events(test::shipped(action), "force:const:20", 0.4, all);
+    ASSERT_EQ(seen.size(), all.size()) << action;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      EXPECT_EQ(seen[i].type, all[i].type) << action << " event " << i;
+      EXPECT_EQ(seen[i].t, all[i].t) << action << " event " << i;
+      if (i > 0) EXPECT_LE(all[i - 1].t, all[i].t) << action << " event " << i;
+    }
+    EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const SimEvent& e) {
+      return e.type == "check";
+    })) << action;
+  }
+}
+
+// The upright's whippen, flung up as the key bottoms, brushes the backcheck against the
+// rebounding hammer 2 mm from the string; the catch comes later, near the 16 mm of checking.
+TEST(Events, TheUprightsCheckIsTheCatchNotTheBrushAfterTheStrike) {
+  const SimulationResult r = test::run(test::shipped("upright"), "force:const:20", 0.4);
+  const auto check = std::find_if(r.events.begin(), r.events.end(),
+                                  [](const SimEvent& e) { return e.type == "check"; });
+  ASSERT_NE(check, r.events.end());
+  // the regulated checking distance is 16 mm; the brush was at 2.2 mm
+  EXPECT_GT(check->hammer_string_gap, 10e-3);
+  EXPECT_LT(check->hammer_string_gap, 20e-3);
+}
+
+// A run that ends with the catching contact closed but not yet confirmed reports the catch.
+TEST(Events, ACatchStillBeingConfirmedWhenTheRunEndsIsReported) {
+  const ActionModel grand = test::shipped("grand");
+  const SimulationResult full = test::run(grand, "force:const:20", 0.1);
+  const auto check = std::find_if(full.events.begin(), full.events.end(),
+                                  [](const SimEvent& e) { return e.type == "check"; });
+  ASSERT_NE(check, full.events.end());
+  // end the run two steps after the contact closed (the confirmation takes longer)
+  const SimulationResult cut = test::run(grand, "force:const:20", check->t + 2e-5);
+  const auto cut_check = std::find_if(cut.events.begin(), cut.events.end(),
+                                      [](const SimEvent& e) { return e.type == "check"; });
+  ASSERT_NE(cut_check, cut.events.end());
+  EXPECT_EQ(cut_check->t, check->t);
+}
+
+}  // namespace
+}  // namespace pat
