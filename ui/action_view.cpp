@@ -327,8 +327,14 @@ void ActionView::paint_frame(QPainter& painter) {
     if (!r.active || r.normal_force <= 1e-3) continue;
     ++active_contacts_;
     const QPointF at = to_screen(r.point);
-    const double length = std::clamp(14.0 * std::sqrt(r.normal_force), 10.0, 90.0);
-    const QPointF tip = at + QPointF(r.normal.x(), -r.normal.y()) * length;
+    double length = std::clamp(14.0 * std::sqrt(r.normal_force), 10.0, 90.0);
+    const QPointF direction(r.normal.x(), -r.normal.y());
+    // in a close-up the arrow may point out of the view: shortened to end inside it (its label
+    // still gives the force), but never below the shortest arrow
+    const QRectF inside = QRectF(rect()).adjusted(4, 4, -4, -22);  // room for the label below
+    while (length > 10.0 && inside.contains(at) && !inside.contains(at + direction * length))
+      length = std::max(10.0, length - 4.0);
+    const QPointF tip = at + direction * length;
     painter.setPen(QPen(contact_colour(), 2.0));
     painter.setBrush(Qt::white);
     painter.drawEllipse(at, 5.0, 5.0);
