@@ -42,6 +42,10 @@ void check_plot_path(const std::string& path) {
   ui::export_format(text(path));
 }
 
+bool is_csv_plot_path(const std::string& path) {
+  return ui::export_format(text(path)) == ui::ExportFormat::Csv;
+}
+
 void write_plots(const std::string& path, const std::vector<PlotSpec>& plots) {
   if (plots.empty()) throw InputError("--plot " + path + ": the run gave nothing to plot");
   std::vector<ui::AnalysisPlot> converted;
@@ -57,6 +61,11 @@ void check_plot_path(const std::string& path) {
 
 void write_plots(const std::string& path, const std::vector<PlotSpec>&) {
   check_plot_path(path);
+}
+
+bool is_csv_plot_path(const std::string& path) {
+  check_plot_path(path);
+  return false;
 }
 #endif
 

@@ -13,6 +13,8 @@ namespace pat::app {
 /// Throws InputError when the file's extension is not a plot format, or when this build has no
 /// plotting (configured without the window). Commands call it before their work.
 void check_plot_path(const std::string& path);
+/// Whether a valid --plot path writes the plotted columns as CSV (the extension, any case).
+bool is_csv_plot_path(const std::string& path);
 /// Writes the plots, stacked top to bottom. Throws InputError naming the file when it cannot
 /// be written or when there is nothing to plot.
 void write_plots(const std::string& path, const std::vector<PlotSpec>& plots);
@@ -24,6 +26,8 @@ class PlotOption {
   explicit PlotOption(std::string path);
   bool given() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
+  /// A CSV export: one table, so the plots must share their x axis.
+  bool writes_csv() const { return given() && is_csv_plot_path(path_); }
   /// Writes when given; returns whether it wrote.
   bool write(const std::vector<PlotSpec>& plots) const;
   /// Writes when given and then, if `announce`, says "plot written to PATH" on stdout (commands

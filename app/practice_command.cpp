@@ -4,7 +4,6 @@
 //                  [--reveal] [--json]
 // `new` simulates the technician's tests on the hidden and the regulated action and prints the
 // symptoms; `check` judges a diagnosis from the exercise alone (no simulation).
-#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <iostream>
@@ -85,6 +84,12 @@ nlohmann::json exercise_header(const Exercise& e) {
   return out;
 }
 
+/// --reveal in text: one "answer: SETTING:DIRECTION" line per hidden fault.
+void print_answers(const std::vector<FaultAnswer>& answers) {
+  for (const FaultAnswer& a : answers)
+    std::cout << "answer: " << a.setting << ":" << a.direction << "\n";
+}
+
 nlohmann::json answer_json(const FaultAnswer& a) {
   return {{"setting", a.setting}, {"direction", a.direction}};
 }
@@ -99,14 +104,9 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
     const std::string unit = o.unit.empty() ? "count" : o.unit;
     PlotSpec& plot = by_unit[unit];
     if (plot.curves.empty()) {
-      // columns named by the unit: each unit's plot has its own observations, so their CSV
-      // columns must not pass for one table (a .csv --plot then says so instead of merging them)
-      std::string slug = unit;
-      for (char& c : slug)
-        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
       plot = category_plot("Observed minus regulated (" + unit + ")", "difference (" + unit + ")",
-                           "observation", "observation_index_" + slug);
-      plot.curves = {point_curve("this action − regulated", "difference_" + slug)};
+                           "observation", "observation_index");
+      plot.curves = {point_curve("this action − regulated", "difference")};
     }
     const double x = double(plot.x_categories.size());
     plot.x_categories.push_back(o.id.substr(o.id.find('.') + 1));
@@ -121,11 +121,8 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
   const PlotOption plot(cl.output_path("--plot"));
-  std::string extension = std::filesystem::path(plot.path()).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  const std::string& plot_path = plot.path();
-  if (extension == ".csv")
-    throw InputError("--plot " + plot_path + ": the observations come in several units, one " +
+  if (plot.writes_csv())
+    throw InputError("--plot " + plot.path() + ": the observations come in several units, one " +
                      "plot each, and a CSV holds one table: use .png, .pdf or .svg (--json " +
                      "gives every number)");
   const ActionModel hidden = hidden_model(loaded.model, loaded.exercise);
@@ -181,9 +178,7 @@ int run_new(const CommandLine& cl) {
   std::cout << loaded.exercise.title << "\n";
   if (symptoms.empty()) std::cout << "  no symptom differs from the regulated action\n";
   for (const Symptom& s : symptoms) std::cout << "  - " << s.text << "\n";
-  if (cl.has("--reveal"))
-    for (const FaultAnswer& a : answers)
-      std::cout << "answer: " << a.setting << ":" << a.direction << "\n";
+  if (cl.has("--reveal")) print_answers(answers);
   return 0;
 }
 
@@ -207,9 +202,7 @@ int run_check(const CommandLine& cl) {
     std::cout << (judgement.correct ? "correct" : "not correct") << ", score " << judgement.score
               << "\n";
     for (const std::string& r : judgement.remarks) std::cout << "  " << r << "\n";
-    if (cl.has("--reveal"))
-      for (const FaultAnswer& a : exercise_answers(loaded.exercise))
-        std::cout << "answer: " << a.setting << ":" << a.direction << "\n";
+    if (cl.has("--reveal")) print_answers(exercise_answers(loaded.exercise));
   }
   return 0;
 }

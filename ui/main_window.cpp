@@ -105,11 +105,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
   connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
-  connect(controller_, &PlaybackController::frameShown, plots_,
-          [this](const Frame& frame) { plots_->mark_time(frame.t); });
-  // paused, a step or a seek changes the time the status bar gives
-  connect(controller_, &PlaybackController::frameShown, this, [this] {
-    if (!controller_->playing()) show_run_status();
+  connect(controller_, &PlaybackController::frameShown, this, [this](const Frame& frame) {
+    plots_->mark_time(frame.t);
+    if (!controller_->playing()) show_run_status();  // paused: a step or seek moves its time
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
     show_run_status();

@@ -9,6 +9,7 @@
 
 #include "model/action_model.h"
 #include "sim/simulation.h"
+#include "sim/simulator.h"
 
 namespace pat {
 
@@ -79,8 +80,6 @@ inline constexpr double kForteHoldSeconds = 0.3;
 /// closed (the grand's backcheck stands on the resting key: its tail runs into it).
 class BackcheckCatch {
  public:
-  static constexpr double kCaughtSpeedFraction = 0.8;
-
   /// `gap`: hammer–string distance (m); `check_gap`: catcher–backcheck gap (m, ≤ 0 touching).
   BackcheckCatch(double t, double gap, double check_gap)
       : t_(t), gap_(gap), check_gap_(check_gap) {}

@@ -10,9 +10,6 @@ namespace pat {
 namespace {
 
 constexpr double kMaxTurnFromRest = M_PI;  // rad
-// a check contact is a catch once the hammer has lost this much of its speed away from the string
-// (as the regulation's checking reading, regulation/technician_tests.h: BackcheckCatch)
-constexpr double kCaughtSpeedFraction = 0.8;
 
 std::string part_name(const ActionModel& model, int body) {
   return body < 0 ? std::string("frame") : model.bodies[body].name;

@@ -18,6 +18,11 @@
 
 namespace pat {
 
+/// A backcheck contact is a catch once the returning hammer has lost this much of its speed away
+/// from the string; one that opens before is a brush. Shared by the simulator's check event and
+/// the regulation's checking reading (regulation/technician_tests.h: BackcheckCatch).
+inline constexpr double kCaughtSpeedFraction = 0.8;
+
 /// A non-owning pointer to something the caller keeps alive for the Simulator's whole life
 /// (simulate() and the technician's tests run a Simulator over a model they were handed).
 template <typename T>
