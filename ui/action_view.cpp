@@ -234,10 +234,13 @@ void ActionView::paint_frame(QPainter& painter) {
   label_font.setBold(true);
   painter.setFont(label_font);
 
+  // the drawn fixtures and bodies, which the rails' and fixtures' labels keep off
+  std::vector<QPolygonF> drawn_shapes;
   // fixtures
   for (const Fixture& f : model.fixtures) {
     QPolygonF polygon;
     for (const Vec2& p : f.outline) polygon << to_screen(p);
+    drawn_shapes.push_back(polygon);
     const QColor colour = fixture_colour(f.name);
     painter.setPen(QPen(colour.darker(160), 1.5));
     painter.setBrush(f.name == "string" ? colour : colour.lighter(120));
@@ -248,6 +251,7 @@ void ActionView::paint_frame(QPainter& painter) {
     const Body& body = model.bodies[b];
     QPolygonF polygon;
     for (const Vec2& p : body.outline) polygon << to_screen(body_point(b, p));
+    drawn_shapes.push_back(polygon);
     // a pivot away from the drawn part (the grand's damper lever turns on a flange behind the
     // string): the arm that joins them, so that the pivot does not float on its own
     QPolygonF rest_outline;
@@ -285,20 +289,30 @@ void ActionView::paint_frame(QPainter& painter) {
     painter.setPen(QPen(QColor(95, 60, 30), 1.5));
     painter.setBrush(QColor(170, 120, 70, 230));
     painter.drawPolygon(head);
+    drawn_shapes.push_back(head);
     backcheck_label_at = to_screen(body_point(c.body_b, c.segment_end + back));
   }
   // contact features: felts, buttons, capstan, jack top, backcheck face (moved by the adjusters)
   painter.setBrush(Qt::NoBrush);
+  // a drawn circle as an octagon around it, for the labels to keep off
+  auto circle_shape = [](const QPointF& centre, double radius) {
+    QPolygonF octagon;
+    for (int k = 0; k < 8; ++k)
+      octagon << centre + QPointF(radius * std::cos(k * M_PI / 4), radius * std::sin(k * M_PI / 4));
+    return octagon;
+  };
   for (const Contact& c : model.contacts) {
     const QColor ink(60, 60, 60, 170);
     painter.setPen(QPen(ink, 1.5));
     if (c.radius_a > 0.0) {
       const QPointF centre = to_screen(body_point(c.body_a, c.center_a));
       painter.drawEllipse(centre, c.radius_a * scale_, c.radius_a * scale_);
+      drawn_shapes.push_back(circle_shape(centre, c.radius_a * scale_ + 1.0));
     }
     if (c.shape == ContactShape::CircleCircle && c.radius_b > 0.0) {
       const QPointF centre = to_screen(body_point(c.body_b, c.center_b));
       painter.drawEllipse(centre, c.radius_b * scale_, c.radius_b * scale_);
+      drawn_shapes.push_back(circle_shape(centre, c.radius_b * scale_ + 1.0));
     } else if (c.shape == ContactShape::CircleSegment) {
       painter.setPen(QPen(ink, 3.0, Qt::SolidLine, Qt::RoundCap));
       painter.drawLine(to_screen(body_point(c.body_b, c.segment_start)),
@@ -318,6 +332,7 @@ void ActionView::paint_frame(QPainter& painter) {
     QString text;
     QColor colour;
     bool small;
+    bool keep_clear = false;  // of the drawing (LabelPlacer::place_clear)
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -364,6 +379,7 @@ void ActionView::paint_frame(QPainter& painter) {
   // labels without overlap: parts first, then forces, then fixtures
   LabelPlacer placer{QRectF(rect())};
   placer.reserve(QRectF(QPointF(8, 4), QFontMetricsF(big).size(0, readout) + QSizeF(8, 8)));
+  for (const QPolygonF& shape : drawn_shapes) placer.avoid(shape);
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
     Vec2 centre = Vec2::Zero();
@@ -394,12 +410,12 @@ void ActionView::paint_frame(QPainter& painter) {
     const bool tall = size.y() > 4.0 * size.x();
     const QPointF anchor =
         tall ? to_screen(highest) + QPointF(6, 4) : to_screen(lowest) + QPointF(-10, 15);
-    const Label label{anchor, QString::fromStdString(f.name), QColor(70, 70, 70), true};
+    const Label label{anchor, QString::fromStdString(f.name), QColor(70, 70, 70), true, true};
     (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
   }
   if (backcheck_label_at)
     fixture_labels.push_back(
-        {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true});
+        {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true, true});
   // the part the jack lifts, where escapement happens: the grand's knuckle (a circle on the
   // hammer), the upright's butt (the face on the hammer)
   const int escapement = model.landmarks.escapement_contact;
@@ -423,7 +439,9 @@ void ActionView::paint_frame(QPainter& painter) {
   small.setBold(false);
   for (const Label& l : labels) {
     painter.setFont(l.small ? small : label_font);
-    const auto at = placer.place(l.anchor, l.text, QFontMetricsF(painter.font()));
+    const QFontMetricsF metrics(painter.font());
+    const auto at = l.keep_clear ? placer.place_clear(l.anchor, l.text, metrics)
+                                 : placer.place(l.anchor, l.text, metrics);
     if (at) draw_label(painter, *at, l.text, l.colour);
   }
 }

@@ -6,6 +6,7 @@
 #include <QSignalSpy>
 #include <QTest>
 
+#include "label_placer.h"
 #include "main_window.h"
 #include "playback_controller.h"
 #include "ui_test_support.h"
@@ -22,6 +23,7 @@ class ActionViewTest : public QObject {
   void wheel_zooms_and_right_drag_pans();
   void dragging_the_key_front_down_plays_the_key();
   void close_ups_frame_the_escapement_and_the_checking();
+  void labels_avoid_each_other_and_kept_clear_ones_the_drawing();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -165,6 +167,42 @@ void ActionViewTest::close_ups_frame_the_escapement_and_the_checking() {
   bare.landmarks.escapement_contact = -1;
   QVERIFY(!ActionView::focus_region(bare, pat::ui::ViewFocus::escapement).has_value());
   QVERIFY(!ActionView::focus_region(bare, pat::ui::ViewFocus::whole).has_value());
+}
+
+void ActionViewTest::labels_avoid_each_other_and_kept_clear_ones_the_drawing() {
+  const QFontMetricsF metrics{QFont()};
+  const QString text = "hammer rest rail";
+  const double w = metrics.horizontalAdvance(text), h = metrics.height();
+  const QPointF anchor(300, 200);
+  // a part drawn exactly where the label would go first (its box at the anchor)
+  const QRectF first_box(anchor.x() - 2, anchor.y() - metrics.ascent() - 1, w + 4, h + 2);
+  const QPolygonF part(first_box.adjusted(-5, -5, 5, 5));
+
+  pat::ui::LabelPlacer plain{QRectF(0, 0, 800, 600)};
+  plain.avoid(part);
+  QCOMPARE(plain.covered_points(first_box), 18);  // every grid point of the box lies on the part
+  QCOMPARE(plain.covered_points(first_box.translated(0, 3 * h)), 0);
+  const auto over = plain.place(anchor, text, metrics);
+  QVERIFY(over.has_value());
+  QCOMPARE(*over, anchor);  // place() ignores the drawing: the first free position
+  // a second label at the same anchor goes elsewhere: labels never overlap
+  const auto second = plain.place(anchor, text, metrics);
+  QVERIFY(second.has_value());
+  QVERIFY(*second != anchor);
+
+  pat::ui::LabelPlacer clear{QRectF(0, 0, 800, 600)};
+  clear.avoid(part);
+  const auto beside = clear.place_clear(anchor, text, metrics);
+  QVERIFY(beside.has_value());
+  const QRectF box(beside->x() - 2, beside->y() - metrics.ascent() - 1, w + 4, h + 2);
+  QCOMPARE(clear.covered_points(box), 0);
+  QVERIFY(!box.intersects(part.boundingRect()));
+  // still next to its anchor: within three lines and one label width
+  QVERIFY(std::abs(beside->y() - anchor.y()) <= 3 * h + 1e-9);
+  QVERIFY(std::abs(beside->x() - anchor.x()) <= w + 6 + 1e-9);
+  // with nothing drawn, place_clear() takes the first position like place()
+  pat::ui::LabelPlacer empty{QRectF(0, 0, 800, 600)};
+  QCOMPARE(*empty.place_clear(anchor, text, metrics), anchor);
 }
 
 QTEST_MAIN(ActionViewTest)
