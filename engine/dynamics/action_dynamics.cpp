@@ -534,6 +534,14 @@ double ActionDynamics::mechanical_energy(const DofVector& q, const DofVector& v)
   for (const JointSpring& spring : model_.springs)
     energy +=
         0.5 * spring.stiffness * q[spring.body] * q[spring.body] - spring.preload * q[spring.body];
+  // a taut strap stores ½ k (L − L0)² (its damping only dissipates)
+  for (std::size_t s = 0; s < model_.straps.size(); ++s) {
+    const Strap& strap = model_.straps[s];
+    const double stretch =
+        (transform(strap.body_b, strap.point_b) - transform(strap.body_a, strap.point_a)).norm() -
+        strap_rest_length_[s];
+    if (stretch > 0.0) energy += 0.5 * strap.stiffness * stretch * stretch;
+  }
   return energy;
 }
 

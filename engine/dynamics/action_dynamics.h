@@ -108,7 +108,8 @@ class ActionDynamics : public OdeSystem {
   /// Hammer–string gap (m) at q: distance of the strike point from the string plane.
   double hammer_string_gap(const DofVector& q);
 
-  /// Kinetic + gravitational potential + spring energy (J), for conservation tests.
+  /// Kinetic + gravitational potential + joint-spring and taut-strap energy (J), for
+  /// conservation tests (felt contacts and friction are left out).
   double mechanical_energy(const DofVector& q, const DofVector& v);
 
  private:

@@ -24,7 +24,10 @@ TEST_P(BothActions, F2_SoftToVeryLoudKeyForcesSpanOneToSixMetresPerSecond) {
   const double soft = first_impact_velocity(test::run(model, "force:pulse:2:200", 0.3));
   const double loud = first_impact_velocity(test::run(model, "force:pulse:50:200", 0.1));
   std::printf("%s: 2 N -> %.2f m/s, 50 N -> %.2f m/s\n", GetParam().c_str(), soft, loud);
-  // "about 1 to 6 m/s" (Russell & Rossing; Kinoshita): soft within 0.5–1.5, loud within 4.5–7.5
+  // "about 1 to 6 m/s" (Russell & Rossing; Kinoshita): soft within 0.5–1.5, loud within 4.5–7.5.
+  // Measured: grand 1.05 and 6.59, upright 1.14 and 7.26 m/s. The upright's loud blow is beyond
+  // "about 6" (README, limits: the jack slides out from under the butt in loud blows and drives
+  // the hammer up to the string); 7.5 keeps it from growing further unnoticed.
   EXPECT_GT(soft, 0.5);
   EXPECT_LT(soft, 1.5);
   EXPECT_GT(loud, 4.5);
@@ -91,24 +94,49 @@ TEST_P(BothActions, EveryContactTakesPartInSomeRun) {
     EXPECT_TRUE(touched.count(column_name(contact.name) + "_force_n")) << contact.name;
 }
 
-TEST(Integrators, F8_W2AgainstAdaptiveReferenceOnGrandDoubleBlow) {
-  const ActionModel model = test::shipped("grand");
-  const SimulationResult w2 = test::run(model, "force:double:20:40:60", 0.3);
-  const SimulationResult ref = test::run(model, "force:double:20:40:60", 0.3, "rodas", 1e-8);
-  ASSERT_EQ(w2.status, "ok");
-  ASSERT_EQ(ref.status, "ok");
-  const auto a = w2.trace.column("hammer_angle_deg");
-  const auto b = ref.trace.column("hammer_angle_deg");
-  ASSERT_EQ(a.size(), b.size());
+/// Largest hammer-angle difference (deg) between two traces sampled alike, and the second's range.
+struct HammerError {
+  double error_deg = 0.0, range_deg = 0.0;
+};
+HammerError hammer_error(const SimulationResult& run, const SimulationResult& reference) {
+  const auto a = run.trace.column("hammer_angle_deg");
+  const auto b = reference.trace.column("hammer_angle_deg");
+  EXPECT_EQ(a.size(), b.size());
   double error = 0.0, lo = 0.0, hi = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
     error = std::max(error, std::abs(a[i] - b[i]));
     lo = std::min(lo, b[i]);
     hi = std::max(hi, b[i]);
   }
-  std::printf("w2 vs rodas: max hammer angle error %.4f deg = %.3f %% of %.2f deg\n", error,
-              100 * error / (hi - lo), hi - lo);
-  EXPECT_LT(error, 0.02 * (hi - lo));  // the paper's 2 % (section 3.2)
+  return {error, hi - lo};
+}
+
+TEST(Integrators, F8_W2AgainstAdaptiveReferenceOnGrandDoubleBlow) {
+  const ActionModel model = test::shipped("grand");
+  const std::string blow = "force:double:20:40:60";
+  const SimulationResult w2 = test::run(model, blow, 0.3);
+  const SimulationResult ref = test::run(model, blow, 0.3, "rodas", 1e-8);
+  ASSERT_EQ(w2.status, "ok");
+  ASSERT_EQ(ref.status, "ok");
+  const HammerError e = hammer_error(w2, ref);
+  std::printf("w2 vs rodas: max hammer angle error %.4f deg = %.3f %% of %.2f deg\n", e.error_deg,
+              100 * e.error_deg / e.range_deg, e.range_deg);
+  EXPECT_LT(e.error_deg, 0.02 * e.range_deg);  // the paper's 2 % (section 3.2)
+  // DESIGN.md's aim is 0.5 %; 0.36 % measured. The error at 1e-5 s is not yet in the asymptotic
+  // regime (contacts open and close inside steps; 13 % at 2e-5 s), so a bound at the aim itself
+  // would flip with any change of the model: 1 % still catches a twofold regression.
+  EXPECT_LT(e.error_deg, 0.01 * e.range_deg);
+  // and it converges: half the step, at least three times less error (0.028 % measured)
+  SimulationOptions half;
+  half.duration_s = 0.3;
+  half.integrator_options.fixed_step_s = 5e-6;
+  const RestState rest = find_rest_state(model);
+  const auto input = parse_input_spec(blow, input_context(model, rest));
+  const SimulationResult finer = simulate(model, input.get(), half, &rest);
+  ASSERT_EQ(finer.status, "ok");
+  const HammerError f = hammer_error(finer, ref);
+  std::printf("w2 at 5e-6 s: %.3f %%\n", 100 * f.error_deg / f.range_deg);
+  EXPECT_LT(f.error_deg, e.error_deg / 3.0);
 }
 
 }  // namespace

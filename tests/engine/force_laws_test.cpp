@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "dynamics/contact_geometry.h"
 
@@ -117,6 +118,55 @@ TEST(ForceLaws, SmoothTanhMatchesStdTanh) {
   EXPECT_EQ(smooth_tanh(0.0), 0.0);
   EXPECT_EQ(smooth_tanh(1e3), 1.0);
   EXPECT_EQ(smooth_tanh(-1e3), -1.0);
+}
+
+// The closed-form rate derivatives that the velocity Jacobian uses (force_laws.h), against central
+// differences of the forces, at arguments where the (1 − T²) and B2 s⁴ terms matter: α ẋ, v/v_s
+// and ω/ωt from 0.3 to 3 (at the near-zero rates of a resting action they are ≈ 1 and ≈ 0, and a
+// wrong factor there would go unnoticed).
+double central_difference(const std::function<double(double)>& f, double x, double h) {
+  return (f(x + h) - f(x - h)) / (2 * h);
+}
+
+TEST(ForceLawSlopes, FeltDampingIsTheRateDerivativeWhileUnloading) {
+  const FeltLaw law{{5e3, 2e3, 2e3}, {2e3, 2.5e3, 1e3}, 300.0};
+  const double x = 7e-4;
+  for (double alpha_rate : {-0.3, -1.0, -3.0}) {
+    const double rate = alpha_rate / law.alpha;  // m/s
+    const double h = 1e-6 * std::abs(rate);
+    const double numeric = central_difference(
+        [&](double r) { return felt_normal_force(law, x, r); }, rate, h);
+    // relative error of the difference O(h²) ≈ 1e-12, rounding ≈ 1e-16 / 1e-6: 1e-8 covers both
+    EXPECT_NEAR(felt_normal_damping(law, x, rate), numeric, 1e-8 * std::abs(numeric))
+        << alpha_rate;
+    EXPECT_GT(std::abs(numeric), 0.0);
+  }
+  EXPECT_EQ(felt_normal_damping(law, x, 0.5), 0.0);  // loading: no rate dependence
+}
+
+TEST(ForceLawSlopes, FrictionSlopeIsTheDerivativeInNormalForceAndSlip) {
+  const ContactFriction friction{0.4, 1e-3};
+  const double fn = 3.0;
+  for (double ratio : {0.3, 1.0, 3.0}) {
+    const double slip = ratio * friction.slip_velocity;
+    const FrictionSlope slope = friction_slope(friction, fn, slip);
+    const double per_slip = central_difference(
+        [&](double v) { return friction_force(friction, fn, v); }, slip, 1e-6 * slip);
+    const double per_force = central_difference(
+        [&](double f) { return friction_force(friction, f, slip); }, fn, 1e-6 * fn);
+    EXPECT_NEAR(slope.per_slip_velocity, per_slip, 1e-8 * std::abs(per_slip)) << ratio;
+    EXPECT_NEAR(slope.per_normal_force, per_force, 1e-8 * std::abs(per_force)) << ratio;
+  }
+}
+
+TEST(ForceLawSlopes, JointFrictionDampingIsTheDerivativeOfEquation4) {
+  const JointFriction law{1e-3, 0.3, 0.1, 0.05};
+  for (double ratio : {0.3, 1.0, 1.5, 3.0}) {  // s = 1.5: the B1 hump's derivative changes sign
+    const double omega = ratio * law.omega_t;
+    const double numeric = central_difference(
+        [&](double w) { return joint_friction_torque(law, w); }, omega, 1e-6 * omega);
+    EXPECT_NEAR(joint_friction_damping(law, omega), numeric, 1e-8 * std::abs(numeric)) << ratio;
+  }
 }
 
 }  // namespace

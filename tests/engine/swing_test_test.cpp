@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "test_support.h"
@@ -95,9 +96,13 @@ TEST(SwingTest, CoulombFrictionTakesTheWorkOfItsTorqueEachHalfSwing) {
   EXPECT_LE(next, std::asin(k));
 }
 
-TEST(SwingTest, GrandHammerMakesAboutTwoRoundTrips) {
-  // fact F5 (paper section 6; technicians 2–3.5 round trips)
+TEST(SwingTest, GrandHammerMakesTwoToThreeAndAHalfRoundTrips) {
+  // fact F5: the paper's "about two", the technicians' 4–7 swings, i.e. 2–3.5 round trips
+  // (parameters.md, swing test). Measured: 3.5, with the flange's published friction (1.01e-3
+  // N·m); the count moves in half trips, and a flange 10 % freer makes 4. The upright makes 4
+  // (README, limits).
   const SwingResult r = swing_test(test::shipped("grand"));
+  std::printf("grand: %.1f round trips\n", r.round_trips);
   EXPECT_TRUE(r.stopped);
   EXPECT_GE(r.round_trips, 2.0);
   EXPECT_LE(r.round_trips, 3.5);
