@@ -7,6 +7,7 @@
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "json_output.h"
 #include "plot_output.h"
 #include "regulation/regulation.h"
@@ -61,10 +62,16 @@ int run_regulate(const std::vector<std::string>& args) {
   options.max_passes = static_cast<int>(cl.positive_number_or("--max-passes", 6));
   const bool text = !cl.has("--json");
   if (text && !cl.has("--quiet")) {
-    options.on_step = [](const RegulationStep& s) {
-      std::cout << "pass " << s.pass << "  " << s.setting << ": adjuster " << s.adjuster_mm
-                << " mm -> " << s.measured << " (target " << s.target << ", " << s.evaluations
-                << " measurements)";
+    options.on_step = [&model](const RegulationStep& s) {
+      const int i = model.setting_index(s.setting);
+      const std::string unit = i >= 0 ? model.regulation[i].unit : "";
+      // the adjuster to the micrometre: the search moves it by less than the table's 0.01 mm
+      std::cout << "pass " << s.pass << "  " << s.setting << ": adjuster "
+                << number_in(s.adjuster_mm, "mm", 3) << " mm, reads "
+                << (std::isfinite(s.measured) ? number_in(s.measured, unit) + " " + unit
+                                              : std::string("nothing"))
+                << " (target " << number_in(s.target, unit) << " " << unit << "; " << s.evaluations
+                << (s.evaluations == 1 ? " measurement)" : " measurements)");
       if (!s.note.empty()) std::cout << "  [" << s.note << "]";
       std::cout << "\n";
       return true;
@@ -103,12 +110,10 @@ int run_regulate(const std::vector<std::string>& args) {
     if (result.converged && !out_path.empty()) out["written"] = out_path;
     std::cout << out.dump(1) << "\n";
   } else {
-    for (const SettingReading& r : result.settings)
-      std::cout << "  " << r.name << ": " << r.measured << " " << r.unit << " (target " << r.target
-                << " ± " << r.tolerance << ", adjuster " << r.adjuster_mm << " mm)"
-                << (r.within_tolerance() ? "" : "  OUT OF TOLERANCE") << "\n";
+    print_settings_table(std::cout, result.model, result.settings);
     std::cout << (result.converged ? "regulated" : "not regulated") << " in " << result.passes
-              << " passes, " << result.wall_time_s << " s\n";
+              << (result.passes == 1 ? " pass, " : " passes, ") << format_number(result.wall_time_s)
+              << " s\n";
     if (result.converged && !out_path.empty())
       std::cout << "regulated preset written to " << out_path << "\n";
   }

@@ -1,6 +1,8 @@
 #include "settings_output.h"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <utility>
 
 #include "json_output.h"
@@ -28,6 +30,61 @@ nlohmann::json setting_json(const SettingReading& r) {
           {"measured", number_or_null(r.measured)},
           {"adjuster_mm", r.adjuster_mm},
           {"within_tolerance", r.within_tolerance()}};
+}
+
+std::string number_in(double value, const std::string& unit, int decimals) {
+  if (decimals < 0) decimals = unit == "mm" ? 2 : 3;
+  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(decimals) << value;
+  return out.str();
+}
+
+namespace {
+
+/// `text` padded with spaces to `width` characters (UTF-8: "±" is one character, two bytes).
+std::string padded(const std::string& text, std::size_t width) {
+  std::size_t characters = 0;
+  for (const unsigned char c : text)
+    if ((c & 0xC0) != 0x80) ++characters;
+  return text + std::string(characters < width ? width - characters : 1, ' ');
+}
+
+/// A signed adjuster offset: which way it was turned ("+0.30 mm", "-0.12 mm", "0.00 mm").
+std::string signed_mm(double value_mm) {
+  const std::string number = number_in(value_mm, "mm");
+  return (number[0] == '-' || number == "0.00" ? "" : "+") + number + " mm";
+}
+
+}  // namespace
+
+void print_settings_table(std::ostream& out, const ActionModel& model,
+                          const std::vector<SettingReading>& readings) {
+  out << padded("setting", 16) << padded("measured", 16) << padded("target", 24)
+      << padded("adjuster", 11) << "\n";
+  std::vector<std::string> turned;  // what + means, for the adjusters that are not at 0
+  for (const SettingReading& s : readings) {
+    out << padded(s.name, 16)
+        << padded(s.problem.empty() ? number_in(s.measured, s.unit) + " " + s.unit : "-", 16)
+        << padded(
+               number_in(s.target, s.unit) + " ± " + number_in(s.tolerance, s.unit) + " " + s.unit,
+               24)
+        << padded(signed_mm(s.adjuster_mm), 11);
+    if (!s.problem.empty())
+      out << "cannot be read: " << s.problem;
+    else if (!s.within_tolerance())
+      out << "OUT OF TOLERANCE";
+    out << "\n";
+    const int a = model.adjuster_index(s.name);
+    if (a >= 0 && number_in(s.adjuster_mm, "mm") != "0.00" &&
+        !model.adjusters[a].description.empty())
+      turned.push_back(s.name + " " + signed_mm(s.adjuster_mm) + ": " +
+                       model.adjusters[a].description);
+  }
+  if (!turned.empty()) {
+    out << "adjusters turned from their regulated positions (+ as described):\n";
+    for (const std::string& line : turned) out << "  " << line << "\n";
+  }
 }
 
 }  // namespace pat::app

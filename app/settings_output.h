@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -17,5 +18,14 @@ PlotSpec settings_plot(const std::string& title, const std::vector<SettingReadin
 
 /// name, unit, target, tolerance, measured (null when not read), adjuster_mm, within_tolerance.
 nlohmann::json setting_json(const SettingReading& reading);
+
+/// A value in a setting's unit as a technician writes it: mm to 0.01, a fraction to 0.001, or
+/// with `decimals` when given (a value that rounds to zero is written without a minus sign).
+std::string number_in(double value, const std::string& unit, int decimals = -1);
+
+/// The settings as a table (setting, measured, target ± tolerance, adjuster offset, and what is
+/// wrong), then what + means for each adjuster that is turned (its description in `model`).
+void print_settings_table(std::ostream& out, const ActionModel& model,
+                          const std::vector<SettingReading>& readings);
 
 }  // namespace pat::app

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "model/model_variations.h"
 #include "plot_output.h"
+#include "settings_output.h"
 
 namespace pat::app {
 
@@ -52,11 +53,15 @@ int run_touchweight(const std::vector<std::string>& args) {
                        {"action", model.kind}};
     std::cout << out.dump(1) << "\n";
   } else {
-    std::cout << model.name << ": static touchweight\n  downweight " << result.downweight_g
-              << " g, upweight " << result.upweight_g << " g, balance weight "
-              << result.balance_weight_g << " g, friction weight " << result.friction_weight_g
-              << " g\n  key ratio " << result.key_ratio << ", strike weight "
-              << result.strike_weight_g << " g, front weight " << result.front_weight_g << " g\n";
+    // grams to 0.1 g, as a technician's weights read
+    auto grams = [](double g) { return number_in(g, "g", 1) + " g"; };
+    std::cout << model.name << ": static touchweight\n  downweight " << grams(result.downweight_g)
+              << ", upweight " << grams(result.upweight_g) << ", balance weight "
+              << grams(result.balance_weight_g) << ", friction weight "
+              << grams(result.friction_weight_g) << "\n  key ratio "
+              << number_in(result.key_ratio, "", 3) << ", strike weight "
+              << grams(result.strike_weight_g) << ", front weight " << grams(result.front_weight_g)
+              << "\n";
   }
   return 0;
 }

@@ -108,6 +108,13 @@ std::vector<Observation> slow_press_test(const ActionModel& model, const RestSta
       else
         out.push_back(missing(damper_id, damper_label, "fraction", damper_failure));
     }
+  } catch (const JackNeverEscapes& e) {
+    // no escapement to read, but where the hammer stays with the key held down is plain to see
+    const std::string seen = seen_in_slow_press(e.what());
+    out.push_back(missing(escape_id, escape_label, "mm", seen));
+    out.push_back(number(fall_id, "hammer–string distance with the key held down (slow press)",
+                         "mm", e.held_gap() * 1e3));
+    if (damper >= 0) out.push_back(missing(damper_id, damper_label, "fraction", seen));
   } catch (const std::runtime_error& e) {
     const std::string seen = seen_in_slow_press(e.what());
     out.push_back(missing(escape_id, escape_label, "mm", seen));

@@ -123,6 +123,11 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
               "string" +
                   v + ": a spongy feel.",
               seen);
+    else if (*seen.value < 0.5)
+      out.add("blocking",
+              "Blocking: with the key held down the hammer stays against the string" + v +
+                  ", muting the note.",
+              seen);
     else
       out.add(
           "held_close",
@@ -167,7 +172,11 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
               seen);
   } else if (starts_with(id, "repetition.")) {
     // one strike per key cycle is a repeating note: more than one is a double strike, fewer a
-    // failure to repeat; a change on the same side of one is named as what it is
+    // failure to repeat; a change on the same side of one is named as what it is. Only where the
+    // regulated action itself repeats cleanly: the regulated grand strikes two or three times a
+    // cycle under a slow sine (README, limits), and "fewer extra strikes" than that would teach
+    // that extra strikes are normal. The counts stay in the observations.
+    if (std::abs(reg - 1.0) > 1e-9) return;
     const std::string at = seen.label.substr(seen.label.find(" at ") + 1);
     const std::string counts = fixed(*seen.value, 2) +
                                " strikes per key cycle (regulated "
@@ -192,10 +201,12 @@ void describe_missing(const Observation& seen, SymptomList& out) {
   const std::string& id = seen.id;
   const std::string& why = seen.missing_reason;
   if (starts_with(id, "slow_press.escapement")) {
+    // where the hammer then stays is its own observation (slow_press.held_distance_mm): close
+    // to the string it is blocking, farther off the hammer is merely not let go
     if (why.find("never escapes") != std::string::npos)
-      out.add("blocking",
-              "Blocking: in a slow press the jack never escapes; the hammer jams "
-              "against the string and the note is muted.",
+      out.add("no_escapement",
+              "No let-off in a slow press: the jack never escapes, so the hammer is not let go "
+              "and does not drop back while the key is held down.",
               seen);
     else if (why.find("never lifts") != std::string::npos)
       out.add("key_cheats",

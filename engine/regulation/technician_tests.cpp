@@ -145,9 +145,10 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
         "in a slow key press the jack never lifts the hammer (it is carried by another part, "
         "e.g. the repetition lever when the drop screw is too high)");
   if (!escaped)
-    throw std::runtime_error(
+    throw JackNeverEscapes(
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "
-        "button before the key bottoms)");
+        "button before the key bottoms)",
+        held_gap);
   if (!damper_lifted) throw std::runtime_error("in a slow key press the damper never lifts");
   reading.drop_gap = held_gap;
   reading.checked_at_end = gap_of(marks.check_contact) <= 0.0;

@@ -37,6 +37,19 @@ class BackcheckStopsTheRisingHammer : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// A slow press in which the jack never lets the hammer go: with the key held down the hammer
+/// still rests within 0.2 mm of its closest approach to the string. `held_gap()`: the
+/// hammer–string distance with the key held down (m), what a technician sees of it.
+class JackNeverEscapes : public std::runtime_error {
+ public:
+  JackNeverEscapes(const std::string& what, double held_gap)
+      : std::runtime_error(what), held_gap_(held_gap) {}
+  double held_gap() const { return held_gap_; }
+
+ private:
+  double held_gap_;
+};
+
 struct SlowPressReading {
   double let_off_gap = 0.0;           ///< m, hammer–string distance at let-off: the closest
                                       ///< approach while the jack carries the hammer

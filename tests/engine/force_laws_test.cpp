@@ -134,11 +134,10 @@ TEST(ForceLawSlopes, FeltDampingIsTheRateDerivativeWhileUnloading) {
   for (double alpha_rate : {-0.3, -1.0, -3.0}) {
     const double rate = alpha_rate / law.alpha;  // m/s
     const double h = 1e-6 * std::abs(rate);
-    const double numeric = central_difference(
-        [&](double r) { return felt_normal_force(law, x, r); }, rate, h);
+    const double numeric =
+        central_difference([&](double r) { return felt_normal_force(law, x, r); }, rate, h);
     // relative error of the difference O(h²) ≈ 1e-12, rounding ≈ 1e-16 / 1e-6: 1e-8 covers both
-    EXPECT_NEAR(felt_normal_damping(law, x, rate), numeric, 1e-8 * std::abs(numeric))
-        << alpha_rate;
+    EXPECT_NEAR(felt_normal_damping(law, x, rate), numeric, 1e-8 * std::abs(numeric)) << alpha_rate;
     EXPECT_GT(std::abs(numeric), 0.0);
   }
   EXPECT_EQ(felt_normal_damping(law, x, 0.5), 0.0);  // loading: no rate dependence

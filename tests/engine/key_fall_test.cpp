@@ -2,13 +2,13 @@
 // against the closed form of a rigid lever under gravity (energy quadrature), with and without
 // the balance-pin friction, and its landing.
 #include "analysis/key_fall.h"
-#include "regulation/measurements.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/error.h"
+#include "regulation/measurements.h"
 #include "test_support.h"
 
 namespace pat {

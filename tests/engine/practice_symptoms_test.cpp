@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "analysis/parallel_runs.h"
+#include "model/model_edits.h"
 #include "practice/exercise.h"
 #include "practice/neglect_ranges.h"
 #include "practice/observations.h"
@@ -226,6 +227,33 @@ TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
   // the regulated action has no symptom compared with itself
   EXPECT_TRUE(describe_symptoms(seen, seen).empty());
   EXPECT_FALSE(differ_measurably(seen, seen));
+}
+
+// A jack that never escapes in a slow press is seen for what it is: the escapement cannot be
+// read, but where the hammer stays with the key held down can, and the symptoms name blocking
+// only when that is at the string. Let-off screwed 0.16 mm up with the drop screw 0.11 mm down
+// (a review's practice exercise): the hammer is held about 2.5 mm off the string, not jammed.
+TEST(PracticeObservations, AJackThatNeverEscapesIsBlockingOnlyAtTheString) {
+  const ActionModel regulated = test::shipped("grand");
+  const ActionModel hidden =
+      with_adjuster(with_adjuster(regulated, "let_off", 0.16e-3), "drop", -0.11e-3);
+  const std::vector<Observation> seen =
+      run_test(hidden, find_rest_state(hidden), PracticeTest::SlowPress);
+  const std::vector<Observation> reference =
+      run_test(regulated, find_rest_state(regulated), PracticeTest::SlowPress);
+  const Observation* escapement = find_observation(seen, "slow_press.escapement_distance_mm");
+  ASSERT_TRUE(escapement);
+  EXPECT_FALSE(escapement->value.has_value());
+  EXPECT_NE(escapement->missing_reason.find("never escapes"), std::string::npos);
+  const Observation* held = find_observation(seen, "slow_press.held_distance_mm");
+  ASSERT_TRUE(held && held->value);
+  EXPECT_GT(*held->value, 1.0);  // mm: well off the string
+  EXPECT_LT(*held->value, 4.0);
+  std::set<std::string> ids;
+  for (const Symptom& s : describe_symptoms(seen, reference)) ids.insert(s.id);
+  EXPECT_TRUE(ids.count("no_escapement"));
+  EXPECT_TRUE(ids.count("held_close"));
+  EXPECT_FALSE(ids.count("blocking"));
 }
 
 // A regulated action strikes once in a forte blow with the key held: the backcheck holds the
