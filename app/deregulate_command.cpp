@@ -9,8 +9,10 @@
 #include "commands.h"
 #include "core/error.h"
 #include "io/csv.h"
+#include "json_output.h"
 #include "plot_output.h"
 #include "regulation/deregulation.h"
+#include "settings_output.h"
 
 namespace pat::app {
 namespace {
@@ -74,6 +76,7 @@ int run_deregulate(const std::vector<std::string>& args) {
           {{"t_s", s.t},
            {"adjuster_mm", s.adjuster_mm},
            {"measured", std::isfinite(s.measured) ? nlohmann::json(s.measured) : nullptr},
+           {"measure_problem", text_or_null(s.measure_problem)},
            {"blow_mm", std::isfinite(s.blow_mm) ? nlohmann::json(s.blow_mm) : nullptr},
            {"hammer_string_gap_mm", s.hammer_string_gap_mm},
            {"whippen_angle_deg", s.whippen_angle_deg}});
@@ -87,10 +90,22 @@ int run_deregulate(const std::vector<std::string>& args) {
   } else {
     std::cout << "deregulating " << options.setting << " at " << options.rate_mm_per_s
               << " mm/s, key at " << options.frequency_hz << " Hz\n";
-    for (const DeregulationSample& s : result.samples)
-      std::cout << "  t " << s.t << " s  adjuster " << s.adjuster_mm << " mm  measured "
-                << s.measured << "  blow " << s.blow_mm << " mm  whippen " << s.whippen_angle_deg
-                << " deg\n";
+    const int setting = model.setting_index(options.setting);
+    const std::string unit = setting >= 0 ? model.regulation[setting].unit : "";
+    std::string last_problem;  // a reason is written once, where it first appears
+    for (const DeregulationSample& s : result.samples) {
+      std::cout << "  t " << number_in(s.t, "", 2) << " s  adjuster "
+                << number_in(s.adjuster_mm, "mm") << " mm  " << options.setting << " "
+                << (std::isfinite(s.measured) ? number_in(s.measured, unit) + " " + unit
+                                              : std::string("cannot be read"))
+                << "  blow "
+                << (std::isfinite(s.blow_mm) ? number_in(s.blow_mm, "mm") + " mm" : "-")
+                << "  whippen " << number_in(s.whippen_angle_deg, "", 2) << " deg";
+      if (!s.measure_problem.empty() && s.measure_problem != last_problem)
+        std::cout << "  (" << s.measure_problem << ")";
+      last_problem = s.measure_problem;
+      std::cout << "\n";
+    }
     std::cout << result.status << " at t = " << result.stop_t << " s"
               << (result.stop_cause.empty() ? "" : ": " + result.stop_cause) << "\n";
     if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";

@@ -57,6 +57,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   // the blow at rest goes with every sample; it is the measurement itself when that is the setting
   const bool setting_is_blow = options.setting == "hammer_blow";
   double measured = measure_setting(model, options.setting, &rest);
+  std::string measure_problem;  // why `measured` is NaN, when it is
   double blow_mm = setting_is_blow ? measured : measure_setting(model, "hammer_blow", &rest);
   const double period = 1.0 / options.frequency_hz;
   int next_cycle = 1;
@@ -97,8 +98,10 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       try {
         rest = rest_state_near(*moved, rest);
         measured = measure_setting(*moved, options.setting, &rest);
-      } catch (const std::exception&) {
+        measure_problem.clear();
+      } catch (const std::exception& e) {
         measured = std::nan("");  // cannot be measured there (e.g. the jack never escapes)
+        measure_problem = e.what();
       }
       blow_mm = setting_is_blow ? measured : measured_or_nan(*moved, "hammer_blow", &rest);
     }
@@ -108,6 +111,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       sample.t = t;
       sample.adjuster_mm = value * 1e3;
       sample.measured = measured;
+      sample.measure_problem = measure_problem;
       sample.blow_mm = blow_mm;
       sample.hammer_string_gap_mm = sim.hammer_string_gap(sim.q()) * 1e3;
       sample.whippen_angle_deg = whippen >= 0 ? model.bodies[whippen].trace_sign *

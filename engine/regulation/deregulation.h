@@ -25,9 +25,10 @@ struct DeregulationOptions {
 };
 
 struct DeregulationSample {
-  double t = 0.0;            ///< s
-  double adjuster_mm = 0.0;  ///< adjuster position at t
-  double measured = 0.0;     ///< the setting measured (its unit) on the action at that position
+  double t = 0.0;               ///< s
+  double adjuster_mm = 0.0;     ///< adjuster position at t
+  double measured = 0.0;        ///< the setting measured (its unit) on the action at that position
+  std::string measure_problem;  ///< why it could not be measured there (measured NaN), or empty
   /// hammer–string distance at rest (mm) at that position: the blow, whatever the setting (on
   /// the upright the key pilot is the lost-motion capstan, which shrinks the blow once the jack
   /// lifts the butt)

@@ -143,7 +143,9 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   if (!escaped && !jack_carried)
     throw HammerCarriedElsewhere(
         "in a slow key press the jack never lifts the hammer (it is carried by another part, "
-        "e.g. the repetition lever when the drop screw is too high)");
+        "e.g. the repetition lever all the way up: its drop screw stops it only after the "
+        "let-off button has tripped the jack, so the drop screw is too high or the let-off "
+        "button too low)");
   if (!escaped)
     throw JackNeverEscapes(
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "

@@ -15,6 +15,31 @@ std::string part_name(const ActionModel& model, int body) {
   return body < 0 ? std::string("frame") : model.bodies[body].name;
 }
 
+/// Beyond this turn from rest (rad) a part has left the travel of any working action (the
+/// largest, the hammer's, is about 25°).
+constexpr double kBeyondTravel = 35.0 * M_PI / 180.0;
+
+/// A clue to a failed or diverged run: the part farthest beyond a working action's travel at q
+/// (the state before the step that failed), as "; just before, the jack stood 55° from rest …",
+/// or nothing when every part was within it (a plain numerical failure).
+std::string beyond_travel_note(const ActionModel& model, const DofVector& rest,
+                               const DofVector& q) {
+  int farthest = -1;
+  double turn = kBeyondTravel;
+  for (int i = 0; i < q.size(); ++i) {
+    const double t = std::abs(q[i] - rest[i]);
+    if (std::isfinite(t) && t > turn) {
+      turn = t;
+      farthest = i;
+    }
+  }
+  if (farthest < 0) return "";
+  return "; just before, the " + part_name(model, farthest) + " stood " +
+         format_number(turn * 180.0 / M_PI) +
+         "° from rest, beyond the travel of a working action (the parts have left the geometry "
+         "the model describes: look for a setting far off)";
+}
+
 }  // namespace
 
 Simulator::Simulator(std::shared_ptr<const ActionModel> model,
@@ -99,7 +124,8 @@ bool Simulator::step(double t_max) {
   q0_ = q1_;
   v0_ = v1_;
   if (integrator_->step(t_max) != StepStatus::Ok) {
-    stop("the integrator failed: " + integrator_->failure_reason());
+    stop("the integrator failed: " + integrator_->failure_reason() +
+         beyond_travel_note(*model_, rest_.q, q0_));
     return false;
   }
   t1_ = integrator_->time();
@@ -108,7 +134,8 @@ bool Simulator::step(double t_max) {
   rhs_evaluations_ = rhs_done_before_ + integrator_->stats().rhs_evaluations;
   for (int i = 0; i < q1_.size(); ++i) {
     if (!std::isfinite(q1_[i]) || !std::isfinite(v1_[i])) {
-      stop("the simulation diverged (non-finite state)");
+      stop("the simulation diverged (non-finite state)" +
+           beyond_travel_note(*model_, rest_.q, q0_));
       return false;
     }
     // no part of an action turns half a turn from rest (the largest, the hammer, about 25°; the
@@ -117,7 +144,10 @@ bool Simulator::step(double t_max) {
     if (std::abs(q1_[i] - rest_.q[i]) > kMaxTurnFromRest) {
       stop("the simulation diverged: the " + part_name(*model_, i) + " turned " +
            format_number(std::abs(q1_[i] - rest_.q[i]) * 180.0 / M_PI) +
-           "° from rest (more than half a turn; a shorter step may help)");
+           "° from rest (more than half a turn" +
+           (beyond_travel_note(*model_, rest_.q, q0_).empty()
+                ? std::string("; a shorter step may help)")
+                : ")" + beyond_travel_note(*model_, rest_.q, q0_)));
       return false;
     }
   }
