@@ -269,6 +269,18 @@ void ActionView::paint_frame(QPainter& painter) {
     painter.setBrush(fill);
     painter.drawPolygon(polygon);
   }
+  // straps (the upright's bridle): a cord between its two points, solid while it pulls
+  std::vector<QPointF> strap_middles;
+  for (std::size_t k = 0; k < model.straps.size(); ++k) {
+    const Strap& strap = model.straps[k];
+    const QPointF a = to_screen(body_point(strap.body_a, strap.point_a));
+    const QPointF b = to_screen(body_point(strap.body_b, strap.point_b));
+    const bool pulling = k < reading_.strap_tension.size() && reading_.strap_tension[k] > 1e-3;
+    painter.setPen(QPen(QColor(120, 40, 30), pulling ? 2.5 : 1.5,
+                        pulling ? Qt::SolidLine : Qt::DashLine, Qt::RoundCap));
+    painter.drawLine(a, b);
+    strap_middles.push_back(0.5 * (a + b));
+  }
   // the backcheck: its head behind the check face, on a wire down to the body that carries it
   const int check = model.landmarks.check_contact;
   std::optional<QPointF> backcheck_label_at;
@@ -332,7 +344,8 @@ void ActionView::paint_frame(QPainter& painter) {
     QString text;
     QColor colour;
     bool small;
-    bool keep_clear = false;  // of the drawing (LabelPlacer::place_clear)
+    bool keep_clear = false;         // of the drawing (LabelPlacer::place_clear)
+    std::optional<QPointF> feature;  // a small part the label names: joined by a leader line
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -416,6 +429,33 @@ void ActionView::paint_frame(QPainter& painter) {
   if (backcheck_label_at)
     fixture_labels.push_back(
         {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true, true});
+  // what each regulation adjuster turns, named as in its description ("capstan (key pilot)",
+  // "jack regulating screw"), where it acts, in the close-ups (the whole action has no room for
+  // them); those drawn as fixtures or as the backcheck are named already
+  const bool close_up = focus_ != ViewFocus::whole || scale_ >= 2.0 * kWholeActionScale;
+  for (const Adjuster& adjuster : close_up ? model.adjusters : std::vector<Adjuster>{}) {
+    const QString name =
+        QString::fromStdString(adjuster.description.substr(0, adjuster.description.find(':')));
+    bool named = name.startsWith(tr("backcheck"));
+    for (const Fixture& f : model.fixtures) named = named || name == QString::fromStdString(f.name);
+    if (named || name.isEmpty() || adjuster.effects.empty()) continue;
+    const AdjusterEffect& effect = adjuster.effects.front();
+    std::optional<QPointF> at;
+    if (effect.target == AdjusterEffect::Target::ContactA) {
+      const Contact& c = model.contacts[effect.index];
+      at = to_screen(body_point(c.body_a, c.center_a));
+    } else if (effect.target == AdjusterEffect::Target::ContactB) {
+      const Contact& c = model.contacts[effect.index];
+      const Vec2 feature = c.shape == ContactShape::CircleSegment
+                               ? Vec2(0.5 * (c.segment_start + c.segment_end))
+                               : c.center_b;
+      at = to_screen(body_point(c.body_b, feature));
+    } else if (effect.index >= 0 && effect.index < static_cast<int>(strap_middles.size())) {
+      at = strap_middles[effect.index];
+    }
+    if (at)
+      fixture_labels.push_back({*at + QPointF(6, -6), name, QColor(70, 70, 70), true, true, *at});
+  }
   // the part the jack lifts, where escapement happens: the grand's knuckle (a circle on the
   // hammer), the upright's butt (the face on the hammer)
   const int escapement = model.landmarks.escapement_contact;
@@ -437,12 +477,26 @@ void ActionView::paint_frame(QPainter& painter) {
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
   QFont small = label_font;
   small.setBold(false);
+  drawn_labels_.clear();
   for (const Label& l : labels) {
     painter.setFont(l.small ? small : label_font);
     const QFontMetricsF metrics(painter.font());
     const auto at = l.keep_clear ? placer.place_clear(l.anchor, l.text, metrics)
                                  : placer.place(l.anchor, l.text, metrics);
-    if (at) draw_label(painter, *at, l.text, l.colour);
+    if (!at) continue;
+    if (l.feature) {  // a thin line from the part to the nearest point of its label
+      const QRectF box(at->x(), at->y() - metrics.ascent(), metrics.horizontalAdvance(l.text),
+                       metrics.height());
+      const QPointF end(std::clamp(l.feature->x(), box.left(), box.right()),
+                        std::clamp(l.feature->y(), box.top(), box.bottom()));
+      const QPointF d = end - *l.feature;
+      if (std::hypot(d.x(), d.y()) > 10.0) {
+        painter.setPen(QPen(QColor(90, 90, 90, 200), 1.0));
+        painter.drawLine(*l.feature, end);
+      }
+    }
+    draw_label(painter, *at, l.text, l.colour);
+    drawn_labels_.push_back(l.text);
   }
 }
 

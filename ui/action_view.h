@@ -9,6 +9,7 @@
 #pragma once
 
 #include <QPointF>
+#include <QStringList>
 #include <QTransform>
 #include <QWidget>
 #include <memory>
@@ -53,6 +54,8 @@ class ActionView : public QWidget {
   std::optional<QPointF> key_front_on_screen() const;
   /// Active contacts in the frame shown (those drawn with a force arrow).
   int active_contact_count() const { return active_contacts_; }
+  /// The labels the latest paint drew (parts, forces, fixtures, adjusters), for tests.
+  const QStringList& drawn_labels() const { return drawn_labels_; }
   const Frame* frame() const { return frame_ ? &*frame_ : nullptr; }
   QSize sizeHint() const override { return {640, 420}; }
 
@@ -94,6 +97,7 @@ class ActionView : public QWidget {
   double scale_ = 1000.0;  // px per m
   QPointF offset_;         // widget position of the model origin
   int active_contacts_ = 0;
+  QStringList drawn_labels_;
   // panning and key play
   QPointF drag_start_;
   QPointF offset_at_drag_;

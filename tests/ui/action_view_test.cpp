@@ -147,6 +147,21 @@ void ActionViewTest::close_ups_frame_the_escapement_and_the_checking() {
     QVERIFY2(shown(*view, letoff.segment_start) && shown(*view, letoff.segment_end), action);
     QVERIFY2(!shown(*view, marks.key_front), action);  // a close-up, not the whole key
 
+    // the close-up names what each regulation adjuster turns (the whole action has no room)
+    view->grab();  // paints
+    const QStringList adjusters =
+        std::string(action) == "grand"
+            ? QStringList{"capstan (key pilot)", "jack regulating screw",
+                          "repetition lever height screw", "let-off button", "drop screw"}
+            : QStringList{"capstan", "bridle strap", "let-off button"};
+    for (const QString& name : adjusters)
+      QVERIFY2(
+          view->drawn_labels().contains(name),
+          qPrintable(QString(action) + ": " + name + " not in " + view->drawn_labels().join(", ")));
+    view->set_focus(pat::ui::ViewFocus::whole);
+    view->grab();
+    QVERIFY2(!view->drawn_labels().contains(adjusters.front()), action);
+
     view->set_focus(pat::ui::ViewFocus::checking);
     QVERIFY2(view->model_to_widget().m11() > 1.5 * whole, action);
     QVERIFY2(shown(*view, check.center_a), action);
