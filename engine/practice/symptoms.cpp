@@ -118,10 +118,10 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
   } else if (id == "slow_press.held_distance_mm") {
     // the consequence a technician names only where the hammer is near enough to touch
     if (more)
+      // (a spongy feel, in the domain notes, goes with a drop screw too low or too much
+      // aftertouch: not said here, where a let-off or backcheck fault may be the cause)
       out.add("falls_far",
-              "With the key held down the hammer falls farther back from the "
-              "string" +
-                  v + ": a spongy feel.",
+              "With the key held down the hammer falls farther back from the string" + v + ".",
               seen);
     else if (*seen.value < 0.5)
       out.add("blocking",

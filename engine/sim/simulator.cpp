@@ -221,11 +221,18 @@ void Simulator::detect_events() {
   };
 
   if (marks.letoff_contact >= 0 && current[marks.letoff_contact] > 0.0) last_letoff_active_ = t1_;
-  // escapement: the jack leaves the knuckle (butt) within 2 ms of touching the let-off button
-  if (marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
+  // reset: the jack under the knuckle (butt) with its toe off the button for 2 ms, the window in
+  // which an opening counts as escapement (its bounce as it springs back is none)
+  if (marks.escapement_contact >= 0 && current[marks.escapement_contact] > 0.0 &&
+      (last_letoff_active_ < 0.0 || t1_ - last_letoff_active_ >= 2e-3))
+    jack_reset_ = true;
+  // escapement: the jack leaves the knuckle (butt) within 2 ms of touching the let-off button,
+  // once per stroke
+  if (jack_reset_ && marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
       current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
       t1_ - last_letoff_active_ < 2e-3) {
     report({"escapement", t1_, 0.0, gap_now()});
+    jack_reset_ = false;
   }
   if (became_active(marks.string_contact)) {
     // strike-point speed toward the string just before contact

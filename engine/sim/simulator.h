@@ -134,6 +134,10 @@ class Simulator {
   bool marks_check_closed() const;
   double last_key_bottom_ = -1.0;
   double last_letoff_active_ = -1.0;
+  // the jack has stood under the knuckle (butt) with its toe off the let-off button since the
+  // last escapement: one escapement per stroke, not one each time the checked hammer's knuckle
+  // touches and leaves the side of the tripped jack
+  bool jack_reset_ = true;
 };
 
 }  // namespace pat

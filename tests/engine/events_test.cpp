@@ -1,6 +1,6 @@
 // Simulation events (sim/simulator.h): each is reported once, in time order, among the step's new
 // events; the check is a catch (the backcheck takes a fifth of the returning hammer's speed), not
-// a brush; a catch still being confirmed when the run ends is reported.
+// a brush; a catch still being confirmed when the run ends is reported; each stroke escapes once.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -76,6 +76,25 @@ TEST(Events, ACatchStillBeingConfirmedWhenTheRunEndsIsReported) {
                                       [](const SimEvent& e) { return e.type == "check"; });
   ASSERT_NE(cut_check, cut.events.end());
   EXPECT_EQ(cut_check->t, check->t);
+}
+
+// One escapement per stroke: a blow held down, soft to forte, escapes once (the checked hammer's
+// knuckle touching and leaving the side of the tripped jack used to count again, two or three
+// times a blow, and the jack's bounce as it springs back under the butt once more); a double
+// blow escapes twice, a repeated key once a cycle.
+TEST(Events, EachStrokeEscapesOnce) {
+  auto count = [](const SimulationResult& r, const std::string& type) {
+    return std::count_if(r.events.begin(), r.events.end(),
+                         [&](const SimEvent& e) { return e.type == type; });
+  };
+  for (const char* action : {"grand", "upright"}) {
+    const ActionModel model = test::shipped(action);
+    for (const char* blow : {"force:pulse:5:60", "force:pulse:20:60", "force:pulse:40:60"})
+      EXPECT_EQ(count(test::run(model, blow, 0.3), "escapement"), 1) << action << " " << blow;
+    EXPECT_EQ(count(test::run(model, "force:double:20:40:60", 0.4), "escapement"), 2) << action;
+  }
+  // 8 Hz over one second, full stroke: eight strokes (the grand strikes twice in some of them)
+  EXPECT_EQ(count(test::run(test::shipped("grand"), "motion:sine:8:full", 1.0), "escapement"), 8);
 }
 
 }  // namespace
