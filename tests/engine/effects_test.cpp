@@ -4,11 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/error.h"
 #include "dynamics/action_dynamics.h"
 #include "dynamics/force_laws.h"
 #include "model/model_edits.h"
+#include "regulation/measurements.h"
 #include "test_support.h"
 
 namespace pat {
@@ -99,6 +101,22 @@ TEST(Effects, BackcheckWireHasTheRequestedLinearStiffness) {
   const double measured = free_vibration_hz(soft, wire, rad(0.5), 12.0 / expected);
   // ζ = 0.05 lowers it by 0.125 %; gravity on the 3 g head about a 30 mm wire adds < 0.1 %
   EXPECT_NEAR(measured, expected * std::sqrt(1.0 - 0.05 * 0.05), 0.005 * expected);
+}
+
+// Toward its rigid limit: the stiffest wire allowed (20 N/mm, seven times a real brass wire's
+// 2.8) reads a checking distance near the rigid backcheck's, and nearer than a real wire's
+// (measured: rigid 16.00, 20 N/mm 15.84, 2 N/mm 17.02 mm). A tenth of the compliance leaves
+// less than a quarter of the deviation, and under 0.25 mm.
+TEST(Effects, AStifferBackcheckWireChecksNearerTheRigidBackcheck) {
+  const ActionModel grand = test::shipped("grand");
+  const double rigid = measure_setting(grand, "checking");
+  const double stiff =
+      measure_setting(with_effect(grand, {"backcheck_compliance", 20.0}), "checking");
+  const double soft =
+      measure_setting(with_effect(grand, {"backcheck_compliance", 2.0}), "checking");
+  std::printf("checking: rigid %.3f, 20 N/mm %.3f, 2 N/mm %.3f mm\n", rigid, stiff, soft);
+  EXPECT_LT(std::abs(stiff - rigid), 0.25);
+  EXPECT_LT(std::abs(stiff - rigid), 0.25 * std::abs(soft - rigid));
 }
 
 TEST(Effects, FactorsScaleTheirLawsExactly) {
