@@ -2,8 +2,10 @@
 // (regulation/measurements.h) on the action as given, with --set/--without/--effect applied,
 // against their targets; nothing is adjusted. A setting that cannot be read there is reported
 // with the reason, and the others are still read.
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 #include "action_setup.h"
 #include "commands.h"
@@ -21,6 +23,14 @@ int run_measure(const std::vector<std::string>& args) {
     throw InputError(model.source_file + ": the preset lists no regulation settings");
   const PlotOption plot(cl.output_path("--plot"));
   const std::vector<SettingReading> readings = read_settings(model);
+  // the seven settings' result, read as a technician does with a gauge on the front rail
+  double aftertouch_mm = NAN;
+  std::string aftertouch_problem;
+  try {
+    aftertouch_mm = measure_aftertouch(model);
+  } catch (const std::runtime_error& e) {
+    aftertouch_problem = e.what();
+  }
   bool all_within = true;
   for (const SettingReading& r : readings) all_within = all_within && r.within_tolerance();
 
@@ -37,13 +47,20 @@ int run_measure(const std::vector<std::string>& args) {
     }
     std::cout << nlohmann::json{{"action", model.kind},
                                 {"settings", settings},
-                                {"within_tolerance", all_within}}
+                                {"within_tolerance", all_within},
+                                {"aftertouch_mm", number_or_null(aftertouch_mm)},
+                                {"aftertouch_problem", text_or_null(aftertouch_problem)}}
                      .dump(1)
               << "\n";
     return 0;
   }
   std::cout << model.name << ": the regulation settings as a technician reads them\n";
   print_settings_table(std::cout, model, readings);
+  std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians "
+               "aim for about 1.1 mm): "
+            << (aftertouch_problem.empty() ? number_in(aftertouch_mm, "mm") + " mm"
+                                           : "cannot be read: " + aftertouch_problem)
+            << "\n";
   std::cout << (all_within ? "every setting within its tolerance\n"
                            : "not every setting is within its tolerance (regulate adjusts them)\n");
   return 0;

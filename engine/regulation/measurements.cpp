@@ -123,6 +123,14 @@ double measure_setting(const ActionModel& model, const std::string& name,
   throw InputError("setting '" + name + "' has no measurement procedure");
 }
 
+double measure_aftertouch(const ActionModel& model, const RestState* given_rest) {
+  const RestState rest = given_rest ? *given_rest : find_rest_state(model);
+  const SlowPressReading press = slow_press(model, rest, -1, true);
+  if (!std::isfinite(press.aftertouch))
+    throw std::runtime_error("in a slow key press the jack never lets the hammer off");
+  return press.aftertouch * 1e3;
+}
+
 std::vector<SettingReading> read_settings(const ActionModel& model,
                                           const ProgressCallback& progress, unsigned threads) {
   const RestState rest = find_rest_state(model);

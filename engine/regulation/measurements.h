@@ -41,6 +41,12 @@ struct SettingReading {
 double measure_setting(const ActionModel& model, const std::string& name,
                        const RestState* rest = nullptr);
 
+/// The aftertouch (mm): key-front travel left to the front-rail punching at let-off in a slow
+/// press. Not one of the seven settings but their result (key dip, blow and let-off; domain
+/// notes: about .045 in, 1.1 mm). Throws std::runtime_error with the reason when the slow press
+/// shows no escapement.
+double measure_aftertouch(const ActionModel& model, const RestState* rest = nullptr);
+
 /// Every setting of the model's regulation list, in the technician's order, from one rest state.
 /// A setting that cannot be read there gets measured = NaN and its `problem`; the others are
 /// still read. The settings are read in parallel on `threads` threads (0: one per core); each

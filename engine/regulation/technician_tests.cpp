@@ -80,8 +80,14 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
 
   SlowPressReading reading;
+  // the key-front travel left to the punching (the press's depth is its first touch) from a key
+  // angle (rad from rest)
+  auto aftertouch_after = [&](double key_angle) {
+    return key_front_travel(model, rest, depth) - key_front_travel(model, rest, key_angle);
+  };
   bool damper_lifted = damper_contact < 0;
   bool letoff_touched = false, jack_carried = false;
+  double key_at_let_off = 0.0;  // rad from rest, where the closest carried approach was
   // closest approach of the hammer to the string while the jack still touches the knuckle: the
   // point where the hammer stops rising and falls back (what the technician sees as let-off;
   // the contact itself opens a little later, once the knuckle has slid off the jack's corner)
@@ -105,7 +111,10 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
           " mm above rest, before let-off (the backcheck is too close)");
     if (escapement <= 0.0) {
       jack_carried = true;
-      closest_carried_gap = std::min(closest_carried_gap, gap);
+      if (gap < closest_carried_gap) {
+        closest_carried_gap = gap;
+        key_at_let_off = sim.q()[marks.key] - rest.q[marks.key];
+      }
     }
     if (!damper_lifted) {
       const double damper = gap_of(damper_contact);
@@ -128,6 +137,7 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     if (until_escapement && damper_lifted && letoff_touched && jack_carried &&
         gap > closest_carried_gap + kClearFall) {
       reading.let_off_gap = closest_carried_gap;
+      reading.aftertouch = aftertouch_after(key_at_let_off);
       return reading;
     }
   }
@@ -139,7 +149,10 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   // against the side of the tipped jack (as on a real grand with the key held down).
   const double held_gap = sim.hammer_string_gap(sim.q());
   const bool escaped = letoff_touched && jack_carried && held_gap > closest_carried_gap + kFallBack;
-  if (escaped) reading.let_off_gap = closest_carried_gap;
+  if (escaped) {
+    reading.let_off_gap = closest_carried_gap;
+    reading.aftertouch = aftertouch_after(key_at_let_off);
+  }
   if (!escaped && !jack_carried)
     throw HammerCarriedElsewhere(
         "in a slow key press the jack never lifts the hammer (it is carried by another part, "

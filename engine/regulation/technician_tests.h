@@ -4,6 +4,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 
@@ -56,6 +57,9 @@ struct SlowPressReading {
   double drop_gap = 0.0;              ///< m, hammer–string distance at the end, key held down
   double damper_lift_fraction = 0.0;  ///< hammer travel fraction when the damper contact starts
   bool checked_at_end = false;        ///< the backcheck holds the hammer at the end
+  /// m, key-front travel left to the front-rail punching at let-off (the technician's
+  /// aftertouch, gauged with the jack just tripping on its button); NaN without an escapement
+  double aftertouch = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Duration of the slow press: the key goes from rest to full dip along a half cosine in
