@@ -94,8 +94,8 @@ int run_deregulate(const std::vector<std::string>& args) {
     const std::string unit = setting >= 0 ? model.regulation[setting].unit : "";
     std::string last_problem;  // a reason is written once, where it first appears
     for (const DeregulationSample& s : result.samples) {
-      std::cout << "  t " << number_in(s.t, "", 2) << " s  adjuster "
-                << number_in(s.adjuster_mm, "mm") << " mm  " << options.setting << " "
+      std::cout << "  t " << number_in(s.t, "", 3) << " s  adjuster "
+                << number_in(s.adjuster_mm, "mm", 3) << " mm  " << options.setting << " "
                 << (std::isfinite(s.measured) ? number_in(s.measured, unit) + " " + unit
                                               : std::string("cannot be read"))
                 << "  blow "

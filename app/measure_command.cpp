@@ -55,7 +55,7 @@ int run_measure(const std::vector<std::string>& args) {
     return 0;
   }
   std::cout << model.name << ": the regulation settings as a technician reads them\n";
-  print_settings_table(std::cout, model, readings);
+  print_settings_table(std::cout, model, readings, "adjusters turned from the preset's positions");
   std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians "
                "aim for about 1.1 mm): "
             << (aftertouch_problem.empty() ? number_in(aftertouch_mm, "mm") + " mm"

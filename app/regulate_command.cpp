@@ -110,7 +110,8 @@ int run_regulate(const std::vector<std::string>& args) {
     if (result.converged && !out_path.empty()) out["written"] = out_path;
     std::cout << out.dump(1) << "\n";
   } else {
-    print_settings_table(std::cout, result.model, result.settings);
+    print_settings_table(std::cout, result.model, result.settings,
+                         "adjusters off the preset's positions after the regulation");
     std::cout << (result.converged ? "regulated" : "not regulated") << " in " << result.passes
               << (result.passes == 1 ? " pass, " : " passes, ") << format_number(result.wall_time_s)
               << " s\n";

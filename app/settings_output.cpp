@@ -1,10 +1,9 @@
 #include "settings_output.h"
 
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <utility>
 
+#include "core/format.h"
 #include "json_output.h"
 
 namespace pat::app {
@@ -33,11 +32,7 @@ nlohmann::json setting_json(const SettingReading& r) {
 }
 
 std::string number_in(double value, const std::string& unit, int decimals) {
-  if (decimals < 0) decimals = unit == "mm" ? 2 : 3;
-  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
-  std::ostringstream out;
-  out << std::fixed << std::setprecision(decimals) << value;
-  return out.str();
+  return format_fixed(value, decimals >= 0 ? decimals : unit == "mm" ? 2 : 3);
 }
 
 namespace {
@@ -50,18 +45,20 @@ std::string padded(const std::string& text, std::size_t width) {
   return text + std::string(characters < width ? width - characters : 1, ' ');
 }
 
-/// A signed adjuster offset: which way it was turned ("+0.30 mm", "-0.12 mm", "0.00 mm").
+/// A signed adjuster offset to the micrometre, the regulation's resolution: which way it was
+/// turned ("+0.300 mm", "-0.004 mm", "0.000 mm").
 std::string signed_mm(double value_mm) {
-  const std::string number = number_in(value_mm, "mm");
-  return (number[0] == '-' || number == "0.00" ? "" : "+") + number + " mm";
+  const std::string number = number_in(value_mm, "mm", 3);
+  return (number[0] == '-' || number == "0.000" ? "" : "+") + number + " mm";
 }
 
 }  // namespace
 
 void print_settings_table(std::ostream& out, const ActionModel& model,
-                          const std::vector<SettingReading>& readings) {
+                          const std::vector<SettingReading>& readings,
+                          const std::string& turned_heading) {
   out << padded("setting", 16) << padded("measured", 16) << padded("target", 24)
-      << padded("adjuster", 11) << "\n";
+      << padded("adjuster", 12) << "\n";
   std::vector<std::string> turned;  // what + means, for the adjusters that are not at 0
   for (const SettingReading& s : readings) {
     out << padded(s.name, 16)
@@ -69,20 +66,19 @@ void print_settings_table(std::ostream& out, const ActionModel& model,
         << padded(
                number_in(s.target, s.unit) + " ± " + number_in(s.tolerance, s.unit) + " " + s.unit,
                24)
-        << padded(signed_mm(s.adjuster_mm), 11);
+        << padded(signed_mm(s.adjuster_mm), 12);
     if (!s.problem.empty())
       out << "cannot be read: " << s.problem;
     else if (!s.within_tolerance())
       out << "OUT OF TOLERANCE";
     out << "\n";
     const int a = model.adjuster_index(s.name);
-    if (a >= 0 && number_in(s.adjuster_mm, "mm") != "0.00" &&
-        !model.adjusters[a].description.empty())
+    if (a >= 0 && signed_mm(s.adjuster_mm) != "0.000 mm" && !model.adjusters[a].description.empty())
       turned.push_back(s.name + " " + signed_mm(s.adjuster_mm) + ": " +
                        model.adjusters[a].description);
   }
   if (!turned.empty()) {
-    out << "adjusters turned from their regulated positions (+ as described):\n";
+    out << turned_heading << " (+ as described):\n";
     for (const std::string& line : turned) out << "  " << line << "\n";
   }
 }

@@ -23,9 +23,11 @@ nlohmann::json setting_json(const SettingReading& reading);
 /// with `decimals` when given (a value that rounds to zero is written without a minus sign).
 std::string number_in(double value, const std::string& unit, int decimals = -1);
 
-/// The settings as a table (setting, measured, target ± tolerance, adjuster offset, and what is
-/// wrong), then what + means for each adjuster that is turned (its description in `model`).
+/// The settings as a table (setting, measured, target ± tolerance, adjuster offset from the
+/// preset's position to the micrometre, and what is wrong), then, under `turned_heading`, what +
+/// means for each adjuster that is turned (its description in `model`).
 void print_settings_table(std::ostream& out, const ActionModel& model,
-                          const std::vector<SettingReading>& readings);
+                          const std::vector<SettingReading>& readings,
+                          const std::string& turned_heading);
 
 }  // namespace pat::app

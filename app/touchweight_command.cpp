@@ -7,9 +7,9 @@
 #include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "model/model_variations.h"
 #include "plot_output.h"
-#include "settings_output.h"
 
 namespace pat::app {
 
@@ -54,12 +54,12 @@ int run_touchweight(const std::vector<std::string>& args) {
     std::cout << out.dump(1) << "\n";
   } else {
     // grams to 0.1 g, as a technician's weights read
-    auto grams = [](double g) { return number_in(g, "g", 1) + " g"; };
+    auto grams = [](double g) { return format_fixed(g, 1) + " g"; };
     std::cout << model.name << ": static touchweight\n  downweight " << grams(result.downweight_g)
               << ", upweight " << grams(result.upweight_g) << ", balance weight "
               << grams(result.balance_weight_g) << ", friction weight "
               << grams(result.friction_weight_g) << "\n  key ratio "
-              << number_in(result.key_ratio, "", 3) << ", strike weight "
+              << format_fixed(result.key_ratio, 3) << ", strike weight "
               << grams(result.strike_weight_g) << ", front weight " << grams(result.front_weight_g)
               << "\n";
   }

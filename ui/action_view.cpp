@@ -226,6 +226,7 @@ void ActionView::paintEvent(QPaintEvent*) {
 
 void ActionView::paint_frame(QPainter& painter) {
   const ActionModel& model = *model_;
+  drawn_labels_.clear();
   QFont label_font = font();
   // labels grow in a close-up (about 1.5 px/mm when the whole action fits a 770 px view), up to
   // half as large again, so that they stay readable from the back of a classroom
@@ -434,10 +435,13 @@ void ActionView::paint_frame(QPainter& painter) {
   // them); those drawn as fixtures or as the backcheck are named already
   const bool close_up = focus_ != ViewFocus::whole || scale_ >= 2.0 * kWholeActionScale;
   for (const Adjuster& adjuster : close_up ? model.adjusters : std::vector<Adjuster>{}) {
+    bool named = false;  // a fixture it moves (a button, a screw) or the backcheck
+    for (const Fixture& f : model.fixtures) named = named || f.adjuster == adjuster.name;
+    for (const AdjusterEffect& effect : adjuster.effects)
+      named = named || (effect.target == AdjusterEffect::Target::ContactB &&
+                        effect.index == model.landmarks.check_contact);
     const QString name =
         QString::fromStdString(adjuster.description.substr(0, adjuster.description.find(':')));
-    bool named = name.startsWith(tr("backcheck"));
-    for (const Fixture& f : model.fixtures) named = named || name == QString::fromStdString(f.name);
     if (named || name.isEmpty() || adjuster.effects.empty()) continue;
     const AdjusterEffect& effect = adjuster.effects.front();
     std::optional<QPointF> at;
@@ -477,7 +481,6 @@ void ActionView::paint_frame(QPainter& painter) {
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
   QFont small = label_font;
   small.setBold(false);
-  drawn_labels_.clear();
   for (const Label& l : labels) {
     painter.setFont(l.small ? small : label_font);
     const QFontMetricsF metrics(painter.font());

@@ -1,6 +1,7 @@
 #include "label_placer.h"
 
 #include <iterator>
+#include <vector>
 
 namespace pat::ui {
 
@@ -25,17 +26,19 @@ int LabelPlacer::covered_points(const QRectF& box) const {
 std::optional<QPointF> LabelPlacer::place(const QPointF& anchor, const QString& text,
                                           const QFontMetricsF& metrics, bool keep_clear) {
   const double w = metrics.horizontalAdvance(text), h = metrics.height();
-  // below/above first, then to the sides; a label kept clear may also go wholly to the left
-  const QPointF offsets[] = {{0, 0},        {0, h},       {0, -h},       {0, 2 * h},
-                             {0, -2 * h},   {w * 0.6, 0}, {-w * 0.6, 0}, {w * 0.6, h},
-                             {-w * 0.6, h}, {0, 3 * h},   {0, -3 * h},   {-w - 6, 0},
-                             {-w - 6, -h},  {-w - 6, h},  {w * 0.6, -h}, {-w * 0.6, -h}};
-  const int tried = keep_clear ? static_cast<int>(std::size(offsets)) : 11;
+  // below/above first, then to the sides
+  const QPointF near[] = {{0, 0},        {0, h},       {0, -h},       {0, 2 * h},
+                          {0, -2 * h},   {w * 0.6, 0}, {-w * 0.6, 0}, {w * 0.6, h},
+                          {-w * 0.6, h}, {0, 3 * h},   {0, -3 * h}};
+  // a label kept clear of the drawing may also go wholly to the left, or diagonally up
+  const QPointF wider[] = {{-w - 6, 0}, {-w - 6, -h}, {-w - 6, h}, {w * 0.6, -h}, {-w * 0.6, -h}};
+  std::vector<QPointF> offsets(std::begin(near), std::end(near));
+  if (keep_clear) offsets.insert(offsets.end(), std::begin(wider), std::end(wider));
   std::optional<QPointF> best;
   QRectF best_box;
   int best_covered = 0;
-  for (int k = 0; k < tried; ++k) {
-    const QPointF baseline = anchor + offsets[k];
+  for (const QPointF& offset : offsets) {
+    const QPointF baseline = anchor + offset;
     const QRectF box(baseline.x() - 2, baseline.y() - metrics.ascent() - 1, w + 4, h + 2);
     if (!bounds_.contains(box)) continue;
     bool free = true;

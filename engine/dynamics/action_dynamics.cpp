@@ -184,6 +184,16 @@ Vec2 ActionDynamics::transform(int body, const Vec2& rest_point) const {
   return place(body, rest_point - bodies_[body].pivot);
 }
 
+ActionDynamics::StrapSpan ActionDynamics::strap_span(std::size_t s) const {
+  const Strap& strap = model_.straps[s];
+  StrapSpan span;
+  span.a = transform(strap.body_a, strap.point_a);
+  span.b = transform(strap.body_b, strap.point_b);
+  span.length = (span.b - span.a).norm();
+  span.stretch = span.length - strap_rest_length_[s];
+  return span;
+}
+
 ContactDistance ActionDynamics::contact_distance(const ContactConstants& c, Vec2& center_a) const {
   center_a = place(c.body_a, c.center_a);
   if (!c.segment)
@@ -368,18 +378,15 @@ void ActionDynamics::assemble(double finger, const DofVector& q, const DofVector
   // tension-only straps
   for (std::size_t s = 0; s < model_.straps.size(); ++s) {
     const Strap& strap = model_.straps[s];
-    const Vec2 pa = transform(strap.body_a, strap.point_a);
-    const Vec2 pb = transform(strap.body_b, strap.point_b);
-    const Vec2 d = pb - pa;
-    const double length = d.norm();
+    const StrapSpan span = strap_span(s);
     double tension = 0.0;
-    if (length > strap_rest_length_[s] && length > 1e-12) {
-      const Vec2 dir = d / length;
-      const double rate = dir.dot(velocity_at(strap.body_b, pb) - velocity_at(strap.body_a, pa));
-      tension =
-          std::max(strap.stiffness * (length - strap_rest_length_[s]) + strap.damping * rate, 0.0);
-      add_point_force(strap.body_a, pa, tension * dir, forces_);
-      add_point_force(strap.body_b, pb, -tension * dir, forces_);
+    if (span.stretch > 0.0 && span.length > 1e-12) {
+      const Vec2 dir = (span.b - span.a) / span.length;
+      const double rate =
+          dir.dot(velocity_at(strap.body_b, span.b) - velocity_at(strap.body_a, span.a));
+      tension = std::max(strap.stiffness * span.stretch + strap.damping * rate, 0.0);
+      add_point_force(strap.body_a, span.a, tension * dir, forces_);
+      add_point_force(strap.body_b, span.b, -tension * dir, forces_);
     }
     if (tensions) (*tensions)[s] = tension;
   }
@@ -536,11 +543,8 @@ double ActionDynamics::mechanical_energy(const DofVector& q, const DofVector& v)
         0.5 * spring.stiffness * q[spring.body] * q[spring.body] - spring.preload * q[spring.body];
   // a taut strap stores ½ k (L − L0)² (its damping only dissipates)
   for (std::size_t s = 0; s < model_.straps.size(); ++s) {
-    const Strap& strap = model_.straps[s];
-    const double stretch =
-        (transform(strap.body_b, strap.point_b) - transform(strap.body_a, strap.point_a)).norm() -
-        strap_rest_length_[s];
-    if (stretch > 0.0) energy += 0.5 * strap.stiffness * stretch * stretch;
+    const double stretch = strap_span(s).stretch;
+    if (stretch > 0.0) energy += 0.5 * model_.straps[s].stiffness * stretch * stretch;
   }
   return energy;
 }

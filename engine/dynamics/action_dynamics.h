@@ -170,6 +170,13 @@ class ActionDynamics : public OdeSystem {
     update_rates(v);
   }
   Vec2 transform(int body, const Vec2& rest_point) const;
+  /// Strap s at the current positions: its end points (world, m), length and stretch L − L0 (m,
+  /// > 0 taut).
+  struct StrapSpan {
+    Vec2 a, b;
+    double length = 0.0, stretch = 0.0;
+  };
+  StrapSpan strap_span(std::size_t s) const;
   /// World position of a point given as an offset from the body's pivot (frame: world point).
   Vec2 place(int body, const Vec2& offset) const {
     if (body < 0) return offset;

@@ -14,6 +14,7 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "inputs/key_input.h"
 #include "measured/alignment.h"
 #include "measured/input_estimate.h"
@@ -449,13 +450,6 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   }
   w.fit.training_rms_deg = std::sqrt(training_cost / static_cast<double>(training_samples));
 }
-std::string fixed(double x, int digits = 2) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(digits);
-  out << x;
-  return out.str();
-}
 
 PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
   PreparedTrial p;
@@ -578,7 +572,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
       f.completed = std::isfinite(w.scan_best_rss);
       f.validated_rms_deg = std::numeric_limits<double>::infinity();
       f.training_rms_deg = std::sqrt(w.scan_best_rss / n);
-      f.note = "screened out: its best scan point (rms " + fixed(f.training_rms_deg) +
+      f.note = "screened out: its best scan point (rms " + format_fixed(f.training_rms_deg) +
                " deg) is worse than the " + std::to_string(kRefinedCandidates) +
                " candidates fitted and validated";
       f.delta_bic = std::numeric_limits<double>::quiet_NaN();
@@ -644,13 +638,13 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   std::vector<Line> lines;
   for (const TrialReport& r : d.trials) {
     for (const PhaseResidual& p : r.discrepancies.phases) {
-      std::string text = r.path + ": " + p.phase + ": residual rms " + fixed(p.rms_deg) +
+      std::string text = r.path + ": " + p.phase + ": residual rms " + format_fixed(p.rms_deg) +
                          " deg over " + std::to_string(p.samples) + " samples (noise " +
-                         fixed(r.noise_deg) + " deg)";
+                         format_fixed(r.noise_deg) + " deg)";
       if (p.rms_deg > 2.0 * r.noise_deg)
         text += std::string(", the measured hammer is on average ") +
                 (p.mean_deg > 0 ? "higher" : "lower") + " than the model by " +
-                fixed(std::abs(p.mean_deg)) + " deg";
+                format_fixed(std::abs(p.mean_deg)) + " deg";
       else
         text += ", within the noise";
       lines.push_back({p.rms_deg, text});

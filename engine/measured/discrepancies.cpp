@@ -5,6 +5,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/format.h"
 #include "core/types.h"
 
 namespace pat {
@@ -36,14 +37,6 @@ std::string label(const ModelTrace& m, double t) {
   }
   if (rate < -5.0) return "release";
   return last_check > last_impact && last_impact >= 0 ? "rebound_and_check" : "acceleration";
-}
-
-std::string fixed(double x, int digits = 2) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(digits);
-  out << x;
-  return out.str();
 }
 
 /// Hammer angular rate just before the peak at tp: slope over [tp − 2.5 ms, tp − 0.5 ms].
@@ -92,8 +85,9 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
                  std::string what) {
     FeatureDiscrepancy f{feature, unit, measured, modelled, measured - modelled, true, ""};
     std::ostringstream text;
-    text << what << ": measured " << fixed(measured) << " " << unit << ", model " << fixed(modelled)
-         << " " << unit << " (difference " << fixed(measured - modelled) << " " << unit << ")";
+    text << what << ": measured " << format_fixed(measured) << " " << unit << ", model "
+         << format_fixed(modelled) << " " << unit << " (difference "
+         << format_fixed(measured - modelled) << " " << unit << ")";
     f.text = text.str();
     out.features.push_back(f);
   };
@@ -111,8 +105,8 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
         approach_rate(model_at, model_impact), "hammer rate just before the first impact");
   } else if (impact) {
     out.features.push_back({"impact_time", "ms", impact->t * 1e3, 0.0, 0.0, true,
-                            "the measured hammer strikes the string at " + fixed(impact->t * 1e3) +
-                                " ms but the model never does"});
+                            "the measured hammer strikes the string at " +
+                                format_fixed(impact->t * 1e3) + " ms but the model never does"});
   } else if (!model.impact_t.empty()) {
     out.features.push_back({"impact_time", "ms", 0.0, (model.impact_t.front() + dt_shift) * 1e3,
                             0.0, false,
@@ -121,7 +115,7 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
   if (!model.escapement_t.empty()) {
     FeatureDiscrepancy f{
         "let_off_time", "ms", 0.0, (model.escapement_t.front() + dt_shift) * 1e3, 0.0, false, ""};
-    f.text = "model let-off (escapement) at " + fixed(f.model) +
+    f.text = "model let-off (escapement) at " + format_fixed(f.model) +
              " ms; a hammer trace does not show let-off directly";
     out.features.push_back(f);
   }
@@ -162,9 +156,10 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
       out.residual_oscillation_hz = best_f;
       out.residual_oscillation_deg = best;
       FeatureDiscrepancy f{"residual_oscillation", "Hz", best_f, 0.0, best_f, true, ""};
-      f.text = "strongest oscillation in the residual after the impact: " + fixed(best_f, 0) +
-               " Hz, amplitude " + fixed(best) + " deg" +
-               (best > 3.0 * noise_deg ? " (above the noise)" : " (within the noise)");
+      f.text =
+          "strongest oscillation in the residual after the impact: " + format_fixed(best_f, 0) +
+          " Hz, amplitude " + format_fixed(best) + " deg" +
+          (best > 3.0 * noise_deg ? " (above the noise)" : " (within the noise)");
       out.features.push_back(f);
     }
   }

@@ -114,7 +114,10 @@ std::vector<Observation> slow_press_test(const ActionModel& model, const RestSta
     out.push_back(missing(escape_id, escape_label, "mm", seen));
     out.push_back(number(fall_id, "hammer–string distance with the key held down (slow press)",
                          "mm", e.held_gap() * 1e3));
-    if (damper >= 0) out.push_back(missing(damper_id, damper_label, "fraction", seen));
+    if (damper >= 0)
+      out.push_back(std::isfinite(e.damper_lift_fraction())
+                        ? number(damper_id, damper_label, "fraction", e.damper_lift_fraction())
+                        : missing(damper_id, damper_label, "fraction", seen));
   } catch (const std::runtime_error& e) {
     const std::string seen = seen_in_slow_press(e.what());
     out.push_back(missing(escape_id, escape_label, "mm", seen));

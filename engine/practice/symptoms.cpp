@@ -1,7 +1,8 @@
 #include "practice/symptoms.h"
 
 #include <cmath>
-#include <sstream>
+
+#include "core/format.h"
 
 namespace pat {
 namespace {
@@ -10,19 +11,22 @@ bool starts_with(const std::string& s, const std::string& prefix) {
   return s.rfind(prefix, 0) == 0;
 }
 
-std::string fixed(double x, int digits) {
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(digits);
-  out << x;
-  return out.str();
+/// A hammer at rest within this distance of the string (mm) presses its felt on it or nearly:
+/// the note is muted (blocking). Let-off distances are 1.5–3 mm.
+constexpr double kBlockingDistanceMm = 1.0;
+
+/// The slow press showed no escapement (the jack never let the hammer go).
+bool jack_never_escaped(const std::vector<Observation>& seen) {
+  const Observation* escapement = find_observation(seen, "slow_press.escapement_distance_mm");
+  return escapement && !escapement->value &&
+         escapement->missing_reason.find("never escapes") != std::string::npos;
 }
 
 /// " (X mm; regulated action: Y mm)"
 std::string versus(const Observation& seen, double regulated, int digits = 2) {
   const std::string unit = seen.unit.empty() || seen.unit == "fraction" ? "" : " " + seen.unit;
-  return " (" + fixed(*seen.value, digits) + unit +
-         "; regulated action: " + fixed(regulated, digits) + unit + ")";
+  return " (" + format_fixed(*seen.value, digits) + unit +
+         "; regulated action: " + format_fixed(regulated, digits) + unit + ")";
 }
 
 class SymptomList {
@@ -123,7 +127,7 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
       out.add("falls_far",
               "With the key held down the hammer falls farther back from the string" + v + ".",
               seen);
-    else if (*seen.value < 0.5)
+    else if (*seen.value < kBlockingDistanceMm)
       out.add("blocking",
               "Blocking: with the key held down the hammer stays against the string" + v +
                   ", muting the note.",
@@ -144,8 +148,9 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
   } else if (id == "forte_blow.strikes") {
     if (more)
       out.add("double_strike",
-              "Double strike: one forte blow with the key held strikes " + fixed(*seen.value, 0) +
-                  " times (regulated action: " + fixed(reg, 0) + ").",
+              "Double strike: one forte blow with the key held strikes " +
+                  format_fixed(*seen.value, 0) +
+                  " times (regulated action: " + format_fixed(reg, 0) + ").",
               seen);
     else
       out.add("no_strike", "The forte blow strikes fewer times" + versus(seen, reg, 0) + ".", seen);
@@ -161,7 +166,7 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
                   ": the tail may brush the check on the way up.",
               seen);
   } else if (id == "forte_blow.end_distance_mm") {
-    if (*seen.value < 1.0)
+    if (*seen.value < kBlockingDistanceMm)
       out.add("blocking",
               "Blocking: after a forte blow the hammer stays against the string" + v + ".", seen);
     else if (more)
@@ -171,17 +176,17 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
       out.add("rests_close", "After a forte blow the hammer settles close to the string" + v + ".",
               seen);
   } else if (starts_with(id, "repetition.")) {
-    // one strike per key cycle is a repeating note: more than one is a double strike, fewer a
-    // failure to repeat; a change on the same side of one is named as what it is. Only where the
-    // regulated action itself repeats cleanly: the regulated grand strikes two or three times a
-    // cycle under a slow sine (README, limits), and "fewer extra strikes" than that would teach
-    // that extra strikes are normal. The counts stay in the observations.
-    if (std::abs(reg - 1.0) > 1e-9) return;
+    // one strike per key cycle is a repeating note: more than one (and more than the regulated
+    // action) is a double strike, fewer than one (where the regulated action strikes) a failure
+    // to repeat. A change that stays on the side of one the regulated action is on is no
+    // symptom where that is already more than one: the regulated grand strikes two or three
+    // times a cycle under a slow sine (README, limits), and "fewer extra strikes" than that
+    // would teach that extra strikes are normal. The counts stay in the observations.
     const std::string at = seen.label.substr(seen.label.find(" at ") + 1);
-    const std::string counts = fixed(*seen.value, 2) +
+    const std::string counts = format_fixed(*seen.value, 2) +
                                " strikes per key cycle (regulated "
                                "action: " +
-                               fixed(reg, 2) + ")";
+                               format_fixed(reg, 2) + ")";
     const double one = 1.0 + 1e-9;
     if (more && *seen.value > one)
       out.add("double_strike", "Double strikes in repeated notes " + at + ": " + counts + ".",
@@ -190,25 +195,36 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
       out.add("repeats_more", "Repeated notes " + at + " sound more often: " + counts + ".", seen);
     else if (*seen.value < 1.0 - 1e-9)
       out.add("failure_to_repeat", "Failure to repeat " + at + ": " + counts + ".", seen);
-    else
-      out.add("fewer_strikes", "Fewer extra strikes in repeated notes " + at + ": " + counts + ".",
-              seen);
   }
 }
 
 /// A quantity that could not be read on the hidden action but could on the regulated one.
-void describe_missing(const Observation& seen, SymptomList& out) {
+void describe_missing(const Observation& seen, const std::vector<Observation>& all_seen,
+                      SymptomList& out) {
   const std::string& id = seen.id;
   const std::string& why = seen.missing_reason;
   if (starts_with(id, "slow_press.escapement")) {
     // where the hammer then stays is its own observation (slow_press.held_distance_mm): close
     // to the string it is blocking, farther off the hammer is merely not let go
-    if (why.find("never escapes") != std::string::npos)
-      out.add("no_escapement",
-              "No let-off in a slow press: the jack never escapes, so the hammer is not let go "
-              "and does not drop back while the key is held down.",
-              seen);
-    else if (why.find("never lifts") != std::string::npos)
+    if (why.find("never escapes") != std::string::npos) {
+      // where the hammer stays instead: against the string it is blocking
+      const Observation* held = find_observation(all_seen, "slow_press.held_distance_mm");
+      const bool has_held = held && held->value;
+      const std::string where =
+          has_held ? " (" + format_fixed(*held->value, 2) + " mm from the string)" : "";
+      if (has_held && *held->value < kBlockingDistanceMm)
+        out.add("blocking",
+                "Blocking: in a slow press the jack never escapes and the hammer stays against "
+                "the string" +
+                    where + ", muting the note.",
+                seen);
+      else
+        out.add("no_escapement",
+                "No let-off in a slow press: the jack never escapes, so the hammer is not let go "
+                "and stays where it rose to while the key is held down" +
+                    where + ".",
+                seen);
+    } else if (why.find("never lifts") != std::string::npos)
       out.add("key_cheats",
               "The key goes down without lifting the hammer (the key \"cheats\"): "
               "no strike.",
@@ -269,6 +285,8 @@ std::vector<Symptom> describe_symptoms(const std::vector<Observation>& seen,
       continue;
     }
     if (!reg || !differs(o, *reg)) continue;
+    // a hammer held up by a jack that never escaped is described with the escapement
+    if (o.id == "slow_press.held_distance_mm" && jack_never_escaped(seen)) continue;
     if (o.value && reg->value) {
       if (o.id == "forte_blow.impact_speed_mps") {
         // relative threshold: compare_numbers would apply the absolute one (0)
@@ -281,10 +299,10 @@ std::vector<Symptom> describe_symptoms(const std::vector<Observation>& seen,
         compare_numbers(o, *reg->value, out);
       }
     } else if (!o.value) {
-      describe_missing(o, out);
+      describe_missing(o, seen, out);
     } else {
       out.add("reads_again",
-              o.label + " can be read on this action (" + fixed(*o.value, 2) + " " + o.unit +
+              o.label + " can be read on this action (" + format_fixed(*o.value, 2) + " " + o.unit +
                   ") but not on the regulated one: " + reg->missing_reason + ".",
               o);
     }

@@ -163,7 +163,9 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     throw JackNeverEscapes(
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "
         "button before the key bottoms)",
-        held_gap);
+        held_gap,
+        damper_contact >= 0 && damper_lifted ? reading.damper_lift_fraction
+                                             : std::numeric_limits<double>::quiet_NaN());
   if (!damper_lifted) throw std::runtime_error("in a slow key press the damper never lifts");
   reading.drop_gap = held_gap;
   reading.checked_at_end = gap_of(marks.check_contact) <= 0.0;

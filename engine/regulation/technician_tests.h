@@ -39,16 +39,21 @@ class BackcheckStopsTheRisingHammer : public std::runtime_error {
 };
 
 /// A slow press in which the jack never lets the hammer go: with the key held down the hammer
-/// still rests within 0.2 mm of its closest approach to the string. `held_gap()`: the
-/// hammer–string distance with the key held down (m), what a technician sees of it.
+/// still rests within 0.2 mm of its closest approach to the string. What a technician still
+/// sees: `held_gap()`, the hammer–string distance with the key held down (m), and
+/// `damper_lift_fraction()`, as in SlowPressReading (NaN when the damper did not lift or was not
+/// watched).
 class JackNeverEscapes : public std::runtime_error {
  public:
-  JackNeverEscapes(const std::string& what, double held_gap)
-      : std::runtime_error(what), held_gap_(held_gap) {}
+  JackNeverEscapes(const std::string& what, double held_gap, double damper_lift_fraction)
+      : std::runtime_error(what),
+        held_gap_(held_gap),
+        damper_lift_fraction_(damper_lift_fraction) {}
   double held_gap() const { return held_gap_; }
+  double damper_lift_fraction() const { return damper_lift_fraction_; }
 
  private:
-  double held_gap_;
+  double held_gap_, damper_lift_fraction_;
 };
 
 struct SlowPressReading {

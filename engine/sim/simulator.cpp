@@ -142,12 +142,11 @@ bool Simulator::step(double t_max) {
     // contacts stop every part long before): past that, the integration has blown up (a step
     // far too long, say) even while the numbers are still finite
     if (std::abs(q1_[i] - rest_.q[i]) > kMaxTurnFromRest) {
+      const std::string note = beyond_travel_note(*model_, rest_.q, q0_);
       stop("the simulation diverged: the " + part_name(*model_, i) + " turned " +
            format_number(std::abs(q1_[i] - rest_.q[i]) * 180.0 / M_PI) +
            "° from rest (more than half a turn" +
-           (beyond_travel_note(*model_, rest_.q, q0_).empty()
-                ? std::string("; a shorter step may help)")
-                : ")" + beyond_travel_note(*model_, rest_.q, q0_)));
+           (note.empty() ? std::string("; a shorter step may help)") : ")" + note));
       return false;
     }
   }

@@ -194,5 +194,16 @@ else
   echo "ok: a diverging run is stopped: $(grep stop_cause stdout.txt)"
 fi
 
+# --- a run that leaves the action's geometry names the part that went out of its travel --------
+# (the grand's jack 1.2 mm forward misses the knuckle, and the let-off button turns it 55°)
+cases=$((cases + 1))
+"$exe" simulate --action grand --set jack_position=-0.5 --input force:pulse:40:60 --duration 0.3 \
+  --json >stdout.txt 2>stderr.txt || true
+if ! grep -q '"status": "stopped"' stdout.txt || ! grep -q "just before, the jack stood" stdout.txt; then
+  fail "a run beyond the geometry: the part is not named: $(cat stdout.txt stderr.txt)"
+else
+  echo "ok: the part beyond its travel is named: $(grep stop_cause stdout.txt)"
+fi
+
 echo "$cases cases, $failures failures"
 [[ $failures -eq 0 ]]

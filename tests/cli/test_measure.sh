@@ -46,8 +46,19 @@ for name in ("let_off", "drop"):
     assert s["measured"] is None and "never escapes" in s["problem"], s
 assert by_name["hammer_blow"]["within_tolerance"], "the rest geometry is still read"
 assert moved["within_tolerance"] is False
+# the aftertouch, the settings' result: about a millimetre on the regulated grand; not readable
+# without an escapement, with the reason
+assert 0.8 < regulated["aftertouch_mm"] < 1.3 and regulated["aftertouch_problem"] is None, regulated
+assert moved["aftertouch_mm"] is None and "never escapes" in moved["aftertouch_problem"], moved
 print("ok: measure --json")
 PY
+
+# the text table: adjusters to the micrometre, and what + means for each one turned
+"$exe" measure --action grand --set let_off=0.004 --set checking=-0.5 > turned.txt
+grep -q "+0.004 mm" turned.txt || fail "a 4 µm offset is not shown: $(cat turned.txt)"
+grep -q "checking -0.500 mm: backcheck wire: + bends" turned.txt \
+  || fail "the turned backcheck's description is missing: $(cat turned.txt)"
+grep -q "^aftertouch" turned.txt || fail "no aftertouch line: $(cat turned.txt)"
 
 # bad input is named, exit code 2
 set +e

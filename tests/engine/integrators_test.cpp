@@ -464,9 +464,9 @@ TEST(Rodas4, MatchesClosedFormWithinTolerance) {
 // RODAS4 is the accuracy reference of F8, so its coefficients matter: with the error control
 // switched off (tolerances so loose every step is accepted, the step capped at h) it must show
 // order 4 on a nonlinear, time-dependent problem (the forced Hopf oscillator: the d_i f_t terms
-// take part). The steps grow from 1e-6 s by at most 6× per step, so all but the first ~0.03 s
+// take part). The steps grow from 1e-6 s by at most 6× per step, so all but the first ~0.01 s
 // are taken at h. Errors at t = 1 s against the adaptive RODAS4 at rtol 1e-12 (whose own error,
-// ~1e-12, is far below the finest fixed-step error here, 4e-9). Observed: 3.84 and 3.93 (3.54
+// ~1e-12, is below the finest fixed-step error here, 2.8e-10). Observed: 3.84 and 3.93 (3.54
 // from h = 0.1 s, still outside the asymptotic range); the band [3.7, 4.3] rejects order 3 or 5.
 TEST(Rodas4, OrderFourWithItsErrorControlOff) {
   ForcedHopf system;

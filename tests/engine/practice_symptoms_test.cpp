@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -250,10 +251,39 @@ TEST(PracticeObservations, AJackThatNeverEscapesIsBlockingOnlyAtTheString) {
   EXPECT_GT(*held->value, 1.0);  // mm: well off the string
   EXPECT_LT(*held->value, 4.0);
   std::set<std::string> ids;
-  for (const Symptom& s : describe_symptoms(seen, reference)) ids.insert(s.id);
-  EXPECT_TRUE(ids.count("no_escapement"));
-  EXPECT_TRUE(ids.count("held_close"));
-  EXPECT_FALSE(ids.count("blocking"));
+  std::string text;
+  for (const Symptom& s : describe_symptoms(seen, reference)) {
+    ids.insert(s.id);
+    text += s.text;
+  }
+  EXPECT_TRUE(ids.count("no_escapement")) << text;
+  EXPECT_FALSE(ids.count("blocking")) << text;
+  // where the hammer stays is said with the escapement, not as the drop's "held close"
+  EXPECT_FALSE(ids.count("held_close")) << text;
+  std::ostringstream held_mm;
+  held_mm << std::fixed << std::setprecision(2) << *held->value << " mm from the string";
+  EXPECT_NE(text.find(held_mm.str()), std::string::npos) << text;
+}
+
+// Repetition counts against a regulated action that itself strikes more than once a cycle (the
+// grand at 4 and 8 Hz): more strikes are still double strikes, none a failure to repeat, but
+// fewer extra strikes are no symptom. Against one strike a cycle every change is one.
+TEST(PracticeSymptoms, RepetitionCountsAreSymptomsAgainstTheRegulatedCount) {
+  auto count = [](double per_cycle) {
+    return std::vector<Observation>{{"repetition.8hz_strikes_per_cycle",
+                                     "strikes per key cycle at 8 Hz", "per cycle", per_cycle, ""}};
+  };
+  auto ids = [&](double hidden, double regulated) {
+    std::set<std::string> out;
+    for (const Symptom& s : describe_symptoms(count(hidden), count(regulated))) out.insert(s.id);
+    return out;
+  };
+  EXPECT_EQ(ids(0.0, 2.0), std::set<std::string>{"failure_to_repeat"});
+  EXPECT_EQ(ids(3.0, 2.0), std::set<std::string>{"double_strike"});
+  EXPECT_TRUE(ids(1.0, 2.0).empty());
+  EXPECT_TRUE(ids(1.33, 2.0).empty());
+  EXPECT_EQ(ids(2.0, 1.0), std::set<std::string>{"double_strike"});
+  EXPECT_EQ(ids(0.33, 1.0), std::set<std::string>{"failure_to_repeat"});
 }
 
 // A regulated action strikes once in a forte blow with the key held: the backcheck holds the

@@ -42,20 +42,24 @@ double velocity_slope(const std::string& action, const std::string& setting) {
   return row_of(r, setting).per_unit_of_setting.at(0);
 }
 
-TEST(Sensitivity, EverySettingHasARowAndAllButThreeAreMeasuredOnBothSides) {
+TEST(Sensitivity, EverySettingHasARowAndAllButTwoAreMeasuredOnBothSides) {
   for (const char* action : {"grand", "upright"}) {
     const SensitivityResult& r = blow_sensitivity(action);
     ASSERT_EQ(r.rows.size(), 7u) << action;
     ASSERT_EQ(r.metrics, (std::vector<std::string>{"impact_velocity_mps", "let_off_time_ms"}));
     EXPECT_TRUE(std::isfinite(r.baseline[0])) << action << ": the 20 N blow strikes";
-    // known model limits (README): the grand's let-off and drop and the upright's damper lift
-    // cannot be measured on both sides of the shipped presets yet
-    const std::set<std::string> unmeasurable = {"grand:let_off", "grand:drop",
-                                                "upright:damper_lift"};
+    // known model limits (README): the grand's let-off and drop cannot be measured on both
+    // sides of the shipped preset yet (0.5 mm lower, the button trips the jack before the
+    // repetition lever reaches its drop screw)
+    const std::set<std::string> unmeasurable = {"grand:let_off", "grand:drop"};
     for (const SensitivityRow& row : r.rows) {
-      if (unmeasurable.count(std::string(action) + ":" + row.setting)) continue;
-      EXPECT_TRUE(std::isfinite(row.measured[0]) && std::isfinite(row.measured[2]))
-          << action << " " << row.setting << ": measurable 0.5 mm either side of regulation";
+      const bool both = std::isfinite(row.measured[0]) && std::isfinite(row.measured[2]);
+      // the known limits still hold (a model fix shows up here and the entry goes)
+      if (unmeasurable.count(std::string(action) + ":" + row.setting))
+        EXPECT_FALSE(both) << action << " " << row.setting << ": now measurable on both sides";
+      else
+        EXPECT_TRUE(both) << action << " " << row.setting
+                          << ": measurable 0.5 mm either side of regulation";
     }
   }
 }
