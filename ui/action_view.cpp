@@ -434,7 +434,8 @@ void ActionView::paint_frame(QPainter& painter) {
   // "jack regulating screw"), where it acts, in the close-ups (the whole action has no room for
   // them); those drawn as fixtures or as the backcheck are named already
   const bool close_up = focus_ != ViewFocus::whole || scale_ >= 2.0 * kWholeActionScale;
-  for (const Adjuster& adjuster : close_up ? model.adjusters : std::vector<Adjuster>{}) {
+  for (const Adjuster& adjuster : model.adjusters) {
+    if (!close_up) break;
     bool named = false;  // a fixture it moves (a button, a screw) or the backcheck
     for (const Fixture& f : model.fixtures) named = named || f.adjuster == adjuster.name;
     for (const AdjusterEffect& effect : adjuster.effects)
