@@ -8,6 +8,7 @@
 #include "action_setup.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "io/csv.h"
 #include "json_output.h"
 #include "plot_output.h"
@@ -94,13 +95,13 @@ int run_deregulate(const std::vector<std::string>& args) {
     const std::string unit = setting >= 0 ? model.regulation[setting].unit : "";
     std::string last_problem;  // a reason is written once, where it first appears
     for (const DeregulationSample& s : result.samples) {
-      std::cout << "  t " << number_in(s.t, "", 3) << " s  adjuster "
+      std::cout << "  t " << format_fixed(s.t, 3) << " s  adjuster "
                 << number_in(s.adjuster_mm, "mm", 3) << " mm  " << options.setting << " "
                 << (std::isfinite(s.measured) ? number_in(s.measured, unit) + " " + unit
                                               : std::string("cannot be read"))
                 << "  blow "
                 << (std::isfinite(s.blow_mm) ? number_in(s.blow_mm, "mm") + " mm" : "-")
-                << "  whippen " << number_in(s.whippen_angle_deg, "", 2) << " deg";
+                << "  whippen " << format_fixed(s.whippen_angle_deg, 2) << " deg";
       if (!s.measure_problem.empty() && s.measure_problem != last_problem)
         std::cout << "  (" << s.measure_problem << ")";
       last_problem = s.measure_problem;

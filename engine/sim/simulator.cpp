@@ -10,6 +10,9 @@ namespace pat {
 namespace {
 
 constexpr double kMaxTurnFromRest = M_PI;  // rad
+// a jack-knuckle (butt) opening within this time (s) of the let-off button's touch is the
+// escapement; the jack under the knuckle with its toe off the button this long has reset
+constexpr double kEscapementWindow = 2e-3;
 
 std::string part_name(const ActionModel& model, int body) {
   return body < 0 ? std::string("frame") : model.bodies[body].name;
@@ -223,13 +226,13 @@ void Simulator::detect_events() {
   // reset: the jack under the knuckle (butt) with its toe off the button for 2 ms, the window in
   // which an opening counts as escapement (its bounce as it springs back is none)
   if (marks.escapement_contact >= 0 && current[marks.escapement_contact] > 0.0 &&
-      (last_letoff_active_ < 0.0 || t1_ - last_letoff_active_ >= 2e-3))
+      (last_letoff_active_ < 0.0 || t1_ - last_letoff_active_ >= kEscapementWindow))
     jack_reset_ = true;
   // escapement: the jack leaves the knuckle (butt) within 2 ms of touching the let-off button,
   // once per stroke
   if (jack_reset_ && marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
       current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
-      t1_ - last_letoff_active_ < 2e-3) {
+      t1_ - last_letoff_active_ < kEscapementWindow) {
     report({"escapement", t1_, 0.0, gap_now()});
     jack_reset_ = false;
   }
