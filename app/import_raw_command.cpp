@@ -2,6 +2,7 @@
 // shared/data/kawai-kg3c) turned into the measured-data format (DESIGN.md sections 4 and 5;
 // the calibration is described in engine/measured/raw_import.h).
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <utility>
@@ -13,6 +14,7 @@
 #include "core/format.h"
 #include "io/csv.h"
 #include "measured/raw_import.h"
+#include "measured/sensor_calibration.h"
 #include "model/preset_loader.h"
 #include "plot_output.h"
 
@@ -32,6 +34,27 @@ int whole_number(const CommandLine& cl, const std::string& option, int fallback,
     throw InputError(option + ": must be a whole number ≥ " + std::to_string(minimum) + " (got " +
                      cl.value(option) + ")");
   return static_cast<int>(x);
+}
+
+/// A calibration holds one recording's sensor offsets and gains: refuses one whose header names
+/// another recording, and a column its sensors (in column order) give to another sensor than
+/// the hammer shank's.
+void check_calibration_fits(const SensorCalibration& cal, const std::string& raw_path, int column) {
+  const std::string raw_name = std::filesystem::path(raw_path).filename().string();
+  if (!cal.recording.empty() && cal.recording != raw_name)
+    throw InputError("--calibration: " + cal.path + " holds the sensor offsets and gains of " +
+                     cal.recording + ", not of " + raw_name +
+                     " (each recording has its own; without --calibration the hammer's travel "
+                     "is estimated from the trace)");
+  const auto index = static_cast<std::size_t>(column - 1);
+  if (cal.sensors.size() > 1 && index < cal.sensors.size() && cal.sensors[index] != "hammer") {
+    std::string order;
+    for (const std::string& s : cal.sensors) order += (order.empty() ? "" : ", ") + s;
+    throw InputError("--column " + std::to_string(column) + ": in " + cal.path + " column " +
+                     std::to_string(column) + " of " + raw_name + " is the '" + cal.sensors[index] +
+                     "' sensor (its sensors in column order: " + order +
+                     "); import-raw turns the hammer-shank sensor into hammer angles");
+  }
 }
 
 }  // namespace
@@ -66,8 +89,10 @@ int run_import_raw(const std::vector<std::string>& args) {
   const int bits = whole_number(cl, "--bits", 24, 1);
   const ActionModel model = load_action(cl.value_or("--action", "grand"));
   o.action = model.kind;
-  if (cl.has("--calibration"))
+  if (cl.has("--calibration")) {
     o.calibration = read_sensor_calibration(cl.value("--calibration"), "hammer");
+    check_calibration_fits(*o.calibration, raw_path, column);
+  }
   const RawTrace trace = read_raw_trace(raw_path, column, bits);
   o.contact_angle_deg = hammer_contact_angle_deg(model);
   const RawImport result = import_raw(trace, o);

@@ -103,8 +103,8 @@ std::vector<PlotSpec> sweep_plots(const SweepResult& r) {
   }
   std::vector<PlotMarker> markers;  // the maximum, and where blows start to alternate
   if (r.max_frequency_hz)
-    markers.push_back(
-        {*r.max_frequency_hz, "maximum " + format_number(*r.max_frequency_hz) + " Hz"});
+    markers.push_back({*r.max_frequency_hz, (r.limit_found ? "maximum " : "no limit up to ") +
+                                                format_number(*r.max_frequency_hz) + " Hz"});
   if (r.alternating_from_hz)
     markers.push_back({*r.alternating_from_hz,
                        "alternating blows from " + format_number(*r.alternating_from_hz) + " Hz"});
@@ -131,7 +131,11 @@ std::string sweep_summary(const SweepResult& r) {
   std::string text = r.max_frequency_hz ? "maximum " + format_number(*r.max_frequency_hz) + " Hz"
                                         : std::string("no maximum (the first judged cycle fails)");
   if (!r.limit_found) {
-    text += " (no failure up to the last frequency)";
+    // the band's top, not a limit: the action repeats at least that fast
+    text = r.max_frequency_hz
+               ? "no limit in the band: every cycle succeeds up to " +
+                     format_number(*r.max_frequency_hz) + " Hz (the maximum is at least that)"
+               : text + " (no failure up to the last frequency)";
   } else if (!r.first_failure) {
     text += " (a run stopped while settling)";
   } else {

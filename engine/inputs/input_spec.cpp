@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "core/types.h"
 #include "inputs/cubic_spline.h"
 #include "inputs/key_input.h"
@@ -260,6 +261,7 @@ class CsvMotion final : public MotionInput {
     const CubicSpline::Sample s = spline_.evaluate(t);
     return {s.value, s.first, s.second};
   }
+  const CubicSpline& spline() const { return spline_; }
 
  private:
   CubicSpline spline_;
@@ -292,7 +294,49 @@ int data_row_line(const std::string& path, std::size_t row) {
   return 0;
 }
 
-std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::string& path) {
+/// How far the spline through a recorded key motion may stray beyond the recorded angles, as a
+/// fraction of their range: the true motion of a sampled smooth stroke peaks between samples,
+/// above the highest one by (π f Δt)²/2 of its half-range at most (5 % for a 10 Hz stroke
+/// sampled at only 100 Hz); a spline forced round the sharp corner of a ramp or a step strays
+/// by a third or more (a 2.5° ramp over 5 ms: 1.2° past its top, 0.7° below its foot).
+constexpr double kSplineStrayOfRange = 0.1;
+
+/// Throws InputError naming the lines between which the spline through (t_i, angle_i) strays
+/// beyond the recorded angles by more than kSplineStrayOfRange of their range: a motion with
+/// corners the key would be driven past (with the huge accelerations of the corners).
+void check_spline_follows_the_data(const std::string& path, const std::vector<double>& t,
+                                   const std::vector<double>& angle, const CubicSpline& spline) {
+  const auto [lowest, highest] = std::minmax_element(angle.begin(), angle.end());
+  const double range = *highest - *lowest;
+  if (!(range > 0.0)) return;
+  constexpr int kSamplesPerInterval = 8;
+  for (std::size_t i = 0; i + 1 < t.size(); ++i) {
+    for (int k = 1; k < kSamplesPerInterval; ++k) {
+      const double at = t[i] + (t[i + 1] - t[i]) * k / kSamplesPerInterval;
+      const double value = spline.evaluate(at).value;
+      const double stray = std::max(value - *highest, *lowest - value);
+      if (stray <= kSplineStrayOfRange * range) continue;
+      const int first = data_row_line(path, i), second = data_row_line(path, i + 1);
+      throw InputError(located_message(
+          path, "",
+          "key_angle_deg changes too abruptly between lines " + std::to_string(first) + " and " +
+              std::to_string(second) +
+              ": the smooth curve through the rows (which gives the "
+              "key's rate and acceleration) passes " +
+              format_fixed(stray * 180.0 / kPi, 2) +
+              " deg beyond the recorded angles there; record the motion more finely or round "
+              "its corners"));
+    }
+  }
+}
+
+/// Key angles a recorded motion may hold, as fractions of the full dip (rad from rest): a little
+/// above rest (a key lifted off its back rail) to half a dip beyond the punching (a key pressed
+/// hard into its felt sinks a millimetre or so; half a dip is five). Beyond, no key can be.
+constexpr double kLowestAngleOfDip = -0.5, kDeepestAngleOfDip = 1.5;
+
+std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::string& path,
+                                          double full_dip_angle_rad) {
   const CsvTable table = read_csv(path);
   const int time_column = table.column_index("time_s");
   const int angle_column = table.column_index("key_angle_deg");
@@ -320,8 +364,27 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
   }
   if (angle_column >= 0) {
     std::vector<double> angle = table.column("key_angle_deg");
-    for (double& a : angle) a = rad(a);
-    return std::make_unique<CsvMotion>(spec, std::move(time), angle);
+    for (std::size_t i = 0; i < angle.size(); ++i) {
+      const double a = rad(angle[i]);
+      // a known full dip (0: not known here) bounds the angles a key can take
+      if (full_dip_angle_rad > 0.0 && (a < kLowestAngleOfDip * full_dip_angle_rad ||
+                                       a > kDeepestAngleOfDip * full_dip_angle_rad)) {
+        const int line = data_row_line(path, i);
+        const double dip_deg = full_dip_angle_rad * 180.0 / kPi;
+        throw InputError(located_message(
+            path, "",
+            "key_angle_deg " + number_text(angle[i]) + " on " +
+                (line > 0 ? "line " + std::to_string(line) : "row " + std::to_string(i + 1)) +
+                " is beyond the key's travel (0 at rest, full dip " + format_fixed(dip_deg, 2) +
+                " deg; accepted from " + format_fixed(kLowestAngleOfDip * dip_deg, 2) + " to " +
+                format_fixed(kDeepestAngleOfDip * dip_deg, 2) + ")"));
+      }
+      angle[i] = a;
+    }
+    const std::vector<double> knots = time;
+    auto motion = std::make_unique<CsvMotion>(spec, std::move(time), angle);
+    check_spline_follows_the_data(path, knots, angle, motion->spline());
+    return motion;
   }
   return std::make_unique<CsvForce>(spec, std::move(time), table.column("key_force_n"));
 }
@@ -349,7 +412,7 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
       spec_error(spec,
                  "expected csv:PATH (a CSV file with time_s and "
                  "key_force_n or key_angle_deg)");
-    return parse_csv_input(spec, path);
+    return parse_csv_input(spec, path, context.full_dip_angle_rad);
   }
 
   const std::vector<std::string_view> f = split(text, ':');

@@ -119,7 +119,12 @@ SensorCalibration read_sensor_calibration(const std::string& path, const std::st
       throw InputError(located_message(path, where,
                                        std::to_string(fields.size()) + " fields, the header has " +
                                            std::to_string(columns.size())));
-    if (sensor_col >= 0 && fields[static_cast<std::size_t>(sensor_col)] != sensor) continue;
+    if (sensor_col >= 0) {
+      const std::string& name = fields[static_cast<std::size_t>(sensor_col)];
+      if (std::find(cal.sensors.begin(), cal.sensors.end(), name) == cal.sensors.end())
+        cal.sensors.push_back(name);
+      if (name != sensor) continue;
+    }
     double position = 0.0, reading = 0.0;
     for (const auto& [index, value] :
          {std::pair{position_col, &position}, std::pair{reading_col, &reading}}) {
@@ -142,6 +147,15 @@ SensorCalibration read_sensor_calibration(const std::string& path, const std::st
                                          (cal.position.size() == 1 ? "point" : "points") +
                                          " (at least two are needed)"));
 
+  // the recording named by the header: "... points for NAME.txt ..."
+  const std::regex recording_pattern(R"(\bfor\s+([^\s()]+\.\w+))");
+  for (const std::string& comment : comments) {
+    std::smatch match;
+    if (std::regex_search(comment, match, recording_pattern)) {
+      cal.recording = match[1].str();
+      break;
+    }
+  }
   // offset and gain from the header: "SENSOR offset X gain Y" (or "offset X gain Y")
   const std::string number = R"([-+]?\d*\.?\d+(?:[eE][-+]?\d+)?)";
   const std::regex pattern("(?:(\\w+)\\s+)?offset\\s+(" + number + ")\\s+gain\\s+(" + number + ")");

@@ -39,6 +39,12 @@ struct SensorCalibration {
   std::vector<double> normalized_reading;  ///< at the points, strictly monotone
   std::vector<double> position;            ///< at the points, in, strictly increasing
   MonotoneCubic position_of_reading;       ///< in, of the normalized reading
+  /// The sensors of a file with a sensor column, in the order their rows first appear (the
+  /// order of the recording's columns, as in the data set's calibration.csv); empty without.
+  std::vector<std::string> sensors;
+  /// The recording the points belong to, when a header line names it ("... points for
+  /// NAME.txt ..."); empty when none does.
+  std::string recording;
 
   /// Position at the sensor (in) for an ADC reading (fraction of full scale).
   double position_at(double reading) const {

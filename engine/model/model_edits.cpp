@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "core/error.h"
@@ -82,6 +83,21 @@ ActionModel without_part(const ActionModel& model, const std::string& part) {
   }
   out.removed_parts.push_back(part);
   return out;
+}
+
+std::string model_origin(const ActionModel& model) {
+  std::string changes;
+  auto add = [&changes](const std::string& change) {
+    changes += (changes.empty() ? " " : ", ") + change;
+  };
+  for (const std::string& part : model.removed_parts) add("without " + part);
+  for (const Adjuster& a : model.adjusters) {
+    if (a.value == 0.0) continue;
+    char text[32];
+    std::snprintf(text, sizeof text, " %+.3f mm", a.value * 1e3);
+    add(a.name + text);
+  }
+  return model.source_file + changes;
 }
 
 ActionModel with_setting(const ActionModel& model, const std::string& assignment) {

@@ -17,6 +17,11 @@ ActionModel with_adjuster(const ActionModel& model, const std::string& name, dou
 /// "repetition_spring"). Throws InputError naming the parts that can be removed.
 ActionModel without_part(const ActionModel& model, const std::string& part);
 
+/// Where the model comes from, for messages about it: its file, and what was changed for the run
+/// ("…/grand.json without jack_spring, hammer_blow -1.500 mm"), so that a failure caused by a
+/// --without or a --set is not blamed on the preset alone.
+std::string model_origin(const ActionModel& model);
+
 /// Parses "NAME=MM" (as given to --set) and applies it.
 ActionModel with_setting(const ActionModel& model, const std::string& assignment);
 

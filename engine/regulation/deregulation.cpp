@@ -29,16 +29,28 @@ double measured_or_nan(const ActionModel& model, const std::string& setting,
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options) {
   const int setting_index = model.setting_index(options.setting);
   if (setting_index < 0) measure_setting(model, options.setting);  // throws, naming the settings
-  if (!(options.frequency_hz > 0.0) || !(options.duration_s > 0.0) ||
-      !std::isfinite(options.rate_mm_per_s))
-    throw InputError("deregulate: frequency, duration and rate must be finite, positive numbers");
+  if (!(options.frequency_hz > 0.0) || !(options.duration_s > 0.0))
+    throw InputError("deregulate: frequency and duration must be positive numbers");
+  if (!std::isfinite(options.rate_mm_per_s) || options.rate_mm_per_s == 0.0)
+    throw InputError(
+        "deregulate: the rate must be a number of mm/s other than 0, its sign the "
+        "direction the adjuster turns (got " +
+        format_number(options.rate_mm_per_s) + ")");
   const Adjuster& adjuster = model.adjusters[model.adjuster_index(options.setting)];
   const double start_value = adjuster.value;
   const double rate = options.rate_mm_per_s * 1e-3;  // m/s
 
   RestState rest = find_rest_state(model);
-  std::shared_ptr<const KeyInput> input = parse_input_spec(
-      "motion:sine:" + std::to_string(options.frequency_hz) + ":full", input_context(model, rest));
+  std::shared_ptr<const KeyInput> input;
+  try {
+    input = parse_input_spec("motion:sine:" + format_number(options.frequency_hz, 10) + ":full",
+                             input_context(model, rest));
+  } catch (const InputError& e) {  // the spec is ours: name the option it came from
+    const std::string why = e.what();
+    const auto colon = why.find("': ");
+    throw InputError("deregulate: the key's frequency " + format_number(options.frequency_hz) +
+                     " Hz: " + (colon == std::string::npos ? why : why.substr(colon + 3)));
+  }
   SimulationOptions sim_options;
   sim_options.sample_interval_s = 0.0;
   Simulator sim(std::make_shared<const ActionModel>(model), input, sim_options, &rest);
@@ -49,7 +61,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   result.trace.metadata["action"] = model.kind;
   result.trace.metadata["input"] = input->spec();
   result.trace.metadata["deregulation"] =
-      options.setting + " at " + std::to_string(options.rate_mm_per_s) + " mm/s";
+      options.setting + " at " + format_number(options.rate_mm_per_s, 10) + " mm/s";
   const int whippen = model.body_index("whippen");
   // the adjuster moves in steps (the paper's screw turns) or, continuously, every 10 ms
   const double interval = options.step_interval_s > 0.0 ? options.step_interval_s : 0.01;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
+#include <vector>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -109,8 +111,10 @@ class SettingProbe {
 /// either side, nearest first.
 constexpr double kMeasurableSearchMm[] = {0.5, 1.0, 2.0, 3.0, 4.0};
 
-/// Distances (mm) from the start at which a stalled bracket search looks for a change of sign.
-constexpr double kBracketScanMm[] = {0.5, 1.0, 1.5, 2.0, 3.0, 4.0};
+/// Distances (mm) from the start at which a stalled bracket search looks for a change of sign:
+/// these, then every further millimetre up to the far end of the adjuster's range (a start at
+/// one end of a ±4 mm range may have its target near the other).
+constexpr double kBracketScanMm[] = {0.5, 1.0, 1.5, 2.0, 3.0};
 
 struct Found {
   bool ok = false;
@@ -179,7 +183,10 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const Regulat
     // the edge of the measurable region. Scan outward on both sides of the start for a change
     // of sign, nearest first, and bracket it with the last point of the start's sign.
     double same_x[2] = {x0, x0}, same_e[2] = {e0, e0};
-    for (double distance : kBracketScanMm) {
+    std::vector<double> distances(std::begin(kBracketScanMm), std::end(kBracketScanMm));
+    const double span_mm = (adjuster.max - adjuster.min) * 1e3;
+    for (double d = distances.back() + 1.0; d < span_mm + 1.0; d += 1.0) distances.push_back(d);
+    for (double distance : distances) {
       for (int side = 0; side < 2 && !bracketed; ++side) {
         const double x =
             std::clamp(x0 + (side == 0 ? 1.0 : -1.0) * distance * 1e-3, adjuster.min, adjuster.max);

@@ -143,12 +143,19 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   }
   // Escapement, as the technician sees it: the hammer, held at the bottom of the press, rests
   // clearly below its closest carried approach to the string (it fell onto the repetition lever
-  // or the backcheck). Whether the jack-knuckle (butt) contact opens is no criterion: it opens
-  // for an instant when the knuckle bounces as the jack takes over from a repetition lever
-  // stopped by its drop screw, and it may stay closed after escapement with the knuckle resting
-  // against the side of the tipped jack (as on a real grand with the key held down).
+  // or the backcheck). The jack-knuckle (butt) contact opening during the press is no criterion:
+  // it opens for an instant when the knuckle bounces as the jack takes over from a repetition
+  // lever stopped by its drop screw, and it may stay closed after escapement with the knuckle
+  // resting against the side of the tipped jack (as on a real grand with the key held down).
+  // The one escape without a fall: a let-off button turned so far down that the jack trips before
+  // the repetition lever meets its drop screw; the lever then carries the hammer on up to the
+  // screw and holds it no lower than where the jack left it. At the end of that press the jack,
+  // held tipped on its button, stands clear of the knuckle.
   const double held_gap = sim.hammer_string_gap(sim.q());
-  const bool escaped = letoff_touched && jack_carried && held_gap > closest_carried_gap + kFallBack;
+  const bool tripped_clear =
+      gap_of(marks.letoff_contact) <= 0.0 && gap_of(marks.escapement_contact) > 0.0;
+  const bool escaped = letoff_touched && jack_carried &&
+                       (held_gap > closest_carried_gap + kFallBack || tripped_clear);
   if (escaped) {
     reading.let_off_gap = closest_carried_gap;
     reading.aftertouch = aftertouch_after(key_at_let_off);

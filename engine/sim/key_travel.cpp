@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "dynamics/action_dynamics.h"
+#include "model/model_edits.h"
 
 namespace pat {
 namespace {
@@ -22,9 +23,21 @@ double bottom_penetration(const ActionModel& model, ActionDynamics& dynamics, Do
 double key_full_dip_angle(const ActionModel& model, const RestState& rest) {
   ActionDynamics dynamics(model, nullptr);
   const double start = rest.q[model.landmarks.key];
-  double lo = start, hi = start + 0.3;
-  if (bottom_penetration(model, dynamics, rest.q, hi) <= 0.0)
-    throw std::runtime_error(model.source_file + ": the key never reaches its front-rail punching");
+  // scan outward in steps of kProbeStep (about 2 mm at the front of a 220 mm key arm) for the
+  // first angle where the key presses into its punching: one long jump could carry the key's
+  // front past the punching's far end, where the contact no longer sees it
+  constexpr double kProbeStep = 0.01;  // rad
+  constexpr double kProbeReach = 0.3;  // rad: some 60 mm at the key front, six times a key dip
+  double lo = start, hi = start;
+  bool reached = false;
+  for (double turn = kProbeStep; turn <= kProbeReach + 1e-12 && !reached; turn += kProbeStep) {
+    lo = hi;
+    hi = start + turn;
+    reached = bottom_penetration(model, dynamics, rest.q, hi) > 0.0;
+  }
+  if (!reached)
+    throw std::runtime_error(model_origin(model) +
+                             ": the key never reaches its front-rail punching");
   for (int i = 0; i < 60; ++i) {
     const double mid = 0.5 * (lo + hi);
     (bottom_penetration(model, dynamics, rest.q, mid) > 0.0 ? hi : lo) = mid;

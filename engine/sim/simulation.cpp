@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "dynamics/action_dynamics.h"
+#include "model/model_edits.h"
 #include "sim/simulator.h"
 #include "sim/static_equilibrium.h"
 
@@ -72,7 +73,7 @@ RestState find_rest_state(const ActionModel& model) {
       const double t_end = t + phase[0];
       while (integrator->time() < t_end - 1e-12) {
         if (integrator->step(t_end) != StepStatus::Ok)
-          throw std::runtime_error(model.source_file + ": the action does not settle at rest (" +
+          throw std::runtime_error(model_origin(model) + ": the action does not settle at rest (" +
                                    integrator->failure_reason() + ")");
       }
       t = integrator->time();
@@ -99,7 +100,7 @@ RestState find_rest_state(const ActionModel& model) {
       if (!std::isfinite(q[i]) || std::abs(v[i]) > 1e-2) moving = i;
     if (moving < 0) break;
     if (round == 2 || !q.allFinite())
-      throw std::runtime_error(model.source_file + ": the action does not come to rest (joint '" +
+      throw std::runtime_error(model_origin(model) + ": the action does not come to rest (joint '" +
                                model.bodies[moving].name + "' still moves)");
   }
   RestState rest;

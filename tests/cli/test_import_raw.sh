@@ -68,6 +68,19 @@ expect_failure "calibration header" "no offset and gain for sensor 'hammer'" \
 expect_failure "calibration monotone" "bump.csv: line 5: the calibration is not monotone" \
   strike.txt --rate 2000 --column 2 --calibration bump.csv
 expect_failure "two files" "one raw trace at a time" strike.txt text.txt --rate 2000
+# a calibration is one recording's: another's offsets and gains, or another sensor's column, are
+# refused (the data set's calibration.csv names its recording and lists hammer, then damper)
+printf '# Sensor calibration points for other.txt\n# hammer offset 0.5 gain 0.2\n%s\n0,0\n0.1,1\n' \
+  'position_in,normalized_reading' >other.csv
+expect_failure "another recording's calibration" \
+  "other.csv holds the sensor offsets and gains of other.txt, not of strike.txt" \
+  strike.txt --rate 2000 --column 2 --calibration other.csv
+printf '# hammer offset 0.5 gain 0.2, damper offset 0.3 gain 0.5\n%s\n%s\n' \
+  'sensor,position_in,normalized_reading' 'hammer,0,0' >two.csv
+printf 'hammer,0.1,1\ndamper,0,0\ndamper,0.1,1\n' >>two.csv
+expect_failure "another sensor's column" \
+  "--column 2: in two.csv column 2 of strike.txt is the 'damper' sensor (its sensors in column order: hammer, damper)" \
+  strike.txt --rate 2000 --column 2 --calibration two.csv
 # an existing output file survives a failed run
 echo keep >kept.csv
 "$exe" import-raw strike.txt --rate 2000 --column 1 --out kept.csv 2>/dev/null && fail "no strike accepted"

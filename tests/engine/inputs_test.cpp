@@ -369,6 +369,45 @@ TEST_F(InputsCsvTest, CsvErrorsNameTheFileAndLine) {
 
   message = spec_error("csv:" + (dir_ / "absent.csv").string());
   EXPECT_TRUE(contains(message, "absent.csv")) << message;
+
+  // a key angle no key can take (the context's full dip is 0.04 rad, 2.29 deg)
+  const std::string deep = write_text("deep.csv", "time_s,key_angle_deg\n0,0\n0.01,50\n");
+  message = spec_error("csv:" + deep);
+  EXPECT_TRUE(contains(message, deep + ": key_angle_deg 50 on line 3 is beyond the key's travel "
+                                       "(0 at rest, full dip 2.29 deg; accepted from -1.15 to "
+                                       "3.44)"))
+      << message;
+}
+
+// A ramp with sharp corners (0 → 2 deg in 5 ms, held, back): the natural spline through it, which
+// the key would follow, swings 0.34 deg (17 % of the 2 deg range) below its foot before the ramp,
+// beyond the 10 % a sampled smooth stroke can need. The same ramp with its corners rounded (a
+// half cosine sampled every millisecond) is accepted and followed within 1 % of its range.
+TEST_F(InputsCsvTest, AMotionWithCornersTheSplineOvershootsIsRefused) {
+  const std::string ramp =
+      write_text("ramp.csv", "time_s,key_angle_deg\n0,0\n0.01,0\n0.015,2\n0.05,2\n0.06,0\n0.1,0\n");
+  const std::string message = spec_error("csv:" + ramp);
+  EXPECT_TRUE(contains(message, ramp + ": key_angle_deg changes too abruptly between lines 2 and "
+                                       "3"))
+      << message;
+  EXPECT_TRUE(contains(message, "record the motion more finely or round its corners")) << message;
+
+  std::ostringstream rounded;
+  rounded << "time_s,key_angle_deg\n";
+  for (int ms = 0; ms <= 100; ++ms) {
+    const double t = 1e-3 * ms;
+    double deg = 0.0;  // 0 → 2 deg over 10–20 ms, held, back over 50–60 ms
+    if (t > 0.01 && t < 0.02) deg = 1.0 - std::cos(kPi * (t - 0.01) / 0.01);
+    if (t >= 0.02 && t <= 0.05) deg = 2.0;
+    if (t > 0.05 && t < 0.06) deg = 1.0 + std::cos(kPi * (t - 0.05) / 0.01);
+    rounded << t << "," << deg << "\n";
+  }
+  const auto input = parse("csv:" + write_text("rounded.csv", rounded.str()));
+  for (double t = 0.0; t <= 0.1; t += 1.3e-4) {
+    const double angle = input->motion(t).angle;
+    EXPECT_GT(angle, rad(-0.02)) << t;
+    EXPECT_LT(angle, rad(2.02)) << t;
+  }
 }
 
 TEST(InputSpec, BadSpecsSayWhatIsExpected) {

@@ -232,12 +232,11 @@ TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
 
 // A jack that never escapes in a slow press is seen for what it is: the escapement cannot be
 // read, but where the hammer stays with the key held down can, and the symptoms name blocking
-// only when that is at the string. Let-off screwed 0.16 mm up with the drop screw 0.11 mm down
-// (a review's practice exercise): the hammer is held about 2.5 mm off the string, not jammed.
+// only when that is at the string. The punching 1 mm up (a shallow key dip): the key bottoms
+// before the jack toe reaches its button, and the hammer is held off the string, not jammed.
 TEST(PracticeObservations, AJackThatNeverEscapesIsBlockingOnlyAtTheString) {
   const ActionModel regulated = test::shipped("grand");
-  const ActionModel hidden =
-      with_adjuster(with_adjuster(regulated, "let_off", 0.16e-3), "drop", -0.11e-3);
+  const ActionModel hidden = with_adjuster(regulated, "key_dip", 1.0e-3);
   const std::vector<Observation> seen =
       run_test(hidden, find_rest_state(hidden), PracticeTest::SlowPress);
   const std::vector<Observation> reference =

@@ -133,14 +133,14 @@ INSTANTIATE_TEST_SUITE_P(
         // beyond +1.0 mm the toe trips before the jack takes the knuckle over from the lever,
         // so the jack never carries the hammer
         MonotoneCase{"grand", "let_off", -0.25, 1.0, 0.25, true},
-        // 3.0 mm at 0 to 16.6 mm at +3. At −0.25 mm the lever holds the hammer 1.83 mm from
-        // the string, only 0.14 mm below where the jack let it off (1.69 mm): less than the
-        // 0.2 mm fall by which the slow press recognises an escapement, so there is no drop to
-        // read (at −0.2 mm: 2.06 mm); from −0.5 mm the lever carries the knuckle past let-off
-        // and the jack never lifts the hammer. Beyond +3 mm the falling knuckle comes to rest
-        // against the side of the tipped jack, above the lever (17.14 mm at +3.5, 17.01 at +4,
-        // the lever 0.7 mm below the knuckle)
-        MonotoneCase{"grand", "drop", 0, 3},
+        // 1.83 mm at −0.25 to 16.6 mm at +3 (3.0 at 0). At −0.25 mm the lever holds the hammer
+        // only 0.17 mm below where the jack let it off (1.66 mm), and from −0.3 mm no lower
+        // (1.60 and 1.57 mm; at −0.4 the lever carries it on to 1.13 mm): the drop is read
+        // because the tipped jack stands clear of the knuckle. From −0.5 mm the lever carries
+        // the knuckle past let-off and the jack never lifts the hammer. Beyond +3 mm the
+        // falling knuckle comes to rest against the side of the tipped jack, above the lever
+        // (17.14 mm at +3.5, 17.01 at +4, the lever 0.7 mm below the knuckle)
+        MonotoneCase{"grand", "drop", -0.25, 3},
         // 19.3 mm at −1.5 to 14.3 mm at +1.0. From −1.75 mm the hammer's tail passes below
         // the lower end of the backcheck's face and is never caught; from +1.25 mm the face
         // (stiff enough to catch a forte rebound on its first pass) stops the rising tail and
@@ -210,24 +210,25 @@ TEST(Regulation, DamperLiftingAfterLetOffIsNotReadAsAFraction) {
   }
 }
 
-// Reading every setting at once: a setting that cannot be read (the button 0.3 mm down: no
-// escapement before the key bottoms, so no let-off and no drop) gets its reason and the others
-// are still read, as each reads alone; measure_settings throws that reason instead.
+// Reading every setting at once: a setting that cannot be read (the button 0.5 mm down: it trips
+// the jack before the jack takes the knuckle over from the repetition lever, so the jack never
+// lifts the hammer: no let-off and no drop) gets its reason and the others are still read, as
+// each reads alone; measure_settings throws that reason instead.
 TEST(Regulation, ReadingEverySettingReportsTheUnreadableOnesAndReadsTheRest) {
-  const ActionModel model = with_adjuster(test::shipped("grand"), "let_off", 0.3e-3);
+  const ActionModel model = with_adjuster(test::shipped("grand"), "let_off", 0.5e-3);
   const std::vector<SettingReading> readings = read_settings(model);
   ASSERT_EQ(readings.size(), model.regulation.size());
   for (const SettingReading& r : readings) {
     if (r.name == "let_off" || r.name == "drop") {
       EXPECT_TRUE(std::isnan(r.measured)) << r.name;
-      EXPECT_NE(r.problem.find("never escapes"), std::string::npos) << r.problem;
+      EXPECT_NE(r.problem.find("never lifts the hammer"), std::string::npos) << r.problem;
       EXPECT_FALSE(r.within_tolerance()) << r.name;
       continue;
     }
     EXPECT_TRUE(r.problem.empty()) << r.name << ": " << r.problem;
     EXPECT_EQ(r.measured, measure_setting(model, r.name)) << r.name;  // deterministic runs
   }
-  EXPECT_DOUBLE_EQ(readings[model.setting_index("let_off")].adjuster_mm, 0.3);
+  EXPECT_DOUBLE_EQ(readings[model.setting_index("let_off")].adjuster_mm, 0.5);
   EXPECT_THROW(measure_settings(model), std::runtime_error);
 }
 
@@ -313,6 +314,40 @@ TEST(Regulation, LetOffClearsTheDropScrewAsSoonAsTheLeverCarriesTheHammer) {
   EXPECT_NE(let_off->note.find("never lifts the hammer"), std::string::npos) << let_off->note;
   EXPECT_NE(let_off->note.find("then with 'drop'"), std::string::npos) << let_off->note;
   EXPECT_EQ(let_off->note.find("out of reach"), std::string::npos) << let_off->note;
+}
+
+// A let-off button turned down past the drop (grand, +0.3 mm: the jack trips 3.1 mm from the
+// string, before the repetition lever meets its drop screw) is still read: the lever carries the
+// escaped hammer on up to the drop screw, so the hammer never falls back below where the jack
+// left it, but the jack, held tipped on its button, stands clear of the knuckle. The reading is
+// what the technician sees: let-off farther from the string than the drop. A drop screw turned
+// up (−0.3 mm) leaves the hammer held where the jack let it off (no drop: the two readings
+// within 0.1 mm), and is read too.
+TEST(Regulation, LetOffBeyondTheDropAndADropScrewTooHighAreRead) {
+  const ActionModel grand = shipped("grand");
+  const ActionModel early = with_adjuster(grand, "let_off", 0.3e-3);
+  const double let_off = measure_setting(early, "let_off");
+  const double drop = measure_setting(early, "drop");
+  EXPECT_GT(let_off, drop) << "let-off " << let_off << " mm, drop " << drop << " mm";
+  EXPECT_NEAR(drop, 3.0, 0.05);  // the drop screw was not touched
+  const ActionModel high_drop = with_adjuster(grand, "drop", -0.3e-3);
+  const double held = measure_setting(high_drop, "drop");
+  EXPECT_NEAR(held, measure_setting(high_drop, "let_off"), 0.1);
+  EXPECT_LT(held, 3.0 - 1.0);  // far closer to the string than the regulated 3 mm
+}
+
+// A capstan screwed to the bottom of its range (−4 mm) with the jack screw 3 mm off: the blow
+// reads 51.8 mm from −4 to −1 mm (the whippen rests on its own, clear of the capstan) and its
+// target lies near the other end of that flat stretch, at about 0 mm. The search for a change
+// of sign goes on to the far end of the adjuster's range; it used to stop 4 mm from the start
+// and call the target out of reach.
+TEST(Regulation, ATargetAtTheFarEndOfAFlatStretchIsFound) {
+  ActionModel model = with_adjuster(shipped("grand"), "hammer_blow", -4e-3);
+  model = with_adjuster(model, "jack_position", 3e-3);
+  const RegulationResult result = regulate(model);
+  ASSERT_TRUE(result.converged) << result.message;
+  for (const SettingReading& r : result.settings)
+    EXPECT_LE(std::abs(r.measured - r.target), r.tolerance) << r.name;
 }
 
 // A backcheck bent 2 mm toward the hammer rubs the hammer's tail on its way up: the slow press
@@ -524,6 +559,23 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
   EXPECT_LT(upright.samples.back().blow_mm, upright.samples.front().blow_mm - 10.0);
   EXPECT_GT(upright.samples.back().whippen_angle_deg,
             upright.samples.front().whippen_angle_deg + 1.0);
+}
+
+// A key pilot (capstan) screwed 1.5–2 mm down, within its travel: the whippen no longer holds
+// the key's back down, so the key's front rests lower (about 1.5 mm less dip at 1.5 mm) and its
+// punching is found all the same. Before, one probe 0.3 rad down carried the key's front past
+// the punching's far end and every run failed with "the key never reaches its punching".
+TEST(Regulation, AKeyPilotScrewedFarDownLeavesAShallowerDip) {
+  const ActionModel grand = shipped("grand");
+  const double regulated_dip = measure_setting(grand, "key_dip");
+  for (double mm : {-1.5, -2.0}) {
+    const ActionModel low = with_adjuster(grand, "hammer_blow", mm * 1e-3);
+    const double dip = measure_setting(low, "key_dip");
+    EXPECT_LT(dip, regulated_dip - 1.0) << mm << " mm";
+    EXPECT_GT(dip, 5.0) << mm << " mm";  // the key still travels: a shallower dip, not none
+    const SimulationResult run = test::run(low, "mass:1kg", 0.1);
+    EXPECT_FALSE(test::events_of(run, "key_bottom").empty()) << mm << " mm";
+  }
 }
 
 // The upright's blow adjuster is its hammer rest rail: moving it toward the strings shortens the
