@@ -9,6 +9,7 @@
 
 #include "action_style.h"
 #include "label_placer.h"
+#include "setting_names.h"
 
 namespace pat::ui {
 namespace {
@@ -346,7 +347,8 @@ void ActionView::paint_frame(QPainter& painter) {
     QColor colour;
     bool small;
     bool keep_clear = false;         // of the drawing (LabelPlacer::place_clear)
-    std::optional<QPointF> feature;  // a small part the label names: joined by a leader line
+    std::optional<QPointF> feature;  // the part the label names: joined by a leader line when
+                                     // the label had to move away from it
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -370,7 +372,7 @@ void ActionView::paint_frame(QPainter& painter) {
     draw_arrow(painter, at, tip, contact_colour());
     if (r.normal_force >= 0.5)
       force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
-                              contact_colour().darker(130), true});
+                              contact_colour().darker(130), true, false, tip});
   }
   // key front: where the finger presses (drag it to play the key)
   const QPointF key_front = to_screen(body_point(model.landmarks.key, model.landmarks.key_front));
@@ -424,12 +426,13 @@ void ActionView::paint_frame(QPainter& painter) {
     const bool tall = size.y() > 4.0 * size.x();
     const QPointF anchor =
         tall ? to_screen(highest) + QPointF(6, 4) : to_screen(lowest) + QPointF(-10, 15);
-    const Label label{anchor, QString::fromStdString(f.name), QColor(70, 70, 70), true, true};
+    const Label label{anchor, QString::fromStdString(f.name),    QColor(70, 70, 70), true,
+                      true,   to_screen(tall ? highest : lowest)};
     (f.adjuster.empty() && f.name != "string" ? rail_labels : fixture_labels).push_back(label);
   }
   if (backcheck_label_at)
-    fixture_labels.push_back(
-        {*backcheck_label_at + QPointF(6, -4), tr("backcheck"), QColor(70, 70, 70), true, true});
+    fixture_labels.push_back({*backcheck_label_at + QPointF(6, -4), tr("backcheck"),
+                              QColor(70, 70, 70), true, true, *backcheck_label_at});
   // what each regulation adjuster turns, named as in its description ("capstan (key pilot)",
   // "jack regulating screw"), where it acts, in the close-ups (the whole action has no room for
   // them); those drawn as fixtures or as the backcheck are named already
@@ -441,8 +444,7 @@ void ActionView::paint_frame(QPainter& painter) {
     for (const AdjusterEffect& effect : adjuster.effects)
       named = named || (effect.target == AdjusterEffect::Target::ContactB &&
                         effect.index == model.landmarks.check_contact);
-    const QString name =
-        QString::fromStdString(adjuster.description.substr(0, adjuster.description.find(':')));
+    const QString name = adjuster_part(adjuster);
     if (named || name.isEmpty() || adjuster.effects.empty()) continue;
     const AdjusterEffect& effect = adjuster.effects.front();
     std::optional<QPointF> at;
@@ -467,15 +469,19 @@ void ActionView::paint_frame(QPainter& painter) {
   if (escapement >= 0) {
     const Contact& c = model.contacts[escapement];
     const int hammer = model.landmarks.hammer;
-    std::optional<QPointF> at;
-    if (c.body_a == hammer && c.radius_a > 0.0)
-      at = to_screen(body_point(hammer, c.center_a)) + QPointF(c.radius_a * scale_ + 3, -6);
-    else if (c.body_b == hammer && c.shape == ContactShape::CircleSegment)
-      at = to_screen(body_point(hammer, 0.5 * (c.segment_start + c.segment_end))) + QPointF(6, -6);
+    std::optional<QPointF> part, at;  // the part's point, and the label's anchor beside it
+    if (c.body_a == hammer && c.radius_a > 0.0) {
+      part = to_screen(body_point(hammer, c.center_a));
+      at = *part + QPointF(c.radius_a * scale_ + 3, -6);
+    } else if (c.body_b == hammer && c.shape == ContactShape::CircleSegment) {
+      part = to_screen(body_point(hammer, 0.5 * (c.segment_start + c.segment_end)));
+      at = *part + QPointF(6, -6);
+    }
     if (at)
-      fixture_labels.insert(fixture_labels.begin(),
-                            {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
-                             body_colour(model.bodies[hammer].name).darker(250), true});
+      fixture_labels.insert(
+          fixture_labels.begin(),
+          {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
+           body_colour(model.bodies[hammer].name).darker(250), true, false, part});
   }
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());

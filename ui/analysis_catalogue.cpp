@@ -14,6 +14,7 @@
 #include "core/format.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
+#include "setting_names.h"
 #include "sim/key_travel.h"
 #include "sim/simulation.h"
 
@@ -55,7 +56,7 @@ AnalysisEntry technician_measurements() {
       AnalysisResult result;
       int off = 0;
       for (const SettingReading& r : readings) {
-        const QString name = QString::fromStdString(r.name);
+        const QString name = setting_title(r.name);
         const QString unit = QString::fromStdString(r.unit);
         if (!r.problem.empty()) {
           result.table.push_back(
@@ -66,12 +67,18 @@ AnalysisEntry technician_measurements() {
         }
         const bool ok = r.within_tolerance();
         off += !ok;
+        // as the regulation panel reads them: millimetres to 0.01 mm, a fraction to 0.001
+        const int decimals = r.unit == "mm" ? 2 : 3;
+        auto fixed = [decimals](double x) {
+          return QString::number(std::abs(x) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : x, 'f',
+                                 decimals);
+        };
         result.table.push_back({name,
                                 QObject::tr("%1 (target %2 ± %3)%4")
-                                    .arg(number(r.measured))
-                                    .arg(number(r.target))
-                                    .arg(number(r.tolerance))
-                                    .arg(ok ? QString() : QObject::tr("  OUT")),
+                                    .arg(fixed(r.measured))
+                                    .arg(fixed(r.target))
+                                    .arg(fixed(r.tolerance))
+                                    .arg(ok ? QString() : QObject::tr(", out of tolerance")),
                                 unit});
       }
       result.summary = off == 0 ? QObject::tr("Every setting is within its tolerance.")

@@ -183,13 +183,33 @@ void PlotPanel::fit_values() {
   const double span = std::max(minimum_value_span_, 1e-9);
   if (range.size() < span) {
     const double half = (minimum_value_span_ > 0.0 ? minimum_value_span_ : 2.0) / 2.0;
+    const bool never_negative = range.lower >= 0.0;
     range = QCPRange(range.center() - half, range.center() + half);
+    // data that never go below zero (a force at rest, a gap) keep a band that does not either
+    if (never_negative && range.lower < 0.0) range = QCPRange(0.0, range.size());
   }
-  // headroom at the top for the legend (none when it is under the plot)
-  const int legend_rows = (series_count() + 2) / 3;
+  // headroom at the top for the legend (none when it is under the plot): as many value units as
+  // the legend's height in pixels takes of the plot area, so that no trace runs under it; before
+  // the plot has its size, 30 % of the range per legend row
   const double pad = 0.08 * range.size();
-  const double headroom = legend_below_ ? 0.0 : 0.3 * legend_rows * range.size();
+  const double shown = range.size() + 2.0 * pad;
+  double headroom = 0.0;
+  if (!legend_below_) {
+    constexpr int kLegendMarginPx = 8;  // the inset's gap to the frame, and some air
+    const double legend_px = plot_->legend->minimumOuterSizeHint().height() + kLegendMarginPx;
+    const double area_px = plot_->axisRect()->height();
+    const int legend_rows = (series_count() + 2) / 3;
+    headroom = area_px > 2.0 * legend_px ? shown * legend_px / (area_px - legend_px)
+                                         : 0.3 * legend_rows * range.size();
+  }
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
+  // as many ticks as the plot's size gives room for: their labels must not run together on a
+  // short or narrow plot (a tick label is about 14 px high and up to 40 px wide)
+  const double height_px = plot_->axisRect()->height(), width_px = plot_->axisRect()->width();
+  if (height_px > 0.0 && width_px > 0.0) {
+    plot_->yAxis->ticker()->setTickCount(std::clamp(static_cast<int>(height_px / 30.0), 2, 6));
+    plot_->xAxis->ticker()->setTickCount(std::clamp(static_cast<int>(width_px / 60.0), 2, 8));
+  }
 }
 
 void PlotPanel::fit_all() {

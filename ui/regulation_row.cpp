@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "setting_names.h"
+
 namespace pat::ui {
 namespace {
 
@@ -33,10 +35,16 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   if (setting) setting_ = *setting;
   const QString tip = QString::fromStdString(
       adjuster.description + (setting ? "\nmeasured: " + setting->measurement : std::string()));
-  name_label_ = new QLabel(QString::fromStdString(adjuster.name), parent);
-  QFont bold = name_label_->font();
-  bold.setBold(true);
-  name_label_->setFont(bold);
+  // the setting in bold, and under it, smaller, the part the technician turns for it
+  const QString part = adjuster_part(adjuster);
+  name_label_ = new QLabel(parent);
+  name_label_->setTextFormat(Qt::RichText);
+  name_label_->setText(
+      QStringLiteral("<b>%1</b>").arg(setting_title(adjuster.name).toHtmlEscaped()) +
+      (part.isEmpty() ? QString()
+                      : QStringLiteral("<br><span style=\"color:#555; font-size:small\">"
+                                       "%1</span>")
+                            .arg(part.toHtmlEscaped())));
   name_label_->setToolTip(tip);
 
   slider_ = new QSlider(Qt::Horizontal, parent);

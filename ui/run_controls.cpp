@@ -1,12 +1,14 @@
 #include "run_controls.h"
 
 #include <QComboBox>
+#include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "input_spec_form.h"
 #include "playback_controller.h"
@@ -85,7 +87,13 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   connect(speed_, &QComboBox::currentIndexChanged, this,
           [this](int i) { controller_->set_speed(speeds()[i]); });
   factor_ = new QLabel(this);
-  factor_->setMinimumWidth(110);
+  // a fixed width, the widest reading's: the toolbar does not shift as the reading changes
+  const QFontMetrics metrics(factor_->font());
+  int widest = 0;
+  for (const QString& sample : {tr("achieved real time"), tr("achieved 1/1000"),
+                                tr("achieved 1/9.9"), tr("achieved ×9.99"), tr("achieved —")})
+    widest = std::max(widest, metrics.horizontalAdvance(sample));
+  factor_->setFixedWidth(widest + 8);
   factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
   bottom->addWidget(factor_);
   connect(controller_, &PlaybackController::realtimeFactorChanged, this, [this](double f) {
@@ -95,7 +103,8 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
     else if (f >= 0.995)
       factor_->setText(f < 1.005 ? tr("achieved real time") : tr("achieved ×%1").arg(f, 0, 'f', 2));
     else
-      factor_->setText(tr("achieved 1/%1").arg(1.0 / f, 0, 'f', 1.0 / f < 10.0 ? 1 : 0));
+      // one decimal below 10 (what rounds to 10.0 reads "10", like the speed list)
+      factor_->setText(tr("achieved 1/%1").arg(1.0 / f, 0, 'f', 1.0 / f < 9.95 ? 1 : 0));
   });
 
   bottom->addSpacing(12);

@@ -50,7 +50,9 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
   std::vector<AnalysisMarker> frequency_marker;
   if (r.max_frequency_hz)
     frequency_marker.push_back(
-        {*r.max_frequency_hz, QObject::tr("maximum %1 Hz").arg(number(*r.max_frequency_hz))});
+        {*r.max_frequency_hz,
+         (r.limit_found ? QObject::tr("maximum %1 Hz") : QObject::tr("no limit up to %1 Hz"))
+             .arg(number(*r.max_frequency_hz))});
   if (r.alternating_from_hz)
     frequency_marker.push_back(
         {*r.alternating_from_hz,

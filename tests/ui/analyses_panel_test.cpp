@@ -159,7 +159,9 @@ void AnalysesPanelTest::table_exports_as_csv() {
   const QStringList lines = QString::fromUtf8(file.readAll()).split('\n', Qt::SkipEmptyParts);
   QCOMPARE(lines.first(), QString("quantity,value,unit"));
   QCOMPARE(lines.size(), panel->table()->rowCount() + 1);
-  QVERIFY(lines.join('\n').contains("hammer_blow"));
+  // the settings named and read as in the regulation panel: "hammer blow", to 0.01 mm
+  QVERIFY2(lines.join('\n').contains("hammer blow,45.01 (target 45.00 ± 0.05),mm"),
+           qPrintable(lines.join('\n')));
   QVERIFY_THROWS_EXCEPTION(pat::InputError, panel->write_table_csv("/nonexistent/dir/t.csv"));
 }
 
