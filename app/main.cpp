@@ -77,21 +77,38 @@ per cycle against frequency, each setting's effect); the format comes from the e
 .png .pdf .svg, or .csv for the plotted columns (plots over one x axis).
 --view frames the whole action (default) or a close-up of the escapement (jack, knuckle or
 butt, let-off button) or of the checking (hammer head and tail, backcheck); View menu, Ctrl+1-3.
---screenshot PNG opens the window, plays a blow until just after escapement, saves a
-screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
+--screenshot PNG opens the window, plays a blow until the hammer is 2.5 mm from the string,
+saves a screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";
 
+// What a note of kUsage (from "input SPEC:" on) explains, as its entries spell it: "SPEC",
+// "--effect", or the option the note starts with ("--plot", "--view", "--screenshot").
+std::string note_subject(const std::string& first_line) {
+  if (first_line.rfind("input SPEC", 0) == 0) return "SPEC";
+  if (first_line.rfind("effects (--effect", 0) == 0) return "--effect";
+  return first_line.substr(0, first_line.find(' '));
+}
+
 // The usage lines of one subcommand (its entries in kUsage with their continuation lines),
-// then the shared notes from "input SPEC:" on; empty if kUsage has no entry for it.
+// then those of the shared notes (from "input SPEC:" on) that explain something its entries
+// name; empty if kUsage has no entry for it.
 std::string subcommand_usage(const std::string& command) {
   std::istringstream in(kUsage);
-  std::string line, entries, notes;
+  std::string line, entries;
+  std::vector<std::string> notes;  // each with its continuation lines
   bool in_entry = false, in_notes = false;
   const std::string head = "  pianoaction " + command + " ";
   while (std::getline(in, line)) {
     if (line.rfind("input SPEC:", 0) == 0) in_notes = true;
     if (in_notes) {
-      notes += line + "\n";
+      if (line.empty()) continue;
+      // a note starts with what it explains; its other lines continue it
+      const bool starts_note = line.rfind("input SPEC", 0) == 0 ||
+                               line.rfind("effects (--effect", 0) == 0 || line.rfind("--", 0) == 0;
+      if (starts_note || notes.empty())
+        notes.push_back(line + "\n");
+      else
+        notes.back() += line + "\n";
       continue;
     }
     if (line.rfind("  pianoaction ", 0) == 0)
@@ -100,7 +117,13 @@ std::string subcommand_usage(const std::string& command) {
       in_entry = false;
     if (in_entry) entries += line + "\n";
   }
-  return entries.empty() ? std::string() : "usage:\n" + entries + "\n" + notes;
+  if (entries.empty()) return std::string();
+  std::string text = "usage:\n" + entries;
+  for (const std::string& note : notes) {
+    const std::string subject = note_subject(note.substr(0, note.find('\n')));
+    if (entries.find(subject) != std::string::npos) text += "\n" + note;
+  }
+  return text;
 }
 
 bool asks_for_help(const std::vector<std::string>& args) {

@@ -62,9 +62,10 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(sensitivity_plots(result, options.step_mm), !cl.has("--json"));
   if (!out_path.empty()) {
-    // one row per setting and side: the setting's measured value and every metric
+    // one row per setting and side: the setting's measured value (in its own unit, named in the
+    // 'settings' metadata: mm, or a fraction for a damper lift) and every metric
     CsvTable table;
-    table.columns = {"setting_index", "offset_mm", "measured"};
+    table.columns = {"setting_index", "offset_mm", "measured_in_setting_unit"};
     for (const std::string& m : result.metrics) table.columns.push_back(m);
     for (std::size_t s = 0; s < result.rows.size(); ++s) {
       const SensitivityRow& row = result.rows[s];
@@ -78,7 +79,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
     std::string names;
     for (std::size_t s = 0; s < result.rows.size(); ++s) {
       if (s > 0) names += ' ';
-      names += std::to_string(s) + "=" + result.rows[s].setting;
+      names += std::to_string(s) + "=" + result.rows[s].setting + "(" + result.rows[s].unit + ")";
     }
     table.metadata["settings"] = names;
     table.metadata["action"] = model.kind;  // as in every CSV: grand or upright

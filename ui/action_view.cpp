@@ -380,15 +380,27 @@ void ActionView::paint_frame(QPainter& painter) {
   painter.setBrush(Qt::NoBrush);
   painter.drawEllipse(key_front, 9.0, 9.0);
 
-  // time and gap readout
+  // time and gap readout, in a band of its own along the top (parts framed outside a close-up's
+  // region pass under it); shorter words when the view is too narrow for the full ones
   QFont big = font();
   big.setPointSizeF(big.pointSizeF() + 3);
   big.setBold(true);
   painter.setFont(big);
-  const QString readout = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
-                              .arg(frame_->t * 1e3, 0, 'f', 2)
-                              .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
-                              .arg(frame_->finger_force_n, 0, 'f', 1);
+  painter.setPen(Qt::NoPen);
+  painter.setBrush(QColor(250, 250, 246));
+  painter.drawRect(QRectF(0, 0, width(), kReadoutBandPx));
+  painter.setPen(QPen(QColor(215, 215, 210), 1.0));
+  painter.drawLine(QPointF(0, kReadoutBandPx), QPointF(width(), kReadoutBandPx));
+  const double t_ms = frame_->t * 1e3;
+  QString readout = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
+                        .arg(t_ms, 0, 'f', 2)
+                        .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
+                        .arg(frame_->finger_force_n, 0, 'f', 1);
+  if (QFontMetricsF(big).horizontalAdvance(readout) > width() - 20)
+    readout = tr("%1 ms  gap %2 mm  %3 N")
+                  .arg(t_ms, 0, 'f', 1)
+                  .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
+                  .arg(frame_->finger_force_n, 0, 'f', 1);
   draw_label(painter, QPointF(10, 24), readout, QColor(20, 20, 20));
   if (!labels_) return;
 

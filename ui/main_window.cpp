@@ -356,6 +356,9 @@ void MainWindow::build_practice() {
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   scroll->setMinimumWidth(practice_->sizeHint().width() + 24);
   addDockWidget(Qt::RightDockWidgetArea, practice_dock_);
+  // a tab beside the regulation and the analyses: the whole height of the dock area, not a
+  // third of it under them
+  tabifyDockWidget(regulation_dock_, practice_dock_);
   practice_dock_->hide();
   connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
   // the regulation panel shows true adjuster positions and measured values, the analyses

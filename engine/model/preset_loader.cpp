@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -29,6 +30,11 @@ std::string type_name(const json& value) {
   return "null";
 }
 
+/// The JSON path of field `key` of the object at `path` ("" is the root: "schema", not ".schema").
+std::string child(const std::string& path, const std::string& key) {
+  return path.empty() ? key : path + "." + key;
+}
+
 /// Reads fields with their JSON path, so that every message names the field.
 class PresetReader {
  public:
@@ -52,9 +58,9 @@ class PresetReader {
 
   double number(const json& object, const std::string& path, const char* key) const {
     const json& value = field(object, path, key);
-    if (!value.is_number()) fail(path + "." + key, "expected a number, got " + type_name(value));
+    if (!value.is_number()) fail(child(path, key), "expected a number, got " + type_name(value));
     const double x = value.get<double>();
-    if (!std::isfinite(x)) fail(path + "." + key, "must be a finite number");
+    if (!std::isfinite(x)) fail(child(path, key), "must be a finite number");
     return x;
   }
 
@@ -65,7 +71,7 @@ class PresetReader {
 
   double positive(const json& object, const std::string& path, const char* key) const {
     const double x = number(object, path, key);
-    if (x <= 0.0) fail(path + "." + key, "must be positive (got " + format(x) + ")");
+    if (x <= 0.0) fail(child(path, key), "must be positive (got " + format(x) + ")");
     return x;
   }
 
@@ -73,19 +79,19 @@ class PresetReader {
                      double fallback) const {
     if (!optional(object, key)) return fallback;
     const double x = number(object, path, key);
-    if (x < 0.0) fail(path + "." + key, "must not be negative (got " + format(x) + ")");
+    if (x < 0.0) fail(child(path, key), "must not be negative (got " + format(x) + ")");
     return x;
   }
 
   std::string text(const json& object, const std::string& path, const char* key) const {
     const json& value = field(object, path, key);
-    if (!value.is_string()) fail(path + "." + key, "expected a string, got " + type_name(value));
+    if (!value.is_string()) fail(child(path, key), "expected a string, got " + type_name(value));
     return value.get<std::string>();
   }
 
   const json& array(const json& object, const std::string& path, const char* key) const {
     const json& value = field(object, path, key);
-    if (!value.is_array()) fail(path + "." + key, "expected an array, got " + type_name(value));
+    if (!value.is_array()) fail(child(path, key), "expected an array, got " + type_name(value));
     return value;
   }
 
@@ -96,12 +102,12 @@ class PresetReader {
   }
 
   Vec2 point(const json& object, const std::string& path, const char* key, double scale) const {
-    return point(field(object, path, key), path + "." + key, scale);
+    return point(field(object, path, key), child(path, key), scale);
   }
 
   Vec2 unit(const json& object, const std::string& path, const char* key) const {
     const Vec2 v = point(object, path, key, 1.0);
-    if (v.norm() < 1e-9) fail(path + "." + key, "direction must not be zero");
+    if (v.norm() < 1e-9) fail(child(path, key), "direction must not be zero");
     return v.normalized();
   }
 
@@ -109,7 +115,7 @@ class PresetReader {
     std::vector<Vec2> points;
     const json& list = array(object, path, key);
     for (std::size_t i = 0; i < list.size(); ++i)
-      points.push_back(point(list[i], path + "." + key + "[" + std::to_string(i) + "]", kMm));
+      points.push_back(point(list[i], child(path, key) + "[" + std::to_string(i) + "]", kMm));
     return points;
   }
 
@@ -141,11 +147,11 @@ int body_reference(const PresetReader& r, const ActionModel& model, const json& 
                    const std::string& path, const char* key) {
   const json& value = r.field(object, path, key);
   if (value.is_null()) return -1;
-  if (!value.is_string()) r.fail(path + "." + key, "expected a body name or null for the frame");
+  if (!value.is_string()) r.fail(child(path, key), "expected a body name or null for the frame");
   const std::string name = value.get<std::string>();
   if (name == "frame") return -1;
   const int index = model.body_index(name);
-  if (index < 0) r.fail(path + "." + key, "unknown body '" + name + "'");
+  if (index < 0) r.fail(child(path, key), "unknown body '" + name + "'");
   return index;
 }
 
@@ -436,7 +442,7 @@ int contact_reference(const PresetReader& r, const ActionModel& model, const jso
                       const std::string& path, const char* key) {
   const std::string name = r.text(object, path, key);
   const int index = model.contact_index(name);
-  if (index < 0) r.fail(path + "." + key, "unknown contact '" + name + "'");
+  if (index < 0) r.fail(child(path, key), "unknown contact '" + name + "'");
   return index;
 }
 
@@ -459,6 +465,9 @@ void read_landmarks(const PresetReader& r, const json& root, ActionModel& model)
 }
 
 std::string read_file(const std::string& path) {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(located_message(path, "", "is a folder, not a preset file"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(located_message(path, "", "cannot open the preset file"));
   std::ostringstream text;
@@ -475,6 +484,8 @@ std::string preset_directory() {
 
 ActionModel parse_action(const std::string& json_text, const std::string& source_name) {
   json root;
+  if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
+    throw InputError(located_message(source_name, "", "the preset file is empty"));
   try {
     root = json::parse(json_text);
   } catch (const json::parse_error& e) {

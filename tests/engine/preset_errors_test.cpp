@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <initializer_list>
 #include <nlohmann/json.hpp>
@@ -244,6 +245,23 @@ TEST(PresetErrors, MissingFileNamesThePath) {
   } catch (const InputError& e) {
     expect_contains_all(e.what(), {"no_such_preset.json"});
   }
+}
+
+// A folder or an empty file is named as what it is, not as JSON malformed at line 1, column 1;
+// a field of the top-level object is named without a leading dot.
+TEST(PresetErrors, AFolderAnEmptyFileAndARootFieldAreNamedPlainly) {
+  const std::string folder = ::testing::TempDir() + "/folder.json";
+  std::filesystem::create_directories(folder);
+  try {
+    load_action(folder);
+    FAIL() << "load_action accepted a folder";
+  } catch (const InputError& e) {
+    expect_contains_all(e.what(), {"folder.json: is a folder, not a preset file"});
+  }
+  expect_contains_all(parse_error(" \n"), {kBrokenName, "the preset file is empty"});
+  const std::string schema = parse_error(R"({"schema": "one"})");
+  expect_contains_all(schema, {": schema: expected a number, got a string"});
+  EXPECT_EQ(schema.find(".schema"), std::string::npos) << schema;
 }
 
 TEST(PresetShipped, BothLoadByNameAndByPath) {
