@@ -1,6 +1,7 @@
 #include "main_window.h"
 
 #include <QActionGroup>
+#include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
 #include <QDockWidget>
@@ -288,6 +289,10 @@ void MainWindow::build_menus() {
   });
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
+  large_text_action_ = view->addAction(tr("Larger &text (for a class)"));
+  large_text_action_->setCheckable(true);
+  large_text_action_->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
+  connect(large_text_action_, &QAction::toggled, this, &MainWindow::set_large_text);
   QAction* labels = view->addAction(tr("Show &labels"));
   labels->setCheckable(true);
   labels->setChecked(true);
@@ -319,6 +324,19 @@ void MainWindow::build_menus() {
   view->addAction(tr("Close-up: c&hecking (hammer head and tail, backcheck)"),
                   QKeySequence(tr("Ctrl+3")), this,
                   [this] { view_->set_focus(ViewFocus::checking); });
+}
+
+void MainWindow::set_large_text(bool on) {
+  if (large_text_action_ && large_text_action_->isChecked() != on) {
+    large_text_action_->setChecked(on);  // its toggled signal comes back here
+    return;
+  }
+  if (base_point_size_ <= 0.0) base_point_size_ = QApplication::font().pointSizeF();
+  large_text_ = on;
+  QFont font = QApplication::font();
+  font.setPointSizeF(base_point_size_ * (on ? kClassTextScale : 1.0));
+  QApplication::setFont(font);
+  QSettings().setValue("view/large_text", on);
 }
 
 void MainWindow::build_shortcuts() {
@@ -360,6 +378,7 @@ void MainWindow::build_practice() {
   // third of it under them
   tabifyDockWidget(regulation_dock_, practice_dock_);
   practice_dock_->hide();
+  regulation_dock_->raise();  // the regulation tab in front, as before the practice tab joined
   connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
   // the regulation panel shows true adjuster positions and measured values, the analyses
   // measure every setting against its target: both hidden while an exercise runs; closing the

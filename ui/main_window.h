@@ -79,6 +79,10 @@ class MainWindow : public QMainWindow {
   /// Shows the practice dock; hiding it ends a running exercise (back to the regulated action
   /// and the regulation panel).
   void show_practice(bool on);
+  /// Larger text for a class (View menu): the application's font, and with it every label,
+  /// plot and panel, at kClassTextScale of its size; remembered for the next start.
+  void set_large_text(bool on);
+  bool large_text() const { return large_text_; }
   /// Writes the current model (deregulated or not) as a preset. Throws InputError.
   void save_preset(const std::string& path);
   /// The message shown over the action (empty when hidden).
@@ -89,6 +93,7 @@ class MainWindow : public QMainWindow {
   void closeEvent(QCloseEvent* event) override;
 
  private:
+  static constexpr double kClassTextScale = 1.35;  // large enough to read from the back of a room
   void build_menus();
   void build_shortcuts();
   void show_banner(const QString& text);
@@ -112,6 +117,9 @@ class MainWindow : public QMainWindow {
   QSplitter* split_;
   ActionView* view_;
   PlotStack* plots_;
+  double base_point_size_ = 0.0;  // the application font's size at start, pt
+  bool large_text_ = false;
+  QAction* large_text_action_ = nullptr;
   RegulationPanel* regulation_;
   AnalysesPanel* analyses_;
   QDockWidget* analyses_dock_;

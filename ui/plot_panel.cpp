@@ -2,6 +2,7 @@
 
 #include <qcustomplot.h>
 
+#include <QEvent>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -30,17 +31,11 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   layout->addWidget(plot_);
   setMinimumHeight(120);
 
-  QFont axis_font = font();
-  axis_font.setPointSizeF(std::max(9.0, axis_font.pointSizeF()));
-  QFont label_font = axis_font;
-  label_font.setBold(true);
   // title above; the legend inside the plot, top right, over headroom left by fit_values()
   plot_->plotLayout()->insertRow(0);
-  plot_->plotLayout()->addElement(0, 0, new QCPTextElement(plot_, title, label_font));
-  QFont legend_font = axis_font;
-  legend_font.setPointSizeF(axis_font.pointSizeF() - 0.5);
+  title_element_ = new QCPTextElement(plot_, title);
+  plot_->plotLayout()->addElement(0, 0, title_element_);
   plot_->legend->setVisible(true);
-  plot_->legend->setFont(legend_font);
   plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
   plot_->legend->setBrush(QColor(255, 255, 255, 210));
   plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
@@ -50,10 +45,6 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   plot_->axisRect()->insetLayout()->setInsetAlignment(0, Qt::AlignRight | Qt::AlignTop);
   plot_->xAxis->setLabel(tr("time (s)"));
   plot_->yAxis->setLabel(y_title);
-  for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) {
-    axis->setLabelFont(label_font);
-    axis->setTickLabelFont(axis_font);
-  }
   plot_->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
   plot_->axisRect()->setRangeDrag(Qt::Horizontal);
   plot_->axisRect()->setRangeZoom(Qt::Horizontal);
@@ -78,11 +69,12 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   readout_->setPositionAlignment(Qt::AlignLeft | Qt::AlignTop);
   readout_->position->setType(QCPItemPosition::ptAxisRectRatio);
   readout_->position->setCoords(0.01, 0.02);
-  readout_->setFont(axis_font);
+
   readout_->setBrush(QColor(255, 255, 255, 220));
   readout_->setPadding(QMargins(4, 2, 4, 2));
   readout_->setTextAlignment(Qt::AlignLeft);
   readout_->setVisible(false);
+  apply_fonts();
 
   connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
           [this](const QCPRange& range) {
@@ -162,6 +154,37 @@ std::pair<double, double> PlotPanel::x_range() const {
 
 std::pair<double, double> PlotPanel::value_range() const {
   return {plot_->yAxis->range().lower, plot_->yAxis->range().upper};
+}
+
+void PlotPanel::apply_fonts() {
+  // from the widget's font (the application's, larger for a class: View menu), 9 pt at least
+  QFont axis_font = font();
+  axis_font.setPointSizeF(std::max(9.0, axis_font.pointSizeF()));
+  QFont label_font = axis_font;
+  label_font.setBold(true);
+  QFont legend_font = axis_font;
+  legend_font.setPointSizeF(axis_font.pointSizeF() - 0.5);
+  title_element_->setFont(label_font);
+  plot_->legend->setFont(legend_font);
+  for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) {
+    axis->setLabelFont(label_font);
+    axis->setTickLabelFont(axis_font);
+  }
+  readout_->setFont(axis_font);
+  if (readout_row_) readout_row_->setFont(axis_font);
+  for (auto& [line, text] : markers_) text->setFont(axis_font);
+}
+
+double PlotPanel::tick_label_point_size() const {
+  return plot_->xAxis->tickLabelFont().pointSizeF();
+}
+
+void PlotPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() != QEvent::FontChange) return;
+  apply_fonts();
+  fit_values();  // the legend's height, and so its headroom, changed with the font
+  request_replot();
 }
 
 void PlotPanel::fit_values() {

@@ -76,6 +76,10 @@ class PlotPanel : public QWidget {
   /// Replots at the next event-loop turn (several calls coalesce into one).
   void request_replot();
 
+  /// The axes' tick label size (pt): the widget's font's, 9 pt at least; it follows a change of
+  /// the font (the View menu's larger text for a class).
+  double tick_label_point_size() const;
+
   void set_cursors_enabled(bool enabled);
   /// Places cursor 0 (A) or 1 (B) at time t.
   void set_cursor(int which, double t);
@@ -98,7 +102,12 @@ class PlotPanel : public QWidget {
   /// A replot finished; `ms` is the wall time it took (QCustomPlot's own measure).
   void replotted(double ms);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  /// Sets the title, axis, legend, readout and marker fonts from the widget's font.
+  void apply_fonts();
   void update_cursor_items();
   /// Takes the legend out of the plot area into a row under it (categories, many series).
   void move_legend_below();
@@ -119,6 +128,7 @@ class PlotPanel : public QWidget {
   std::vector<Series> series_;
   std::vector<std::pair<QCPItemStraightLine*, QCPItemText*>> markers_;
   QCPItemStraightLine* cursor_lines_[2] = {nullptr, nullptr};
+  QCPTextElement* title_element_ = nullptr;
   QCPItemText* readout_ = nullptr;         ///< hidden: the anchor of the markers' labels
   QCPTextElement* readout_row_ = nullptr;  ///< the cursor readout, while there is one
   QCPItemStraightLine* time_mark_line_ = nullptr;

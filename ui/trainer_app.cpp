@@ -16,6 +16,7 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
   QApplication::setOrganizationName("PianoActionTrainer");
   QApplication::setApplicationName("pianoaction");
   MainWindow window;
+  if (QSettings().value("view/large_text", false).toBool()) window.set_large_text(true);
   std::string action = options.action;
   if (!options.action_given)
     action = QSettings().value("last_preset", "grand").toString().toStdString();

@@ -9,6 +9,8 @@
 #include "label_placer.h"
 #include "main_window.h"
 #include "playback_controller.h"
+#include "plot_panel.h"
+#include "plot_stack.h"
 #include "ui_test_support.h"
 
 using pat::ui::ActionView;
@@ -24,6 +26,7 @@ class ActionViewTest : public QObject {
   void dragging_the_key_front_down_plays_the_key();
   void close_ups_frame_the_escapement_and_the_checking();
   void labels_avoid_each_other_and_kept_clear_ones_the_drawing();
+  void larger_text_for_a_class_enlarges_the_plots_and_panels();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -218,6 +221,29 @@ void ActionViewTest::labels_avoid_each_other_and_kept_clear_ones_the_drawing() {
   // with nothing drawn, place_clear() takes the first position like place()
   pat::ui::LabelPlacer empty{QRectF(0, 0, 800, 600)};
   QCOMPARE(*empty.place_clear(anchor, text, metrics), anchor);
+}
+
+// View > Larger text: the application's font, and with it the plots' tick labels and the
+// panels' text, grows by the class scale; turned off, everything is as before.
+void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  window.open_action("grand");
+  QVERIFY(wait_until([&] { return window.view()->frame() != nullptr; }));
+  const pat::ui::PlotPanel* plot = window.plots()->panels().front();
+  const double ticks = plot->tick_label_point_size();
+  const double view_text = window.view()->font().pointSizeF();
+  window.set_large_text(true);
+  QVERIFY(window.large_text());
+  // the widgets hear of the application's new font through events; the 9 pt floor of the tick
+  // labels may take part of the 1.35 scale
+  QVERIFY2(wait_until([&] { return plot->tick_label_point_size() > 1.2 * ticks; }),
+           qPrintable(QString("%1 → %2 pt").arg(ticks).arg(plot->tick_label_point_size())));
+  QVERIFY(window.view()->font().pointSizeF() > 1.3 * view_text);
+  window.set_large_text(false);
+  QVERIFY(wait_until([&] { return plot->tick_label_point_size() == ticks; }));
+  QCOMPARE(window.view()->font().pointSizeF(), view_text);
 }
 
 QTEST_MAIN(ActionViewTest)
