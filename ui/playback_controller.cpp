@@ -159,7 +159,7 @@ void PlaybackController::set_speed(double speed) {
 }
 
 double PlaybackController::sample_interval() const {
-  // about four frames per redraw, from one integrator step (1e-5 s) up to 0.2 ms
+  // about four frames per redraw, from 1e-5 s (two of the window's integrator steps) up to 0.2 ms
   return std::clamp(speed_ / 240.0, 1e-5, 2e-4);
 }
 

@@ -8,6 +8,11 @@
 
 namespace pat {
 
+/// A w2 step (s) that resolves a key held after a blow: the hammer's tail wedged on the grand's
+/// backcheck, held by the leather's stiff regularized friction (README, Limits). At the default
+/// 1e-5 s w2 chatters there; from this step on it agrees with the references. The window uses it.
+inline constexpr double kW2HeldKeyStepS = 5e-6;
+
 struct IntegratorOptions {
   double fixed_step_s = 1e-5;  ///< w2: step size
   /// w2: Jacobian age limit in steps (it is also refreshed on a regime change)

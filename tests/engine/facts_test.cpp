@@ -5,6 +5,7 @@
 #include <cmath>
 #include <set>
 
+#include "integrators/integrator_factory.h"
 #include "model/model_edits.h"
 #include "test_support.h"
 
@@ -170,6 +171,40 @@ TEST(Integrators, W2OnAPrescribedKeyMotionAgreesWithTheReference) {
               finger.range);
   EXPECT_LT(hammer.error, 1e-3 * hammer.range);
   EXPECT_LT(finger.error, 1e-2 * finger.range);
+}
+
+// A key held after a blow (the window's commonest state): the grand's hammer tail wedged on the
+// backcheck is held by the leather's stiff regularized friction. At the window's step
+// (kW2HeldKeyStepS) the W-method agrees with RODAS4 at rtol 1e-8 over the held 0.2 s, in the
+// hammer angle and in the backcheck force; at the default 1e-5 s it chatters (README, Limits),
+// which the last check asserts so that a fix shows up here. Measured: hammer 0.0002 deg, the
+// backcheck force 0.48 N of its 42 N range (1.1 %); at the default step 21.7 N (51 %). The
+// bounds: 0.01 deg (under a pixel of the drawn hammer at any zoom a class uses) and 10 % of the
+// range for the force (the chatter is five times that).
+TEST(Integrators, W2AtTheWindowStepHoldsTheCaughtHammerLikeTheReference) {
+  const ActionModel model = test::shipped("grand");
+  const std::string held = "force:pulse:20:1000";
+  constexpr double kDuration = 0.2;  // s: caught at about 30 ms, held from then on
+  const SimulationResult reference = test::run(model, held, kDuration, "rodas", 1e-8);
+  const RestState rest = find_rest_state(model);
+  const auto input = parse_input_spec(held, input_context(model, rest));
+  SimulationOptions options;
+  options.duration_s = kDuration;
+  options.integrator_options.fixed_step_s = kW2HeldKeyStepS;
+  const SimulationResult window = simulate(model, input.get(), options, &rest);
+  const SimulationResult fallback = test::run(model, held, kDuration);  // the default 1e-5 s
+  ASSERT_EQ(window.status, "ok");
+  ASSERT_EQ(reference.status, "ok");
+  const ColumnError hammer = hammer_error(window, reference);
+  const ColumnError check = column_error(window, reference, "hammer_tail_backcheck_force_n");
+  const ColumnError coarse = column_error(fallback, reference, "hammer_tail_backcheck_force_n");
+  std::printf(
+      "held key: hammer %.4f deg of %.1f, backcheck force %.2f N of %.1f (default "
+      "step: %.2f N)\n",
+      hammer.error, hammer.range, check.error, check.range, coarse.error);
+  EXPECT_LT(hammer.error, 0.01);  // deg
+  EXPECT_LT(check.error, 0.1 * check.range);
+  EXPECT_GT(coarse.error, 0.3 * check.range);  // the default step's chatter (known limit)
 }
 
 }  // namespace
