@@ -6,6 +6,7 @@
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "action_style.h"
 #include "label_placer.h"
@@ -406,7 +407,7 @@ void ActionView::paint_frame(QPainter& painter) {
 
   // labels without overlap: parts first, then forces, then fixtures
   LabelPlacer placer{QRectF(rect())};
-  placer.reserve(QRectF(QPointF(8, 4), QFontMetricsF(big).size(0, readout) + QSizeF(8, 8)));
+  placer.reserve(QRectF(0, 0, width(), kReadoutBandPx));  // the readout's band, all of it
   for (const QPolygonF& shape : drawn_shapes) placer.avoid(shape);
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
@@ -416,8 +417,25 @@ void ActionView::paint_frame(QPainter& painter) {
     // the joint is called "lever" (DESIGN.md); a technician calls the part the repetition lever
     const QString name =
         body.name == "lever" ? tr("repetition lever") : QString::fromStdString(body.name);
-    labels.push_back({to_screen(body_point(b, centre)) + QPointF(-16, 5), name,
-                      body_colour(body.name).darker(250), false});
+    // at its middle; in a close-up that leaves the middle out of view (the grand's hammer in the
+    // escapement), at the midpoint of the outline's edge nearest to it within the view
+    QPointF anchor = to_screen(body_point(b, centre));
+    const QRectF shown = QRectF(rect()).adjusted(20, kReadoutBandPx + 20, -20, -20);
+    if (!shown.contains(anchor)) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t i = 0; i < body.outline.size(); ++i) {
+        const QPointF a = to_screen(body_point(b, body.outline[i]));
+        const QPointF c = to_screen(body_point(b, body.outline[(i + 1) % body.outline.size()]));
+        const QPointF middle = 0.5 * (a + c);
+        const QPointF d = middle - anchor;
+        const double distance = std::hypot(d.x(), d.y());
+        if (shown.contains(middle) && distance < best) {
+          best = distance;
+          anchor = middle;
+        }
+      }
+    }
+    labels.push_back({anchor + QPointF(-16, 5), name, body_colour(body.name).darker(250), false});
   }
   labels.push_back({key_front + QPointF(-24, 28), tr("finger"), QColor(0, 90, 170), false});
   // the adjustable fixtures (buttons, screws) and the string before the forces, rails last
