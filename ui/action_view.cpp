@@ -16,7 +16,16 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
-constexpr double kReadoutBandPx = 34.0;  // the time and gap readout's height at the top
+/// The time and gap readout's font: the view's, 3 pt larger, bold.
+QFont readout_font(QFont font) {
+  font.setPointSizeF(font.pointSizeF() + 3);
+  font.setBold(true);
+  return font;
+}
+/// The readout's band along the top (px): its line and some air (34 px at a 9 pt font).
+double readout_band_px(const QFont& view_font) {
+  return QFontMetricsF(readout_font(view_font)).height() + 14.0;
+}
 
 // text on a translucent white box, readable over any part (cheaper than a stroked text path)
 void draw_label(QPainter& painter, const QPointF& at, const QString& text, const QColor& colour) {
@@ -200,10 +209,11 @@ void ActionView::fit() {
   const double w = size.x() * (1 + 2 * margin), h = size.y() * (1 + 2 * margin);
   const Vec2 centre = 0.5 * (box->low + box->high);
   // below the time and gap readout drawn along the top
-  const double usable_height = std::max(1.0, height() - kReadoutBandPx);
+  const double band = readout_band_px(font());
+  const double usable_height = std::max(1.0, height() - band);
   scale_ = std::min(width() / w, usable_height / h);
   offset_ = QPointF(width() / 2.0 - scale_ * centre.x(),
-                    kReadoutBandPx + usable_height / 2.0 + scale_ * centre.y());
+                    band + usable_height / 2.0 + scale_ * centre.y());
   fitted_ = true;
 }
 
@@ -383,15 +393,14 @@ void ActionView::paint_frame(QPainter& painter) {
 
   // time and gap readout, in a band of its own along the top (parts framed outside a close-up's
   // region pass under it); shorter words when the view is too narrow for the full ones
-  QFont big = font();
-  big.setPointSizeF(big.pointSizeF() + 3);
-  big.setBold(true);
+  const QFont big = readout_font(font());
+  const double band = readout_band_px(font());
   painter.setFont(big);
   painter.setPen(Qt::NoPen);
   painter.setBrush(QColor(250, 250, 246));
-  painter.drawRect(QRectF(0, 0, width(), kReadoutBandPx));
+  painter.drawRect(QRectF(0, 0, width(), band));
   painter.setPen(QPen(QColor(215, 215, 210), 1.0));
-  painter.drawLine(QPointF(0, kReadoutBandPx), QPointF(width(), kReadoutBandPx));
+  painter.drawLine(QPointF(0, band), QPointF(width(), band));
   const double t_ms = frame_->t * 1e3;
   QString readout = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
                         .arg(t_ms, 0, 'f', 2)
@@ -402,12 +411,12 @@ void ActionView::paint_frame(QPainter& painter) {
                   .arg(t_ms, 0, 'f', 1)
                   .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
                   .arg(frame_->finger_force_n, 0, 'f', 1);
-  draw_label(painter, QPointF(10, 24), readout, QColor(20, 20, 20));
+  draw_label(painter, QPointF(10, 7.0 + QFontMetricsF(big).ascent()), readout, QColor(20, 20, 20));
   if (!labels_) return;
 
   // labels without overlap: parts first, then forces, then fixtures
   LabelPlacer placer{QRectF(rect())};
-  placer.reserve(QRectF(0, 0, width(), kReadoutBandPx));  // the readout's band, all of it
+  placer.reserve(QRectF(0, 0, width(), band));  // the readout's band, all of it
   for (const QPolygonF& shape : drawn_shapes) placer.avoid(shape);
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
@@ -419,15 +428,16 @@ void ActionView::paint_frame(QPainter& painter) {
         body.name == "lever" ? tr("repetition lever") : QString::fromStdString(body.name);
     // at its middle; in a close-up that leaves the middle out of view (the grand's hammer in the
     // escapement), at the midpoint of the outline's edge nearest to it within the view
-    QPointF anchor = to_screen(body_point(b, centre));
-    const QRectF shown = QRectF(rect()).adjusted(20, kReadoutBandPx + 20, -20, -20);
-    if (!shown.contains(anchor)) {
+    const QPointF centre_px = to_screen(body_point(b, centre));
+    QPointF anchor = centre_px;
+    const QRectF shown = QRectF(rect()).adjusted(20, band + 20, -20, -20);
+    if (!shown.contains(centre_px)) {
       double best = std::numeric_limits<double>::infinity();
       for (std::size_t i = 0; i < body.outline.size(); ++i) {
         const QPointF a = to_screen(body_point(b, body.outline[i]));
         const QPointF c = to_screen(body_point(b, body.outline[(i + 1) % body.outline.size()]));
         const QPointF middle = 0.5 * (a + c);
-        const QPointF d = middle - anchor;
+        const QPointF d = middle - centre_px;
         const double distance = std::hypot(d.x(), d.y());
         if (shown.contains(middle) && distance < best) {
           best = distance;

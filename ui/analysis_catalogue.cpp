@@ -67,7 +67,8 @@ AnalysisEntry technician_measurements() {
         }
         const bool ok = r.within_tolerance();
         off += !ok;
-        // as the regulation panel reads them: millimetres to 0.01 mm, a fraction to 0.001
+        // millimetres to 0.01 mm as in the regulation panel; a fraction (the upright's damper
+        // lift) to 0.001 of the hammer travel
         const int decimals = r.unit == "mm" ? 2 : 3;
         auto fixed = [decimals](double x) {
           return QString::number(std::abs(x) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : x, 'f',

@@ -75,6 +75,13 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   readout_->setTextAlignment(Qt::AlignLeft);
   readout_->setVisible(false);
   apply_fonts();
+  // the legend's headroom and the tick counts depend on the plot area's height in pixels: once a
+  // layout gives it a new height (a resize, the first show, an export at its own size), fit again
+  connect(plot_, &QCustomPlot::afterLayout, this, [this] {
+    if (plot_->axisRect()->height() == fitted_height_px_) return;  // the same: no new replot
+    fit_values();
+    request_replot();
+  });
 
   connect(plot_->xAxis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
           [this](const QCPRange& range) {
@@ -188,6 +195,7 @@ void PlotPanel::changeEvent(QEvent* event) {
 }
 
 void PlotPanel::fit_values() {
+  fitted_height_px_ = plot_->axisRect()->height();  // fitted for this height, data or not
   // the data's own value range within the time range shown (not the axis range: a flat line
   // must not inherit, and keep growing, the padded range of the previous fit)
   bool any = false;

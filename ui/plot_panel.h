@@ -135,6 +135,7 @@ class PlotPanel : public QWidget {
   std::optional<double> time_mark_;
   double minimum_value_span_ = 0.0;
   bool legend_below_ = false;
+  int fitted_height_px_ = -1;  ///< the plot area's height the value axis was last fitted for
   std::optional<double> cursors_[2];
   bool cursors_enabled_ = true;
   bool setting_range_ = false;

@@ -1,5 +1,6 @@
 #include "regulation_panel.h"
 
+#include <QEvent>
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -15,10 +16,7 @@ RegulationPanel::RegulationPanel(QWidget* parent) : QWidget(parent) {
   auto* column = new QVBoxLayout(this);
   column->setContentsMargins(6, 4, 6, 4);
   title_ = new QLabel(this);
-  QFont heading = title_->font();
-  heading.setBold(true);
-  heading.setPointSizeF(heading.pointSizeF() + 1);
-  title_->setFont(heading);
+  fit_title_font();
   column->addWidget(title_);
   grid_host_ = new QWidget(this);
   grid_ = new QGridLayout(grid_host_);
@@ -111,6 +109,22 @@ void RegulationPanel::log(const QString& line) {
 
 void RegulationPanel::clear_log() {
   log_->clear();
+}
+
+}  // namespace pat::ui
+
+namespace pat::ui {
+
+void RegulationPanel::fit_title_font() {
+  QFont heading = font();  // the panel's: it follows the application's (larger text)
+  heading.setBold(true);
+  heading.setPointSizeF(heading.pointSizeF() + 1);
+  title_->setFont(heading);
+}
+
+void RegulationPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange && title_) fit_title_font();
 }
 
 }  // namespace pat::ui

@@ -41,11 +41,16 @@ class RegulationPanel : public QWidget {
   void adjusterChanged(const std::string& name, double mm);
   void resetRequested();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  /// The title's font: the panel's, bold and 1 pt larger.
+  void fit_title_font();
   QGridLayout* grid_;
   QWidget* grid_host_;
   QVBoxLayout* buttons_;
-  QLabel* title_;
+  QLabel* title_ = nullptr;
   QPlainTextEdit* log_;
   std::vector<std::unique_ptr<RegulationRow>> rows_;
 };

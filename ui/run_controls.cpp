@@ -1,6 +1,7 @@
 #include "run_controls.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QFontMetrics>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -87,13 +88,7 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   connect(speed_, &QComboBox::currentIndexChanged, this,
           [this](int i) { controller_->set_speed(speeds()[i]); });
   factor_ = new QLabel(this);
-  // a fixed width, the widest reading's: the toolbar does not shift as the reading changes
-  const QFontMetrics metrics(factor_->font());
-  int widest = 0;
-  for (const QString& sample : {tr("achieved real time"), tr("achieved 1/1000"),
-                                tr("achieved 1/9.9"), tr("achieved ×9.99"), tr("achieved —")})
-    widest = std::max(widest, metrics.horizontalAdvance(sample));
-  factor_->setFixedWidth(widest + 8);
+  fit_factor_width();
   factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
   bottom->addWidget(factor_);
   connect(controller_, &PlaybackController::realtimeFactorChanged, this, [this](double f) {
@@ -148,6 +143,25 @@ int RunControls::speed_index() const {
 void RunControls::update_play_button(bool playing) {
   play_->setIcon(style()->standardIcon(playing ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
   play_->setText(playing ? tr("Pause") : tr("Play"));
+}
+
+}  // namespace pat::ui
+
+namespace pat::ui {
+
+void RunControls::fit_factor_width() {
+  // a fixed width, the widest reading's: the toolbar does not shift as the reading changes
+  const QFontMetrics metrics(factor_->font());
+  int widest = 0;
+  for (const QString& sample : {tr("achieved real time"), tr("achieved 1/1000"),
+                                tr("achieved 1/9.9"), tr("achieved ×9.99"), tr("achieved —")})
+    widest = std::max(widest, metrics.horizontalAdvance(sample));
+  factor_->setFixedWidth(widest + 8);
+}
+
+void RunControls::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange && factor_) fit_factor_width();  // larger text
 }
 
 }  // namespace pat::ui

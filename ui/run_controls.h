@@ -34,14 +34,19 @@ class RunControls : public QWidget {
   /// Start pressed: a new run from rest with the input of the form.
   void startRequested(const std::string& spec);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void update_play_button(bool playing);
+  /// The achieved-speed readout's fixed width, from its widest reading in the current font.
+  void fit_factor_width();
   PlaybackController* controller_;
   InputSpecForm* input_;
   QToolButton* play_;
   QComboBox* speed_;
   QComboBox* blow_;
-  QLabel* factor_;
+  QLabel* factor_ = nullptr;
 };
 
 }  // namespace pat::ui

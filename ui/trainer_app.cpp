@@ -16,7 +16,9 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
   QApplication::setOrganizationName("PianoActionTrainer");
   QApplication::setApplicationName("pianoaction");
   MainWindow window;
-  if (QSettings().value("view/large_text", false).toBool()) window.set_large_text(true);
+  // the remembered larger text; a --screenshot (the README's pictures) always at the normal size
+  if (options.screenshot.empty() && QSettings().value("view/large_text", false).toBool())
+    window.set_large_text(true);
   std::string action = options.action;
   if (!options.action_given)
     action = QSettings().value("last_preset", "grand").toString().toStdString();

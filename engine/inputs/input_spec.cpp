@@ -317,10 +317,13 @@ void check_spline_follows_the_data(const std::string& path, const std::vector<do
       const double stray = std::max(value - *highest, *lowest - value);
       if (stray <= kSplineStrayOfRange * range) continue;
       const int first = data_row_line(path, i), second = data_row_line(path, i + 1);
+      const std::string where =
+          first > 0 && second > 0
+              ? "lines " + std::to_string(first) + " and " + std::to_string(second)
+              : "rows " + std::to_string(i + 1) + " and " + std::to_string(i + 2);
       throw InputError(located_message(
           path, "",
-          "key_angle_deg changes too abruptly between lines " + std::to_string(first) + " and " +
-              std::to_string(second) +
+          "key_angle_deg changes too abruptly between " + where +
               ": the smooth curve through the rows (which gives the "
               "key's rate and acceleration) passes " +
               format_fixed(stray * 180.0 / kPi, 2) +

@@ -147,8 +147,9 @@ SensorCalibration read_sensor_calibration(const std::string& path, const std::st
                                          (cal.position.size() == 1 ? "point" : "points") +
                                          " (at least two are needed)"));
 
-  // the recording named by the header: "... points for NAME.txt ..."
-  const std::regex recording_pattern(R"(\bfor\s+([^\s()]+\.\w+))");
+  // the recording named by the header: "... points for NAME.txt ..." (an extension with a
+  // letter: "for 1.5 mm" names none)
+  const std::regex recording_pattern(R"(\bfor\s+([^\s()]+\.[A-Za-z]\w*))");
   for (const std::string& comment : comments) {
     std::smatch match;
     if (std::regex_search(comment, match, recording_pattern)) {

@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 
 #include "core/error.h"
@@ -87,15 +86,14 @@ ActionModel without_part(const ActionModel& model, const std::string& part) {
 
 std::string model_origin(const ActionModel& model) {
   std::string changes;
-  auto add = [&changes](const std::string& change) {
-    changes += (changes.empty() ? " " : ", ") + change;
-  };
-  for (const std::string& part : model.removed_parts) add("without " + part);
+  for (const std::string& part : model.removed_parts)
+    changes += (changes.empty() ? " without " : ", without ") + part;
+  // which adjusters, and how far, is left out: the practice mode's hidden faults are adjusters
+  // turned, and these messages reach the student
   for (const Adjuster& a : model.adjusters) {
     if (a.value == 0.0) continue;
-    char text[32];
-    std::snprintf(text, sizeof text, " %+.3f mm", a.value * 1e3);
-    add(a.name + text);
+    changes += changes.empty() ? " with adjusters turned" : ", adjusters turned";
+    break;
   }
   return model.source_file + changes;
 }

@@ -18,8 +18,9 @@ ActionModel with_adjuster(const ActionModel& model, const std::string& name, dou
 ActionModel without_part(const ActionModel& model, const std::string& part);
 
 /// Where the model comes from, for messages about it: its file, and what was changed for the run
-/// ("…/grand.json without jack_spring, hammer_blow -1.500 mm"), so that a failure caused by a
-/// --without or a --set is not blamed on the preset alone.
+/// ("…/grand.json without jack_spring, adjusters turned"), so that a failure caused by a
+/// --without or a --set is not blamed on the preset alone. Which adjusters is not said: these
+/// messages reach the practice mode's student, whose hidden faults are turned adjusters.
 std::string model_origin(const ActionModel& model);
 
 /// Parses "NAME=MM" (as given to --set) and applies it.

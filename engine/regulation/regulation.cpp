@@ -183,6 +183,7 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const Regulat
     // the edge of the measurable region. Scan outward on both sides of the start for a change
     // of sign, nearest first, and bracket it with the last point of the start's sign.
     double same_x[2] = {x0, x0}, same_e[2] = {e0, e0};
+    double probed_x[2] = {x0, x0};  // the last position probed on each side
     std::vector<double> distances(std::begin(kBracketScanMm), std::end(kBracketScanMm));
     const double span_mm = (adjuster.max - adjuster.min) * 1e3;
     for (double d = distances.back() + 1.0; d < span_mm + 1.0; d += 1.0) distances.push_back(d);
@@ -190,7 +191,8 @@ Found find_adjuster(SettingProbe& probe, const Adjuster& adjuster, const Regulat
       for (int side = 0; side < 2 && !bracketed; ++side) {
         const double x =
             std::clamp(x0 + (side == 0 ? 1.0 : -1.0) * distance * 1e-3, adjuster.min, adjuster.max);
-        if (x == same_x[side]) continue;
+        if (x == same_x[side] || x == probed_x[side]) continue;  // at the end of the range
+        probed_x[side] = x;
         const auto e = probe.error_at(x, &why);
         if (!e) {
           tried.push_back("unmeasurable at " + format_number(x * 1e3) + " mm (" + why + ")");

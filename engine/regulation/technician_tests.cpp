@@ -152,8 +152,11 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   // screw and holds it no lower than where the jack left it. At the end of that press the jack,
   // held tipped on its button, stands clear of the knuckle.
   const double held_gap = sim.hammer_string_gap(sim.q());
-  const bool tripped_clear =
-      gap_of(marks.letoff_contact) <= 0.0 && gap_of(marks.escapement_contact) > 0.0;
+  // (only with a repetition lever stopped by a drop screw, and the hammer held off the string:
+  // an upright's hammer pushed up to the string by its backcheck, say, has not escaped so)
+  const bool lever_holds_it = model.setting_index("drop") >= 0 && held_gap > 0.0;
+  const bool tripped_clear = lever_holds_it && gap_of(marks.letoff_contact) <= 0.0 &&
+                             gap_of(marks.escapement_contact) > 0.0;
   const bool escaped = letoff_touched && jack_carried &&
                        (held_gap > closest_carried_gap + kFallBack || tripped_clear);
   if (escaped) {

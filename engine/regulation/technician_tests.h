@@ -39,7 +39,9 @@ class BackcheckStopsTheRisingHammer : public std::runtime_error {
 };
 
 /// A slow press in which the jack never lets the hammer go: with the key held down the hammer
-/// still rests within 0.2 mm of its closest approach to the string. What a technician still
+/// still rests within 0.2 mm of its closest approach to the string, and (on a grand) the jack
+/// does not stand tipped clear of the knuckle with the repetition lever holding the hammer off
+/// the string (slow_press in technician_tests.cpp). What a technician still
 /// sees: `held_gap()`, the hammer–string distance with the key held down (m), and
 /// `damper_lift_fraction()`, as in SlowPressReading (NaN when the damper did not lift or was not
 /// watched).
