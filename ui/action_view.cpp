@@ -22,9 +22,10 @@ QFont readout_font(QFont font) {
   font.setBold(true);
   return font;
 }
-/// The readout's band along the top (px): its line and some air (34 px at a 9 pt font).
-double readout_band_px(const QFont& view_font) {
-  return QFontMetricsF(readout_font(view_font)).height() + 14.0;
+/// The readout's band along the top (px), from the readout font's metrics: its line and some
+/// air (34 px at a 9 pt font).
+double readout_band_px(const QFontMetricsF& readout_metrics) {
+  return readout_metrics.height() + 14.0;
 }
 
 // text on a translucent white box, readable over any part (cheaper than a stroked text path)
@@ -209,7 +210,7 @@ void ActionView::fit() {
   const double w = size.x() * (1 + 2 * margin), h = size.y() * (1 + 2 * margin);
   const Vec2 centre = 0.5 * (box->low + box->high);
   // below the time and gap readout drawn along the top
-  const double band = readout_band_px(font());
+  const double band = readout_band_px(QFontMetricsF(readout_font(font())));
   const double usable_height = std::max(1.0, height() - band);
   scale_ = std::min(width() / w, usable_height / h);
   offset_ = QPointF(width() / 2.0 - scale_ * centre.x(),
@@ -394,7 +395,8 @@ void ActionView::paint_frame(QPainter& painter) {
   // time and gap readout, in a band of its own along the top (parts framed outside a close-up's
   // region pass under it); shorter words when the view is too narrow for the full ones
   const QFont big = readout_font(font());
-  const double band = readout_band_px(font());
+  const QFontMetricsF big_metrics(big);
+  const double band = readout_band_px(big_metrics);
   painter.setFont(big);
   painter.setPen(Qt::NoPen);
   painter.setBrush(QColor(250, 250, 246));
@@ -406,12 +408,12 @@ void ActionView::paint_frame(QPainter& painter) {
                         .arg(t_ms, 0, 'f', 2)
                         .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
                         .arg(frame_->finger_force_n, 0, 'f', 1);
-  if (QFontMetricsF(big).horizontalAdvance(readout) > width() - 20)
+  if (big_metrics.horizontalAdvance(readout) > width() - 20)
     readout = tr("%1 ms  gap %2 mm  %3 N")
                   .arg(t_ms, 0, 'f', 1)
                   .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
                   .arg(frame_->finger_force_n, 0, 'f', 1);
-  draw_label(painter, QPointF(10, 7.0 + QFontMetricsF(big).ascent()), readout, QColor(20, 20, 20));
+  draw_label(painter, QPointF(10, 7.0 + big_metrics.ascent()), readout, QColor(20, 20, 20));
   if (!labels_) return;
 
   // labels without overlap: parts first, then forces, then fixtures

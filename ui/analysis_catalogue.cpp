@@ -71,8 +71,7 @@ AnalysisEntry technician_measurements() {
         // lift) to 0.001 of the hammer travel
         const int decimals = r.unit == "mm" ? 2 : 3;
         auto fixed = [decimals](double x) {
-          return QString::number(std::abs(x) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : x, 'f',
-                                 decimals);
+          return QString::fromStdString(format_fixed(x, decimals));
         };
         result.table.push_back({name,
                                 QObject::tr("%1 (target %2 ± %3)%4")

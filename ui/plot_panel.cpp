@@ -195,7 +195,8 @@ void PlotPanel::changeEvent(QEvent* event) {
 }
 
 void PlotPanel::fit_values() {
-  fitted_height_px_ = plot_->axisRect()->height();  // fitted for this height, data or not
+  const double height_px = plot_->axisRect()->height(), width_px = plot_->axisRect()->width();
+  fitted_height_px_ = static_cast<int>(height_px);  // fitted for this height, data or not
   // the data's own value range within the time range shown (not the axis range: a flat line
   // must not inherit, and keep growing, the padded range of the previous fit)
   bool any = false;
@@ -228,15 +229,13 @@ void PlotPanel::fit_values() {
   if (!legend_below_) {
     constexpr int kLegendMarginPx = 8;  // the inset's gap to the frame, and some air
     const double legend_px = plot_->legend->minimumOuterSizeHint().height() + kLegendMarginPx;
-    const double area_px = plot_->axisRect()->height();
     const int legend_rows = (series_count() + 2) / 3;
-    headroom = area_px > 2.0 * legend_px ? shown * legend_px / (area_px - legend_px)
-                                         : 0.3 * legend_rows * range.size();
+    headroom = height_px > 2.0 * legend_px ? shown * legend_px / (height_px - legend_px)
+                                           : 0.3 * legend_rows * range.size();
   }
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
   // as many ticks as the plot's size gives room for: their labels must not run together on a
   // short or narrow plot (a tick label is about 14 px high and up to 40 px wide)
-  const double height_px = plot_->axisRect()->height(), width_px = plot_->axisRect()->width();
   if (height_px > 0.0 && width_px > 0.0) {
     plot_->yAxis->ticker()->setTickCount(std::clamp(static_cast<int>(height_px / 30.0), 2, 6));
     plot_->xAxis->ticker()->setTickCount(std::clamp(static_cast<int>(width_px / 60.0), 2, 8));

@@ -111,10 +111,6 @@ void RegulationPanel::clear_log() {
   log_->clear();
 }
 
-}  // namespace pat::ui
-
-namespace pat::ui {
-
 void RegulationPanel::fit_title_font() {
   QFont heading = font();  // the panel's: it follows the application's (larger text)
   heading.setBold(true);

@@ -145,10 +145,6 @@ void RunControls::update_play_button(bool playing) {
   play_->setText(playing ? tr("Pause") : tr("Play"));
 }
 
-}  // namespace pat::ui
-
-namespace pat::ui {
-
 void RunControls::fit_factor_width() {
   // a fixed width, the widest reading's: the toolbar does not shift as the reading changes
   const QFontMetrics metrics(factor_->font());

@@ -254,14 +254,13 @@ class CsvForce final : public ForceInput {
 // Key angle from a CSV through a natural cubic spline, end values held.
 class CsvMotion final : public MotionInput {
  public:
-  CsvMotion(std::string spec, std::vector<double> t, const std::vector<double>& angle_rad)
-      : MotionInput(std::move(spec)), spline_(std::move(t), angle_rad) {}
+  CsvMotion(std::string spec, CubicSpline spline)
+      : MotionInput(std::move(spec)), spline_(std::move(spline)) {}
 
   KeyMotionSample motion(double t) const override {
     const CubicSpline::Sample s = spline_.evaluate(t);
     return {s.value, s.first, s.second};
   }
-  const CubicSpline& spline() const { return spline_; }
 
  private:
   CubicSpline spline_;
@@ -292,6 +291,13 @@ int data_row_line(const std::string& path, std::size_t row) {
     if (rows_seen++ == row) return number;
   }
   return 0;
+}
+
+/// Where data row `row` (0-based) is, for a message: "line N" of the file, or "row N+1" when its
+/// line cannot be found.
+std::string data_row_place(const std::string& path, std::size_t row) {
+  const int line = data_row_line(path, row);
+  return line > 0 ? "line " + std::to_string(line) : "row " + std::to_string(row + 1);
 }
 
 /// How far the spline through a recorded key motion may stray beyond the recorded angles, as a
@@ -357,11 +363,8 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
   std::vector<double> time = table.column("time_s");
   for (std::size_t i = 1; i < time.size(); ++i) {
     if (time[i] > time[i - 1]) continue;
-    const int line = data_row_line(path, i);
-    const std::string where =
-        line > 0 ? "line " + std::to_string(line) : "row " + std::to_string(i + 1);
     throw InputError(located_message(path, "",
-                                     "time_s must increase (" + where + ": " +
+                                     "time_s must increase (" + data_row_place(path, i) + ": " +
                                          number_text(time[i]) + " after " +
                                          number_text(time[i - 1]) + ")"));
   }
@@ -372,22 +375,19 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
       // a known full dip (0: not known here) bounds the angles a key can take
       if (full_dip_angle_rad > 0.0 && (a < kLowestAngleOfDip * full_dip_angle_rad ||
                                        a > kDeepestAngleOfDip * full_dip_angle_rad)) {
-        const int line = data_row_line(path, i);
         const double dip_deg = full_dip_angle_rad * 180.0 / kPi;
         throw InputError(located_message(
             path, "",
-            "key_angle_deg " + number_text(angle[i]) + " on " +
-                (line > 0 ? "line " + std::to_string(line) : "row " + std::to_string(i + 1)) +
+            "key_angle_deg " + number_text(angle[i]) + " on " + data_row_place(path, i) +
                 " is beyond the key's travel (0 at rest, full dip " + format_fixed(dip_deg, 2) +
                 " deg; accepted from " + format_fixed(kLowestAngleOfDip * dip_deg, 2) + " to " +
                 format_fixed(kDeepestAngleOfDip * dip_deg, 2) + ")"));
       }
       angle[i] = a;
     }
-    const std::vector<double> knots = time;
-    auto motion = std::make_unique<CsvMotion>(spec, std::move(time), angle);
-    check_spline_follows_the_data(path, knots, angle, motion->spline());
-    return motion;
+    CubicSpline spline(time, angle);
+    check_spline_follows_the_data(path, time, angle, spline);
+    return std::make_unique<CsvMotion>(spec, std::move(spline));
   }
   return std::make_unique<CsvForce>(spec, std::move(time), table.column("key_force_n"));
 }
