@@ -28,12 +28,14 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
     PlotSpec angles =
         table_plot(traces, "Measured and simulated hammer: " + file, "hammer angle (deg)",
                    {{"measured_deg", "measured"}, {"baseline_deg", "baseline model"}});
-    PlotSpec residuals = table_plot(traces, "Residuals: " + file, "model − measured (deg)",
+    PlotSpec residuals = table_plot(traces, "Residuals: " + file, "measured − model (deg)",
                                     {{"residual_baseline_deg", "baseline model"}});
+    residuals.curves.front().colour = 1;  // each model in the colour it has above
     if (traces.column_index("extended_deg") >= 0) {
       PlotCurve model = line_curve(extended, "extended_deg");
       model.x = traces.column("time_s");
       model.y = traces.column("extended_deg");
+      model.colour = 2;  // as it would be third in the residuals too
       angles.curves.push_back(model);
       model.column = "residual_extended_deg";
       model.y = traces.column("residual_extended_deg");
@@ -42,9 +44,10 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
     add_plot(plots, std::move(angles));
     add_plot(plots, std::move(residuals));
   }
+  // a short y title: the candidates' names below the axis leave it little height
   PlotSpec ranking = category_plot(
-      "Candidate causes", std::string(d.held_out ? "held-out" : "training") + " rms error (deg)",
-      "candidate", "candidate_index");
+      std::string("Candidate causes (") + (d.held_out ? "held-out" : "training") + " error)",
+      "rms error (deg)", "candidate", "candidate_index");
   PlotCurve rms = point_curve("fitted candidate", "validated_rms_deg");
   for (const CandidateFit& c : d.ranking) {
     if (!c.completed) continue;

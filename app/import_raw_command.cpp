@@ -22,9 +22,9 @@ namespace pat::app {
 
 namespace {
 
-const std::set<std::string> kValueOptions = {"--rate",   "--column", "--calibration",
-                                             "--action", "--from",   "--to",
-                                             "--bits",   "--out",    "--plot"};
+const std::set<std::string> kValueOptions = {
+    "--rate", "--column", "--key-column", "--calibration", "--action",
+    "--from", "--to",     "--bits",       "--out",         "--plot"};
 
 /// A whole number ≥ `minimum`; names the option.
 int whole_number(const CommandLine& cl, const std::string& option, int fallback, int minimum) {
@@ -55,6 +55,25 @@ void check_calibration_fits(const SensorCalibration& cal, const std::string& raw
                      "' sensor (its sensors in column order: " + order +
                      "); import-raw turns the hammer-shank sensor into hammer angles");
   }
+}
+
+/// The calibration's sensor for the key's column: the sensor its rows give that column (in
+/// column order), which must not be the hammer shank's.
+std::string key_sensor_name(const SensorCalibration& cal, int key_column, int hammer_column) {
+  if (key_column == hammer_column)
+    throw InputError("--key-column " + std::to_string(key_column) +
+                     ": the same column as the hammer's (--column)");
+  const auto index = static_cast<std::size_t>(key_column - 1);
+  if (cal.sensors.size() < 2 || index >= cal.sensors.size())
+    throw InputError("--key-column " + std::to_string(key_column) + ": " + cal.path +
+                     " has no calibration points for column " + std::to_string(key_column) +
+                     " (its rows must name each column's sensor, in column order, in a 'sensor' "
+                     "column)");
+  if (cal.sensors[index] == "hammer")
+    throw InputError("--key-column " + std::to_string(key_column) + ": in " + cal.path +
+                     " column " + std::to_string(key_column) +
+                     " is the hammer-shank sensor, not the key's");
+  return cal.sensors[index];
 }
 
 }  // namespace
@@ -94,6 +113,17 @@ int run_import_raw(const std::vector<std::string>& args) {
     check_calibration_fits(*o.calibration, raw_path, column);
   }
   const RawTrace trace = read_raw_trace(raw_path, column, bits);
+  if (cl.has("--key-column")) {
+    const int key_column = whole_number(cl, "--key-column", 2, 1);
+    if (!o.calibration)
+      throw InputError(
+          "--key-column needs --calibration: the key's sensor is curved, and only "
+          "its calibration points turn its reading into a key-front dip");
+    const std::string sensor = key_sensor_name(*o.calibration, key_column, column);
+    o.key_calibration = read_sensor_calibration(cl.value("--calibration"), sensor);
+    o.key_trace = read_raw_trace(raw_path, key_column, bits);
+    o.key_front_arm_m = key_front_arm_m(model);
+  }
   o.contact_angle_deg = hammer_contact_angle_deg(model);
   const RawImport result = import_raw(trace, o);
   std::vector<PlotSpec> plots;
@@ -103,8 +133,15 @@ int run_import_raw(const std::vector<std::string>& args) {
     angle.markers.push_back(
         {result.peak_t_s, "peak " + format_number(result.peak_angle_deg) + " deg"});
   add_plot(plots, std::move(angle));
+  if (result.key)
+    add_plot(plots, table_plot(result.table, "Imported key angle", "key angle (deg)",
+                               {{"key_angle_deg", "key"}}));
   add_plot(plots, table_plot(result.table, "Raw sensor reading", "reading (fraction of full scale)",
-                             {{"sensor_reading", "reading"}}));
+                             {{"sensor_reading", "hammer sensor"}}));
+  if (result.key)
+    add_plot(plots,
+             table_plot(result.table, "Raw key sensor reading", "reading (fraction of full scale)",
+                        {{"key_sensor_reading", "key sensor"}}));
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(plots);
   write_csv(out_path, result.table);
@@ -127,10 +164,21 @@ int run_import_raw(const std::vector<std::string>& args) {
                      {"reversed", result.strike->reversed},
                      {"peak_t_s", result.peak_t_s},
                      {"peak_angle_deg", result.peak_angle_deg}};
+    j["key"] = nullptr;
+    if (result.key)
+      j["key"] = {{"column", o.key_trace->column},
+                  {"rest_position_in", result.key->rest_position_in},
+                  {"front_arm_mm", 1e3 * result.key->front_arm_m},
+                  {"deepest_dip_mm", result.key->deepest_dip_mm},
+                  {"smoothing_sigma_ms", 1e3 * kKeySmoothingSigmaS}};
     std::cout << j.dump(1) << "\n";
   } else {
     std::cout << samples << " samples written to " << out_path << " ("
               << result.table.metadata.at("calibration") << ")\n";
+    if (result.key)
+      std::cout << "key angles from column " << o.key_trace->column << ": deepest key-front dip "
+                << format_fixed(result.key->deepest_dip_mm, 2) << " mm ("
+                << result.table.metadata.at("key_calibration") << ")\n";
     if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   }
   return 0;

@@ -60,8 +60,9 @@ usage:
                         [--report DIR] [--plot FILE] [--json]
   pianoaction bench-diagnose [--action A] [--seeds N] [--null-seeds N] [--family NAME]...
                         [--plot FILE] [--json]
-  pianoaction import-raw RAW --rate HZ [--column N] [--calibration CSV] [--action grand|upright]
-                        [--from S] [--to S] [--bits N] --out CSV [--plot FILE] [--json]
+  pianoaction import-raw RAW --rate HZ [--column N] [--key-column N] [--calibration CSV]
+                        [--action grand|upright] [--from S] [--to S] [--bits N] --out CSV
+                        [--plot FILE] [--json]
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
@@ -75,6 +76,9 @@ effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
 gap, finger force; the others: what they computed, e.g. the measured setting over time, strikes
 per cycle against frequency, each setting's effect); the format comes from the extension:
 .png .pdf .svg, or .csv for the plotted columns (plots over one x axis).
+--key-column N (import-raw) turns the key's own sensor, column N of the same recording, into
+key angles with its rows of the --calibration points (their 'sensor' names the columns in order);
+diagnose then drives the model with that key motion instead of an estimated finger force.
 --view frames the whole action (default) or a close-up of the escapement (jack, knuckle or
 butt, let-off button) or of the checking (hammer head and tail, backcheck); View menu, Ctrl+1-3.
 --screenshot PNG opens the window, plays a blow until the hammer is 2.5 mm from the string,

@@ -28,7 +28,7 @@ ui::AnalysisPlot to_analysis_plot(const PlotSpec& spec) {
   plot.x_unit = text(spec.x_unit);
   plot.y_title = text(spec.y_title);
   for (const PlotCurve& c : spec.curves)
-    plot.series.push_back({text(c.label), text(c.column), c.x, c.y, c.points});
+    plot.series.push_back({text(c.label), text(c.column), c.x, c.y, c.points, c.colour});
   for (const std::string& name : spec.x_categories) plot.x_categories.push_back(text(name));
   for (const PlotMarker& m : spec.markers) plot.markers.push_back({m.x, text(m.label)});
   return plot;

@@ -17,6 +17,7 @@ struct PlotCurve {
   std::string column;        ///< CSV column with its unit, e.g. hammer_angle_deg
   std::vector<double> x, y;  ///< x ascending
   bool points = false;       ///< markers only (one result per cycle or case), else a line
+  int colour = -1;           ///< palette index; -1: the curve's place in its plot
 
   void add(double x_value, double y_value) {
     x.push_back(x_value);

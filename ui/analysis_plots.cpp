@@ -16,7 +16,8 @@ PlotPanel* make_analysis_plot_panel(const AnalysisPlot& p, QWidget* parent) {
   panel->set_x_axis(p.x_title, p.x_column, "x", p.x_unit, 1.0);
   for (std::size_t s = 0; s < p.series.size(); ++s) {
     const AnalysisSeries& series = p.series[s];
-    const int id = panel->add_series(series.label, series.column, series_colour(int(s)));
+    const int id = panel->add_series(series.label, series.column,
+                                     series_colour(series.colour >= 0 ? series.colour : int(s)));
     panel->set_data(id, series.x, series.y);
     if (series.points) panel->set_points_only(id);
   }

@@ -24,6 +24,7 @@ struct AnalysisSeries {
   QString column;            ///< CSV column with its unit, e.g. strikes_per_cycle
   std::vector<double> x, y;  ///< x ascending
   bool points = false;       ///< markers only (per-cycle results), else a line
+  int colour = -1;           ///< palette index (series_colour); -1: the series' place in its plot
 };
 
 /// A vertical line across a plot at x, labelled (e.g. the maximum repetition frequency).

@@ -29,25 +29,27 @@ Alignment align(const MeasuredTrial& trial, const ModelTrace& model, double max_
     const double c = shifted_cost(trial, model, s, mean);
     if (c < best) best = c, best_shift = s;
   }
-  // golden-section refinement in [best − grid, best + grid]
-  const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-  double a = best_shift - grid, b = best_shift + grid;
-  double x1 = b - g * (b - a), x2 = a + g * (b - a);
-  double f1 = shifted_cost(trial, model, x1, mean), f2 = shifted_cost(trial, model, x2, mean);
-  for (int it = 0; it < 12; ++it) {
-    if (f1 < f2) {
-      b = x2, x2 = x1, f2 = f1;
-      x1 = b - g * (b - a);
-      f1 = shifted_cost(trial, model, x1, mean);
-    } else {
-      a = x1, x1 = x2, f1 = f2;
-      x2 = a + g * (b - a);
-      f2 = shifted_cost(trial, model, x2, mean);
-    }
-  }
-  const double refined = f1 < f2 ? x1 : x2;
   Alignment out;
-  out.time_offset_s = std::min(f1, f2) < best ? refined : best_shift;
+  out.time_offset_s = best_shift;
+  if (max_shift_s > 0.0) {  // with none searched, the model's clock is the file's
+    // golden-section refinement in [best − grid, best + grid]
+    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
+    double a = best_shift - grid, b = best_shift + grid;
+    double x1 = b - g * (b - a), x2 = a + g * (b - a);
+    double f1 = shifted_cost(trial, model, x1, mean), f2 = shifted_cost(trial, model, x2, mean);
+    for (int it = 0; it < 12; ++it) {
+      if (f1 < f2) {
+        b = x2, x2 = x1, f2 = f1;
+        x1 = b - g * (b - a);
+        f1 = shifted_cost(trial, model, x1, mean);
+      } else {
+        a = x1, x1 = x2, f1 = f2;
+        x2 = a + g * (b - a);
+        f2 = shifted_cost(trial, model, x2, mean);
+      }
+    }
+    if (std::min(f1, f2) < best) out.time_offset_s = f1 < f2 ? x1 : x2;
+  }
   shifted_cost(trial, model, out.time_offset_s, mean);
   out.angle_offset_deg = mean;
   out.residual.resize(trial.t.size());

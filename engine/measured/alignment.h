@@ -5,7 +5,8 @@
 //   measured(t_i) ≈ model(t_i − δt) + δθ,   δθ = mean of measured(t_i) − model(t_i − δt),
 //   δt ∈ [−max_shift, max_shift] minimises Σ r_i²: a 0.2 ms grid, then golden-section search
 //   in the best grid cell (the cost is smooth in δt at that scale because the model trace is
-//   interpolated linearly on a 0.1 ms grid).
+//   interpolated linearly on a 0.1 ms grid). max_shift = 0: δt = 0 (a model driven by the
+//   file's own key column runs on the file's clock).
 #pragma once
 
 #include <vector>

@@ -32,6 +32,9 @@ struct PreparedTrial {
   std::string spec;
   bool estimated = false;
   double model_duration_s = 0.0;
+  /// the time offset searched: none when the trial's own key column drives the model (the key
+  /// and the hammer were sampled on one clock, so the model's time is the file's)
+  double max_shift_s = kMaxShiftS;
 };
 
 struct Evaluation {
@@ -87,7 +90,7 @@ class Evaluator {
       return e;  // the model cannot rest or run with this value: a failed evaluation
     }
     if (!trace.completed) return e;
-    Alignment al = align(trials_[j].data, trace, kMaxShiftS);
+    Alignment al = align(trials_[j].data, trace, trials_[j].max_shift_s);
     e.ok = true;
     e.rss = al.rss;
     e.residual = std::move(al.residual);
@@ -458,6 +461,7 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
     p.spec = trial.input_spec;
   } else if (!trial.key_deg.empty()) {
     p.spec = "csv:" + trial.path;  // the measured key motion drives the model
+    p.max_shift_s = 0.0;
   } else {
     const EstimatedInput est = estimate_key_input(model, trial);
     p.data = est.trial;
@@ -504,7 +508,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     if (!r.baseline.completed)
       throw InputError(r.path + ": the model stops under the input '" + r.input_spec +
                        "': " + r.baseline.stop_cause);
-    r.baseline_alignment = align(prepared[j].data, r.baseline, kMaxShiftS);
+    r.baseline_alignment = align(prepared[j].data, r.baseline, prepared[j].max_shift_s);
     r.noise_deg = estimate_noise(prepared[j].data.hammer_deg);
     r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
     r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
@@ -625,7 +629,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     for (std::size_t j = 0; j < n_trials; ++j) {
       d.trials[j].extended = simulate_trace(extended, prepared[j].spec,
                                             prepared[j].model_duration_s, 1e-4, &extended_rest);
-      d.trials[j].extended_alignment = align(prepared[j].data, d.trials[j].extended, kMaxShiftS);
+      d.trials[j].extended_alignment =
+          align(prepared[j].data, d.trials[j].extended, prepared[j].max_shift_s);
     }
   }
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;

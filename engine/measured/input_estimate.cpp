@@ -11,6 +11,7 @@ namespace pat {
 namespace {
 
 constexpr double kOnsetFraction = 0.05;  // motion onset: 5 % of the way from rest to the peak
+constexpr double kKeptS = 0.5;           // of the trial, kept from the model's motion onset (s)
 
 std::string pulse_spec(double force, double ms) {
   std::ostringstream out;
@@ -67,7 +68,12 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
   while (i_fall + 1 < trial.t.size() && (trial.hammer_deg[i_fall] > rest + 0.2 * (peak - rest) ||
                                          trial.t[i_fall] < impact->t + 20e-3))
     ++i_fall;
-  out.pulse_ms = std::clamp((trial.t[i_fall] - trial.t[i_on]) * 1e3 - 20.0, 30.0, 400.0);
+  const bool falls_back = trial.hammer_deg[i_fall] <= rest + 0.2 * (peak - rest);
+  // a hammer still held at the end of the trace: the key is held past the kept window, since a
+  // release inside it would be the model's alone (the data show none)
+  out.pulse_ms = falls_back
+                     ? std::clamp((trial.t[i_fall] - trial.t[i_on]) * 1e3 - 20.0, 30.0, 400.0)
+                     : 1e3 * kKeptS + 100.0;
   out.pulse_ms = std::round(out.pulse_ms);
 
   // force whose rise time matches: scan, then interpolate log(rise) against log(force)
@@ -96,7 +102,7 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
   const ModelRise r = model_rise(model, out.spec);
   out.model_rise_s = r.ok ? r.impact - r.onset : 0.0;
 
-  // the strike on the model's clock: onsets coincide, 0.5 s kept
+  // the strike on the model's clock: onsets coincide, kKeptS kept
   const double shift = trial.t[i_on] - (r.ok ? r.onset : 0.0);
   out.trial = trial;
   out.trial.t.clear();
@@ -104,7 +110,7 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
   out.trial.key_deg.clear();
   for (std::size_t i = 0; i < trial.t.size(); ++i) {
     const double t = trial.t[i] - shift;
-    if (t < 0.0 || t > 0.5) continue;
+    if (t < 0.0 || t > kKeptS) continue;
     out.trial.t.push_back(t);
     out.trial.hammer_deg.push_back(trial.hammer_deg[i]);
   }

@@ -1,7 +1,8 @@
 // A key input for a measured strike whose input was not recorded (the real sensor traces in
 // shared/data have only the hammer): a parameterised finger force per strike, a pulse
 // force:pulse:N:MS whose force N makes the model's rise time (motion onset to impact) equal the
-// measured one and whose length MS follows how long the hammer is held in check.
+// measured one and whose length MS follows how long the hammer is held in check (a trace that
+// ends with the hammer still held gets a pulse that outlasts the 0.5 s kept of it).
 #pragma once
 
 #include <string>

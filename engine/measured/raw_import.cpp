@@ -60,6 +60,40 @@ std::string number_text(double x, int precision = 6) {
   return out.str();
 }
 
+/// The key angles of the window [first, first + count) and the file's key columns and metadata.
+void add_key_metadata(const RawImportOptions& o, const RawTrace& hammer, std::size_t first,
+                      std::size_t count, RawImport& result, CsvTable& table) {
+  const RawTrace& key = *o.key_trace;
+  if (!o.key_calibration)
+    throw InputError("the key's sensor (column " + std::to_string(key.column) +
+                     ") needs its calibration points: without them its curved reading cannot be "
+                     "turned into a key-front dip");
+  if (key.reading.size() != hammer.reading.size())
+    throw InputError(located_message(
+        hammer.path, "",
+        "the key's column " + std::to_string(key.column) + " has " +
+            std::to_string(key.reading.size()) + " samples and the hammer's column " +
+            std::to_string(hammer.column) + " " + std::to_string(hammer.reading.size()) +
+            ": both must come from the same recording"));
+  const std::vector<double> window(
+      key.reading.begin() + static_cast<std::ptrdiff_t>(first),
+      key.reading.begin() + static_cast<std::ptrdiff_t>(first + count));
+  const SensorCalibration& c = *o.key_calibration;
+  result.key = key_angles_from_sensor(window, o.rate_hz, c, o.key_front_arm_m);
+  std::ostringstream note;
+  note << "calibration points of " << std::filesystem::path(c.path).filename().string()
+       << (c.sensor.empty() ? "" : " (" + c.sensor + ")") << " for column " << key.column
+       << ", normalized = (reading - " << c.offset << ") / " << c.gain
+       << ", key-front position by monotone cubic interpolation, minus its rest "
+       << number_text(result.key->rest_position_in) << " in (median of the first 50 ms); key "
+       << "angle = asin(dip / " << number_text(1e3 * o.key_front_arm_m, 4)
+       << " mm, the model's key front arm); smoothed by a Gaussian of sigma "
+       << number_text(1e3 * kKeySmoothingSigmaS, 3) << " ms (engine/measured/key_sensor.h)";
+  table.metadata["key_calibration"] = note.str();
+  table.columns.push_back("key_angle_deg");
+  table.columns.push_back("key_sensor_reading");
+}
+
 }  // namespace
 
 std::optional<RawStrike> find_raw_strike(const std::vector<double>& r, double rate_hz,
@@ -209,6 +243,8 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
   table.metadata["action"] = o.action;
   std::ostringstream source;
   source << std::filesystem::path(path).filename().string() << " column " << trace.column
+         << (o.key_trace ? " (hammer) and column " + std::to_string(o.key_trace->column) + " (key)"
+                         : std::string())
          << ", samples " << first << " to " << first + count - 1 << " ("
          << static_cast<double>(first) / o.rate_hz << " to "
          << static_cast<double>(first + count - 1) / o.rate_hz << " s at " << o.rate_hz
@@ -218,11 +254,17 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
   table.metadata["source"] = source.str();
   table.metadata["calibration"] = calibration_note.str();
   table.columns = {"time_s", "hammer_angle_deg", "sensor_reading"};
+  if (o.key_trace) add_key_metadata(o, trace, first, count, result, table);
   table.rows.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     // 1e-4 deg: far below the sensor's noise (about 0.05 deg at rest on the real files)
     const double angle = std::round(o.contact_angle_deg * travel(r[i]) * 1e4) / 1e4;
     table.rows.push_back({static_cast<double>(i) / o.rate_hz, angle, r[i]});
+    if (result.key) {
+      // 1e-5 deg of key: 0.04 µm at the key front
+      table.rows.back().push_back(std::round(result.key->angle_deg[i] * 1e5) / 1e5);
+      table.rows.back().push_back(o.key_trace->reading[first + i]);
+    }
   }
   if (result.strike) {
     result.peak_t_s = static_cast<double>(result.strike->peak_index) / o.rate_hz;

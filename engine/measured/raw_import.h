@@ -33,6 +33,7 @@
 #include <string>
 
 #include "io/csv.h"
+#include "measured/key_sensor.h"
 #include "measured/raw_trace.h"
 #include "measured/sensor_calibration.h"
 #include "model/action_model.h"
@@ -70,6 +71,11 @@ struct RawImportOptions {
   std::optional<SensorCalibration> calibration;
   double contact_angle_deg = 0.0;  ///< θ_c (hammer_contact_angle_deg of the action)
   std::string action;              ///< for the "# action:" line
+  /// The key's own sensor, another column of the same file (key_sensor.h), with its calibration
+  /// points and the key front's arm (key_front_arm_m); without it the file has no key angle.
+  std::optional<RawTrace> key_trace;
+  std::optional<SensorCalibration> key_calibration;
+  double key_front_arm_m = 0.0;
 };
 
 struct RawImport {
@@ -78,11 +84,15 @@ struct RawImport {
   std::optional<RawStrike> strike;  ///< always found without calibration points
   double peak_t_s = 0.0;            ///< strike peak, s from the window start (when found)
   double peak_angle_deg = 0.0;      ///< the angle it maps to
+  std::optional<KeyAngles> key;     ///< the key angles, when a key sensor was given
 };
 
-/// Converts the window of a raw trace. Throws InputError naming the file or option: rate ≤ 0 or
-/// too slow to resolve the impact (kMaxSampleIntervalS), an empty or reversed window, fewer
-/// than kMinMeasuredSamples samples in it, no strike found when there are no calibration points.
+/// Converts the window of a raw trace; with a key sensor the file also gets key_angle_deg (and
+/// the key's reading, key_sensor_reading), which diagnose then uses as the model's input. Throws
+/// InputError naming the file or option: rate ≤ 0 or too slow to resolve the impact
+/// (kMaxSampleIntervalS), an empty or reversed window, fewer than kMinMeasuredSamples samples in
+/// it, no strike found when there are no calibration points, a key sensor without its points or
+/// with another length than the hammer's column.
 RawImport import_raw(const RawTrace& trace, const RawImportOptions& options);
 
 }  // namespace pat

@@ -81,6 +81,30 @@ printf 'hammer,0.1,1\ndamper,0,0\ndamper,0.1,1\n' >>two.csv
 expect_failure "another sensor's column" \
   "--column 2: in two.csv column 2 of strike.txt is the 'damper' sensor (its sensors in column order: hammer, damper)" \
   strike.txt --rate 2000 --column 2 --calibration two.csv
+# the key's own sensor (--key-column): column 2 of a two-sensor recording, calibrated by the
+# 'damper' rows of two.csv (the data set's name for its sensor under the back of the key)
+awk 'BEGIN {
+  for (i = 0; i < 600; i++) {
+    t = i / 2000; a = 0; k = (t > 0.05) ? ((t < 0.08) ? (t - 0.05) / 0.03 * 0.8 : 0.8) : 0
+    if (t > 0.08) a = (t < 0.095) ? 1 - 0.4 * 0.5 * (1 - cos(3.14159265 * (t - 0.08) / 0.015)) : 0.6
+    else if (t > 0.06) a = ((t - 0.06) / 0.02) ^ 2
+    printf "%.6f %.6f\n", 0.5 + 0.2 * a, 0.3 + 0.5 * k
+  }
+}' >with_key.txt
+"$exe" import-raw with_key.txt --rate 2000 --column 1 --key-column 2 --calibration two.csv \
+  --out with_key.csv --json >with_key.json || fail "import-raw --key-column failed"
+grep -q '^time_s,hammer_angle_deg,sensor_reading,key_angle_deg,key_sensor_reading$' with_key.csv \
+  || fail "--key-column: header $(grep -v '^#' with_key.csv | head -1)"
+grep -q '^# key_calibration: calibration points of two.csv (damper) for column 2' with_key.csv \
+  || fail "--key-column: no '# key_calibration:' line"
+# 0.8 of the damper points' 0.1 in: a 2.03 mm key-front dip
+grep -q '"deepest_dip_mm": 2.03' with_key.json || fail "--key-column: $(cat with_key.json)"
+expect_failure "key column without points" "--key-column needs --calibration" \
+  with_key.txt --rate 2000 --column 1 --key-column 2
+expect_failure "key column is the hammer's" "the same column as the hammer's" \
+  with_key.txt --rate 2000 --column 1 --key-column 1 --calibration two.csv
+expect_failure "key column without a sensor" "two.csv has no calibration points for column 3" \
+  with_key.txt --rate 2000 --column 1 --key-column 3 --calibration two.csv
 # an existing output file survives a failed run
 echo keep >kept.csv
 "$exe" import-raw strike.txt --rate 2000 --column 1 --out kept.csv 2>/dev/null && fail "no strike accepted"

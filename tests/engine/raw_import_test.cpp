@@ -387,5 +387,120 @@ TEST(RawImport, BadCalibrationFilesAreNamed) {
                  {"gain of hammer is zero"});
 }
 
+// ---- the key's own sensor (key_sensor.h) -----------------------------------------------------
+
+constexpr double kKeyArmM = 0.22;         // key front's arm given to the import (the grand's)
+constexpr double kKeyRestIn = 0.05;       // the key sensor's position at rest (not its zero)
+constexpr double kKeyInPerReading = 0.5;  // linear key points: 0.5 in at normalized reading 1
+
+/// Calibration points for a two-column recording: hammer (column 1), key (column 2), both linear.
+const char* kTwoSensorCalibration =
+    "# points for two_columns.txt: hammer offset 0 gain 1, key offset 0.3 gain 0.58\n"
+    "sensor,position_in,normalized_reading\n"
+    "hammer,0,0\nhammer,1,1\nkey,0,0\nkey,0.5,1\n";
+
+/// Writes hammer and key readings as two columns; the key's from its front dip (m).
+std::string write_two_columns(const std::string& name, const std::vector<double>& key_dip_m) {
+  const std::vector<double> theta = strike_angles();
+  std::ostringstream text;
+  text.precision(17);
+  for (std::size_t i = 0; i < key_dip_m.size(); ++i) {
+    const double hammer = 0.21 + 0.011 * theta[std::min(i, theta.size() - 1)];
+    const double position_in = kKeyRestIn + key_dip_m[i] / 0.0254;
+    text << hammer << "," << 0.3 + 0.58 * position_in / kKeyInPerReading << "\n";
+  }
+  return write_file(name, text.str());
+}
+
+RawImport import_with_key(const std::string& path) {
+  const std::string cal = write_file("two_sensor_cal.csv", kTwoSensorCalibration);
+  RawImportOptions o;
+  o.calibration = read_sensor_calibration(cal, "hammer");
+  o.key_calibration = read_sensor_calibration(cal, "key");
+  o.key_trace = read_raw_trace(path, 2);
+  o.key_front_arm_m = kKeyArmM;
+  return import_file(path, o);
+}
+
+TEST(RawImport, KeySensorGivesTheAngleOfTheKeyFrontsDip) {
+  // rest 60 ms, a raised-cosine press of 10 mm in 30 ms, held: 0.3 s
+  std::vector<double> dip;
+  for (int i = 0; i < 600; ++i) {
+    const double t = i / kRate;
+    dip.push_back(t < 0.06   ? 0.0
+                  : t < 0.09 ? 5e-3 * (1 - std::cos(kPi * (t - 0.06) / 0.03))
+                             : 1e-2);
+  }
+  const RawImport r = import_with_key(write_two_columns("two_columns.txt", dip));
+  ASSERT_TRUE(r.key);
+  EXPECT_NEAR(r.key->rest_position_in, kKeyRestIn, 1e-12);
+  EXPECT_NEAR(r.key->deepest_dip_mm, 10.0, 1e-9);
+  const auto& columns = r.table.columns;
+  const auto key_column = std::find(columns.begin(), columns.end(), "key_angle_deg");
+  ASSERT_NE(key_column, columns.end());
+  const auto k = static_cast<std::size_t>(key_column - columns.begin());
+  double flat_error = 0.0, ramp_error = 0.0;
+  for (std::size_t i = 0; i < dip.size(); ++i) {
+    const double expected = std::asin(dip[i] / kKeyArmM) * 180.0 / kPi;
+    const double error = std::abs(r.table.rows[i][k] - expected);
+    const double t = i / kRate;
+    // the Gaussian reaches 3σ = 6 ms: beyond that from the ramp it averages a constant
+    const bool flat = t < 0.06 - 6e-3 || t > 0.09 + 6e-3;
+    (flat ? flat_error : ramp_error) = std::max(flat ? flat_error : ramp_error, error);
+  }
+  EXPECT_LE(flat_error, 1e-5);  // the file's rounding (5e-6 deg) and the truncated tails
+  // the smoothing's bias on the ramp is about σ²/2 times the dip's curvature: 0.5 · (2 ms)² ·
+  // 5 mm · (π / 30 ms)² = 0.11 mm at most, 0.029 deg on a 220 mm arm
+  EXPECT_LE(ramp_error, 0.035);
+  EXPECT_GT(ramp_error, 0.005);  // and it is there: the trace is smoothed
+  // diagnose reads the key column as the measured key motion
+  const MeasuredTrial trial = measured_from_table(r.table, "two_columns.txt", "grand");
+  ASSERT_EQ(trial.key_deg.size(), dip.size());
+  EXPECT_NE(r.table.metadata.at("key_calibration").find("sigma 2 ms"), std::string::npos);
+}
+
+TEST(RawImport, KeySmoothingCutsTheSensorNoiseByTheGaussiansFactor) {
+  // white noise of σ_n on the key front at rest: a Gaussian of σ = 4 samples leaves
+  // σ_n (2 √π σ)^(-1/2) = 0.266 σ_n
+  std::mt19937 random(7);
+  std::normal_distribution<double> noise(0.0, 1e-4);  // 0.1 mm, as the real sensor near rest
+  std::vector<double> dip(4000);
+  for (double& d : dip) d = noise(random);
+  const RawImport r = import_with_key(write_two_columns("noisy_key.txt", dip));
+  ASSERT_TRUE(r.key);
+  double sum = 0.0, sum2 = 0.0;
+  for (double a : r.key->angle_deg) {
+    const double mm = std::sin(a * kPi / 180.0) * kKeyArmM;
+    sum += mm, sum2 += mm * mm;
+  }
+  const double n = static_cast<double>(dip.size());
+  const double ratio = std::sqrt(sum2 / n - (sum / n) * (sum / n)) / 1e-4;
+  // about 4000 / 14 = 280 independent values after smoothing: the sample deviation's own
+  // spread is 1 / √(2 · 280) = 4 %; 12 % is three of those
+  EXPECT_NEAR(ratio, 1.0 / std::sqrt(2.0 * std::sqrt(kPi) * 4.0), 0.12 * 0.266);
+}
+
+TEST(RawImport, KeySensorWithoutItsPointsOrOfAnotherLengthIsNamed) {
+  const std::vector<double> dip(400, 0.0);
+  const std::string path = write_two_columns("key_no_points.txt", dip);
+  RawImportOptions o;
+  o.calibration =
+      read_sensor_calibration(write_file("two_sensor_cal.csv", kTwoSensorCalibration), "hammer");
+  o.key_trace = read_raw_trace(path, 2);
+  o.key_front_arm_m = kKeyArmM;
+  expect_message(error_of([&] { import_file(path, o); }),
+                 {"column 2", "needs its calibration points"});
+  o.key_calibration = read_sensor_calibration(temp_path("two_sensor_cal.csv"), "key");
+  o.key_trace->reading.pop_back();
+  expect_message(error_of([&] { import_file(path, o); }),
+                 {path, "key's column 2 has 399 samples", "hammer's column 1 400"});
+  // a calibration whose points would put the key front beyond its own arm
+  o.key_trace = read_raw_trace(path, 2);
+  o.key_front_arm_m = 1e-3;
+  o.key_trace->reading[300] = 0.9;
+  expect_message(error_of([&] { import_file(path, o); }),
+                 {"two_sensor_cal.csv", "more than the key front's 1 mm arm"});
+}
+
 }  // namespace
 }  // namespace pat
