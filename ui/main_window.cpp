@@ -249,10 +249,10 @@ void MainWindow::show_analyses() {
 
 void MainWindow::build_menus() {
   QMenu* file = menuBar()->addMenu(tr("&File"));
-  file->addAction(tr("&Open preset…"), QKeySequence::Open, this,
-                  &MainWindow::open_preset_from_menu);
-  file->addAction(tr("&Save current state as preset…"), QKeySequence::Save, this,
-                  &MainWindow::save_preset_from_menu);
+  open_preset_action_ = file->addAction(tr("&Open preset…"), QKeySequence::Open, this,
+                                        &MainWindow::open_preset_from_menu);
+  save_preset_action_ = file->addAction(tr("&Save current state as preset…"), QKeySequence::Save,
+                                        this, &MainWindow::save_preset_from_menu);
   file->addSeparator();
   file->addAction(tr("&Quit"), QKeySequence::Quit, this, &QWidget::close);
 
@@ -364,15 +364,10 @@ void MainWindow::build_shortcuts() {
 }
 
 void MainWindow::build_practice() {
-  practice_ = new PracticePanel;
-  auto* scroll = new QScrollArea;
-  scroll->setWidget(practice_);
-  scroll->setWidgetResizable(true);
+  practice_ = new PracticePanel;  // it scrolls its own form, under a status line kept in view
   practice_dock_ = new QDockWidget(tr("Practice"), this);
   practice_dock_->setObjectName("practice_dock");
-  practice_dock_->setWidget(scroll);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(practice_->sizeHint().width() + 24);
+  practice_dock_->setWidget(practice_);
   addDockWidget(Qt::RightDockWidgetArea, practice_dock_);
   // a tab beside the regulation and the analyses: the whole height of the dock area, not a
   // third of it under them
@@ -387,6 +382,10 @@ void MainWindow::build_practice() {
     practising_ = active;
     regulation_dock_->setVisible(!active);
     analyses_dock_->setVisible(!active);
+    // another action or preset would leave the exercise's panel on the wrong action, and a
+    // saved preset of the hidden action gives its adjusters away
+    for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
+      a->setEnabled(!active);
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
@@ -398,6 +397,8 @@ void MainWindow::end_practice() {
   practising_ = false;
   regulation_dock_->show();
   analyses_dock_->show();
+  for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
+    a->setEnabled(true);
   if (!action_name_.empty()) open_action(action_name_);
 }
 
@@ -407,10 +408,12 @@ void MainWindow::show_practice(bool on) {
     return;
   }
   practice_dock_->setVisible(on);
-  if (on)
+  if (on) {
     practice_dock_->raise();
-  else
+    practice_->resume();  // an exercise left running goes on: its answer stays hidden
+  } else {
     end_practice();
+  }
 }
 
 void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {

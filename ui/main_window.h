@@ -139,6 +139,8 @@ class MainWindow : public QMainWindow {
   PracticePanel* practice_ = nullptr;
   bool practising_ = false;
   QAction* grand_action_;
+  QAction* open_preset_action_ = nullptr;
+  QAction* save_preset_action_ = nullptr;
   QAction* practice_action_ = nullptr;
   QString running_input_;  ///< what drives the key (PlaybackController::inputChanged)
   QAction* upright_action_;

@@ -13,6 +13,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -25,6 +26,8 @@
 #include "practice/exercise.h"
 #include "practice_report.h"
 #include "practice_runner.h"
+#include "setting_names.h"
+#include "step_slider.h"
 
 namespace pat::ui {
 namespace {
@@ -61,7 +64,13 @@ void wrap_lines(QListWidget* list) {
 
 PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   runner_ = new PracticeRunner(this);
-  auto* column = new QVBoxLayout(this);
+  // the form scrolls; the status line under it stays in view, so an answer's judgement, a hint
+  // or the score shows wherever the trainee has scrolled to
+  auto* outer = new QVBoxLayout(this);
+  outer->setContentsMargins(0, 0, 0, 0);
+  auto* scroll = new QScrollArea(this);
+  auto* content = new QWidget;
+  auto* column = new QVBoxLayout(content);
 
   auto* start_box = new QGroupBox(tr("Exercise"), this);
   auto* start_form = new QFormLayout(start_box);
@@ -137,17 +146,22 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   answer_grid->addWidget(answer_direction_, 0, 1);
   answer_grid->addWidget(second_setting_, 1, 0);
   answer_grid->addWidget(second_direction_, 1, 1);
+  reveal_button_ = new QPushButton(tr("Give up: show the answer"), answer_box);
+  reveal_button_->setObjectName("reveal_button");
+  reveal_button_->setToolTip(tr("Shows the hidden settings; answers given after it do not count"));
   answer_grid->addWidget(answer_button_, 2, 0);
   answer_grid->addWidget(hint_button_, 2, 1);
-  for (QWidget* w :
-       std::initializer_list<QWidget*>{answer_setting_, answer_direction_, second_setting_,
-                                       second_direction_, answer_button_, hint_button_})
+  answer_grid->addWidget(reveal_button_, 3, 0, 1, 2);
+  for (QWidget* w : std::initializer_list<QWidget*>{answer_setting_, answer_direction_,
+                                                    second_setting_, second_direction_,
+                                                    answer_button_, hint_button_, reveal_button_})
     w->setEnabled(false);
   second_setting_->hide();
   second_direction_->hide();
   column->addWidget(answer_box);
   connect(answer_button_, &QPushButton::clicked, this, &PracticePanel::answer_from_form);
   connect(hint_button_, &QPushButton::clicked, this, &PracticePanel::request_hint);
+  connect(reveal_button_, &QPushButton::clicked, this, &PracticePanel::reveal_answer);
 
   auto* correct_box = new QGroupBox(tr("Correction (relative moves; true positions hidden)"), this);
   auto* correct_layout = new QVBoxLayout(correct_box);
@@ -178,9 +192,18 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   history_layout->addWidget(past_sessions_);
   show_past_sessions();
   column->addWidget(history_box, 1);
+  scroll->setWidget(content);
+  scroll->setWidgetResizable(true);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  scroll->setMinimumWidth(content->sizeHint().width() + 24);
+  outer->addWidget(scroll, 1);
   status_ = new QLabel(this);
+  status_->setObjectName("practice_status");
   status_->setWordWrap(true);
-  column->addWidget(status_);
+  status_->setFrameShape(QFrame::StyledPanel);
+  status_->setMargin(6);
+  status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  outer->addWidget(status_);
 
   connect(runner_, &PracticeRunner::progress, this, [this](double f, const QString& stage) {
     progress_->setValue(static_cast<int>(std::lround(100 * f)));
@@ -208,12 +231,14 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
             if (!session_) return;
             const SessionScore s = session_->score(readings, elapsed_s());
             append_history();
-            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4, hints −%5)")
+            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4, hints −%5). "
+                           "The hidden setting: %6.")
                             .arg(s.total, 0, 'f', 1)
                             .arg(s.diagnosis, 0, 'f', 1)
                             .arg(s.regulation, 0, 'f', 1)
                             .arg(s.economy, 0, 'f', 1)
-                            .arg(s.hint_penalty, 0, 'f', 1));
+                            .arg(s.hint_penalty, 0, 'f', 1)
+                            .arg(QString::fromStdString(session_->answer_text())));
             export_button_->setEnabled(true);
             remember_session(s);
             emit scored(s.total);
@@ -284,8 +309,8 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
   answer_setting_->clear();
   second_setting_->clear();
   for (const RegulationSetting& s : regulated_->regulation) {
-    answer_setting_->addItem(QString::fromStdString(s.name));
-    second_setting_->addItem(QString::fromStdString(s.name));
+    answer_setting_->addItem(setting_title(s.name), QString::fromStdString(s.name));
+    second_setting_->addItem(setting_title(s.name), QString::fromStdString(s.name));
   }
   second_setting_->setVisible(session_->exercise().level == 2);
   second_direction_->setVisible(session_->exercise().level == 2);
@@ -307,15 +332,15 @@ void PracticePanel::build_adjusters() {
     auto* row = new QWidget(adjusters_box_);
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* slider = new QSlider(Qt::Horizontal, row);
+    auto* slider = new StepSlider(Qt::Horizontal, row);
     slider->setRange(-kSliderSpanSteps, kSliderSpanSteps);
     slider->setValue(0);
-    slider->setToolTip(tr("Moves the %1 adjuster relative to where you found it")
-                           .arg(QString::fromStdString(s.name)));
+    slider->setToolTip(
+        tr("Moves the %1 adjuster relative to where you found it").arg(setting_title(s.name)));
     auto* moved = new QLabel(tr("moved 0.00 mm"), row);
     layout->addWidget(slider, 1);
     layout->addWidget(moved);
-    form->addRow(QString::fromStdString(s.name), row);
+    form->addRow(setting_title(s.name), row);
     sliders_[s.name] = slider;
     moved_labels_[s.name] = moved;
     const std::string name = s.name;
@@ -360,10 +385,10 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
 
 void PracticePanel::answer_from_form() {
   if (!session_) return;
-  std::vector<FaultAnswer> answers{{answer_setting_->currentText().toStdString(),
+  std::vector<FaultAnswer> answers{{answer_setting_->currentData().toString().toStdString(),
                                     answer_direction_->currentData().toString().toStdString()}};
   if (session_->exercise().level == 2)
-    answers.push_back({second_setting_->currentText().toStdString(),
+    answers.push_back({second_setting_->currentData().toString().toStdString(),
                        second_direction_->currentData().toString().toStdString()});
   submit_answer(answers);
 }
@@ -374,6 +399,20 @@ QString PracticePanel::request_hint() {
   show_status(tr("Hint: %1").arg(hint));
   append_history();
   return hint;
+}
+
+QString PracticePanel::reveal_answer() {
+  if (!session_) return {};
+  const QString text = QString::fromStdString(session_->reveal(elapsed_s()));
+  show_status(text + " " + tr("Answers from now on are judged but not scored."));
+  append_history();
+  return text;
+}
+
+void PracticePanel::resume() {
+  if (!session_) return;
+  emit practiceActive(true);
+  emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
 }
 
 void PracticePanel::move_adjuster(const std::string& setting, double delta_mm) {
@@ -435,7 +474,7 @@ void PracticePanel::set_busy(bool busy) {
   cancel_->setEnabled(busy);
   for (QWidget* w : std::initializer_list<QWidget*>{
            answer_setting_, answer_direction_, second_setting_, second_direction_, answer_button_,
-           hint_button_, finish_button_, adjusters_box_})
+           hint_button_, reveal_button_, finish_button_, adjusters_box_})
     w->setEnabled(active && !busy);
   if (!busy) {
     progress_->setValue(progress_->maximum());

@@ -40,6 +40,11 @@ class PracticePanel : public QWidget {
   AnswerJudgement submit_answer(const std::vector<FaultAnswer>& answers);
   /// The next hint (also shown and kept in the history).
   QString request_hint();
+  /// Gives up: shows the hidden settings (later answers no longer count).
+  QString reveal_answer();
+  /// Shows a running exercise again (the practice mode reopened): practiceActive(true) and the
+  /// hidden action as corrected so far; nothing when none was started.
+  void resume();
   /// Moves an adjuster relative to where it is (as the slider does). Throws InputError.
   void move_adjuster(const std::string& setting, double delta_mm);
   /// Measures the correction in the background and scores the session (scored() follows).
@@ -96,6 +101,7 @@ class PracticePanel : public QWidget {
   QComboBox* second_direction_;
   QPushButton* answer_button_;
   QPushButton* hint_button_;
+  QPushButton* reveal_button_;
   QPushButton* finish_button_;
   QPushButton* export_button_;
   QWidget* adjusters_box_;

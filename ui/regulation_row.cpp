@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "setting_names.h"
+#include "step_slider.h"
 
 namespace pat::ui {
 namespace {
@@ -47,7 +48,7 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
                             .arg(part.toHtmlEscaped())));
   name_label_->setToolTip(tip);
 
-  slider_ = new QSlider(Qt::Horizontal, parent);
+  slider_ = new StepSlider(Qt::Horizontal, parent);
   slider_->setRange(static_cast<int>(std::round(adjuster.min * 1e3 * kSliderStepsPerMm)),
                     static_cast<int>(std::round(adjuster.max * 1e3 * kSliderStepsPerMm)));
   slider_->setToolTip(tip);

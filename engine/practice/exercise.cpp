@@ -211,7 +211,10 @@ AnswerJudgement judge_answers(const Exercise& exercise, const std::vector<FaultA
     const auto match = std::find_if(expected.begin(), expected.end(),
                                     [&](const FaultAnswer& e) { return e.setting == a.setting; });
     if (match == expected.end()) {
-      judgement.remarks.push_back(a.setting + ": not deregulated");
+      // its reading may well be off: another setting's adjuster can move it along
+      judgement.remarks.push_back(a.setting +
+                                  ": its adjuster was not moved (a reading can be off because "
+                                  "another setting moves it)");
       judgement.score -= per_fault;
     } else if (match->direction == a.direction) {
       judgement.remarks.push_back(a.setting + ": right setting, right direction");

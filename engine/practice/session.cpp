@@ -23,6 +23,22 @@ std::string measuring_test(const std::string& setting) {
   return "the rest geometry";
 }
 
+/// The observation (observations.h) that measures a setting directly: the symptom read from it
+/// points at the setting itself rather than at one it moves along.
+std::string own_observation(const std::string& kind, const std::string& setting) {
+  if (setting == "key_dip") return "rest.key_travel_mm";
+  if (setting == "hammer_blow") return "rest.hammer_distance_mm";
+  if (setting == "lever_height" || (setting == "lost_motion" && kind == "upright"))
+    return "rest.escapement_gap_mm";
+  if (setting == "jack_position") return "rest.jack_edge_mm";
+  if (setting == "bridle") return "rest.strap_slack_mm";
+  if (setting == "let_off") return "slow_press.escapement_distance_mm";
+  if (setting == "drop") return "slow_press.held_distance_mm";
+  if (setting == "damper_lift") return "slow_press.damper_start_fraction";
+  if (setting == "checking") return "forte_blow.caught_distance_mm";
+  return {};
+}
+
 std::string answers_text(const std::vector<FaultAnswer>& answers) {
   std::string text;
   for (const FaultAnswer& a : answers)
@@ -77,6 +93,10 @@ std::vector<Symptom> PracticeSession::record_test(
 
 AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, double t_s) {
   AnswerJudgement judgement = judge_answers(exercise_, given);
+  if (revealed_) {  // judged, not scored: the answer was shown
+    history_.push_back({t_s, "answer", answers_text(given) + " → after the answer was shown"});
+    return judgement;
+  }
   if (!first_answer_)
     first_answer_ = judgement;
   else if (!judgement.correct && !diagnosed_)
@@ -94,13 +114,20 @@ std::string PracticeSession::hint(double t_s) {
   const FaultAnswer& first = answers.front();
   std::string text;
   switch (hints_used_) {
-    case 0:
+    case 0: {
+      // the symptom of the setting's own measurement when it was seen: another symptom may be
+      // a consequence that points at a different setting (a grand's lever height also moves
+      // the hammer's rest, which reads as a hammer-blow symptom)
+      const std::string own = own_observation(regulated_.kind, first.setting);
+      const auto direct = std::find_if(symptoms_seen_.begin(), symptoms_seen_.end(),
+                                       [&](const Symptom& s) { return s.observation == own; });
       text = symptoms_seen_.empty()
                  ? "Run the four tests first: the rest geometry, a slow key press, a forte blow "
                    "and repeated notes; compare each number with the regulated action."
                  : "Start from this symptom and ask which setting makes it: " +
-                       symptoms_seen_.front().text;
+                       (direct != symptoms_seen_.end() ? direct : symptoms_seen_.begin())->text;
       break;
+    }
     case 1:
       text = "The hidden setting is measured in " + measuring_test(first.setting) + ".";
       break;
@@ -114,6 +141,27 @@ std::string PracticeSession::hint(double t_s) {
   }
   ++hints_used_;
   history_.push_back({t_s, "hint", text});
+  return text;
+}
+
+std::string PracticeSession::answer_text() const {
+  const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
+  std::string text;
+  for (std::size_t i = 0; i < answers.size() && i < exercise_.faults.size(); ++i) {
+    const double mm = exercise_.faults[i].adjuster_mm;
+    text += (text.empty() ? "" : "; ") + answers[i].setting + " " + answers[i].direction +
+            " than its target (its adjuster moved " + (mm >= 0 ? "+" : "") + format_fixed(mm, 2) +
+            " mm)";
+  }
+  return text;
+}
+
+std::string PracticeSession::reveal(double t_s) {
+  const std::string text = "The hidden setting" +
+                           std::string(exercise_.faults.size() > 1 ? "s were: " : " was: ") +
+                           answer_text() + ".";
+  if (!revealed_) history_.push_back({t_s, "reveal", text});
+  revealed_ = true;
   return text;
 }
 
@@ -171,7 +219,10 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
       // the hidden deviation is the scale; when the hidden action could not be measured (no
       // escapement, no check), the setting's tolerance ×10 stands for it
       const double tolerance = regulated_.regulation[regulated_.setting_index(f.setting)].tolerance;
-      const double scale = std::isfinite(initial) && initial > tolerance ? initial : 10 * tolerance;
+      // the part of the deviation beyond the tolerance is what there was to correct: a setting
+      // left as found earns nothing
+      const double scale =
+          std::isfinite(initial) && initial > tolerance ? initial - tolerance : 10 * tolerance;
       removed = std::clamp(1.0 - std::max(0.0, residual - tolerance) / scale, 0.0, 1.0);
       how = "off by " + format_number(residual) + " after, " +
             (std::isfinite(initial) ? format_number(initial) : std::string("unmeasurable")) +

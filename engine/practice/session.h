@@ -5,12 +5,14 @@
 //
 // Score (0–100):
 //   diagnosis   50 × the first answer's judgement (judge_answers), − 5 per later wrong answer;
-//   regulation  40 × the mean, over the hidden faults, of the fraction of the measured
-//               deviation removed (1 − |corrected − regulated| / |hidden − regulated|, in [0, 1]),
+//   regulation  40 × the mean, over the hidden faults, of the fraction of the deviation beyond
+//               the tolerance tol removed: 1 − max(0, |corrected − regulated| − tol) /
+//               (|hidden − regulated| − tol), in [0, 1] (a fault left as found earns nothing),
 //               − 5 per setting that was not faulty but was left moved by more than 0.05 mm;
 //   economy     10 − 1 per test run beyond the four different tests − 1 per full two minutes
 //               beyond the first ten (never below 0);
 //   hints       − 5 each.
+// After the answer is revealed (reveal()), answers are still judged but no longer scored.
 #pragma once
 
 #include <map>
@@ -68,8 +70,15 @@ class PracticeSession {
                                    double t_s);
   /// Gives a diagnosis; the first one counts for the score.
   AnswerJudgement answer(const std::vector<FaultAnswer>& given, double t_s);
-  /// The next hint (each more telling than the last, the last names the setting).
+  /// The next hint (each more telling than the last, the last names the setting). The first
+  /// quotes the symptom read from the hidden setting's own measurement when one was seen.
   std::string hint(double t_s);
+  /// Gives up: the hidden settings in words (recorded in the history); answers given after it
+  /// are judged but do not count for the score.
+  std::string reveal(double t_s);
+  /// The hidden settings in words: each setting, its direction and its adjuster's offset.
+  std::string answer_text() const;
+  bool revealed() const { return revealed_; }
   /// Moves an adjuster by `delta_mm` relative to where it is (the trainee's slider). Throws
   /// InputError for an unknown setting or a move beyond the adjuster's physical range.
   void move_adjuster(const std::string& setting, double delta_mm, double t_s);
@@ -97,6 +106,7 @@ class PracticeSession {
   int hints_used_ = 0;
   int wrong_answers_after_first_ = 0;
   bool diagnosed_ = false;
+  bool revealed_ = false;
   std::optional<AnswerJudgement> first_answer_;
   std::vector<Symptom> symptoms_seen_;
   std::optional<SessionScore> final_score_;

@@ -218,9 +218,14 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   EXPECT_DOUBLE_EQ(s.economy, 10.0);
   EXPECT_DOUBLE_EQ(s.hint_penalty, 5.0);
   EXPECT_DOUBLE_EQ(s.total, 45.0);
-  // half the deviation left (1.5 of 3 mm, minus the 0.05 mm tolerance): about half the marks
+  // half the deviation left: 1.45 of the 2.95 mm beyond the 0.05 mm tolerance remain
   const SessionScore half = session.score({{"checking", 16.0, 19.0, 17.5}}, 120.0);
-  EXPECT_NEAR(half.regulation, 40.0 * (1.0 - 1.45 / 3.0), 1e-9);
+  EXPECT_NEAR(half.regulation, 40.0 * (1.0 - 1.45 / 2.95), 1e-9);
+  // the fault left as found earns nothing, however small it is against the tolerance
+  EXPECT_DOUBLE_EQ(session.score({{"checking", 16.0, 19.0, 19.0}}, 120.0).regulation, 0.0);
+  EXPECT_DOUBLE_EQ(session.score({{"checking", 16.0, 16.3, 16.3}}, 120.0).regulation, 0.0);
+  // within the tolerance counts as corrected
+  EXPECT_DOUBLE_EQ(session.score({{"checking", 16.0, 19.0, 16.04}}, 120.0).regulation, 40.0);
 
   const std::string csv =
       (std::filesystem::temp_directory_path() / "pat_practice_session.csv").string();
@@ -232,6 +237,44 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   EXPECT_NE(text.find("score"), std::string::npos);
   std::filesystem::remove(csv);
   EXPECT_THROW(write_session_csv("/nonexistent/dir/session.csv", session), InputError);
+}
+
+TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
+  // A grand's lever height also moves the hammer's rest (the lever carries the knuckle at
+  // rest), so the rest geometry shows a hammer-blow symptom first; the hint must not send the
+  // trainee there when the lever's own reading, the knuckle-jack gap, differs too.
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 0, 1);
+  e.faults = {{"lever_height", -0.16}};
+  PracticeSession session(e, model);
+  auto number = [](const std::string& id, double v) { return Observation{id, id, "mm", v, ""}; };
+  const std::vector<Observation> regulated{number("rest.hammer_distance_mm", 45.0),
+                                           number("rest.escapement_gap_mm", 0.5)};
+  const std::vector<Observation> seen{number("rest.hammer_distance_mm", 46.2),
+                                      number("rest.escapement_gap_mm", 0.2)};
+  const auto symptoms = session.record_test(PracticeTest::Rest, seen, regulated, 10.0);
+  ASSERT_EQ(symptoms.size(), 2u);
+  ASSERT_EQ(symptoms.front().observation, "rest.hammer_distance_mm");  // seen first
+  const std::string hint = session.hint(20.0);
+  EXPECT_NE(hint.find(symptoms.back().text), std::string::npos) << hint;
+  EXPECT_EQ(hint.find(symptoms.front().text), std::string::npos) << hint;
+}
+
+TEST(PracticeSession, RevealShowsTheAnswerAndLaterAnswersDoNotCount) {
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 3, 1);
+  e.faults = {{"checking", 2.0}};
+  PracticeSession session(e, model);
+  const FaultAnswer right = exercise_answers(e).front();
+  const std::string shown = session.reveal(30.0);
+  EXPECT_NE(shown.find("checking " + right.direction + " than its target"), std::string::npos)
+      << shown;
+  EXPECT_NE(shown.find("+2.00 mm"), std::string::npos) << shown;
+  EXPECT_TRUE(session.answer({right}, 40.0).correct);  // still judged
+  EXPECT_FALSE(session.first_answer()) << "an answer after the reveal does not count";
+  const SessionScore s = session.score({{"checking", 16.0, 19.0, 19.0}}, 60.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis, 0.0);
+  EXPECT_EQ(session.history()[1].kind, "reveal");  // after "start"
 }
 
 }  // namespace

@@ -10,9 +10,11 @@
 #include <QFile>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QShortcut>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QWheelEvent>
 
 #include "core/error.h"
 #include "main_window.h"
@@ -20,6 +22,7 @@
 #include "practice/exercise.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
+#include "step_slider.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
@@ -31,6 +34,8 @@ class PracticePanelTest : public QObject {
  private slots:
   void walk_through_an_exercise();
   void broken_exercise_file_is_refused_with_its_field();
+  void giving_up_shows_the_answer();
+  void adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel();
 };
 
 void PracticePanelTest::walk_through_an_exercise() {
@@ -60,6 +65,10 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
   // the window now runs the hidden action: its adjusters moved, nothing on screen says where
   QVERIFY(window.model()->adjusters[window.model()->adjuster_index("checking")].value != 0.0);
+  // nor can another action, a preset or a saved preset of the hidden action be opened
+  for (QAction* action : window.menuBar()->findChildren<QAction*>())
+    if (action->text().contains("preset") || action->text() == "&Upright")
+      QVERIFY2(!action->isEnabled(), qPrintable(action->text()));
 
   // observe: the forte blow runs in the background while the event loop keeps turning (measured
   // once the window has been painted: its first paint is not the test's business)
@@ -121,6 +130,8 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(wait_until([&] { return scored.count() == 1; }, 60000));
   const pat::SessionScore score = *panel->session()->final_score();
   QVERIFY2(score.regulation > 39.0, qPrintable(panel->status_text()));
+  // the score comes with the answer
+  QVERIFY2(panel->status_text().contains("The hidden setting: "), qPrintable(panel->status_text()));
   QVERIFY(score.total > 0.0);
   // the scored session is remembered for the next run of the program
   QVERIFY(panel->past_sessions().value(0).contains("Grand, level 2"));
@@ -145,6 +156,56 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(!window.findChild<QDockWidget*>("practice_dock")->isVisibleTo(&window));
   QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
   for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
+  for (QAction* action : window.menuBar()->findChildren<QAction*>())
+    if (action->text().contains("preset")) QVERIFY(action->isEnabled());
+
+  // reopened, the exercise goes on with its answer hidden again (the regulation panel would show
+  // the hidden action's readings)
+  practice_mode->trigger();
+  QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
+  practice_mode->trigger();
+}
+
+void PracticePanelTest::giving_up_shows_the_answer() {
+  MainWindow window;
+  window.open_action("grand");
+  PracticePanel* panel = window.practice();
+  panel->start_seed("grand", 5, 1);
+  auto* reveal = panel->findChild<QPushButton*>("reveal_button");
+  QVERIFY(reveal && reveal->isEnabled());
+  QTest::mouseClick(reveal, Qt::LeftButton);
+  const pat::FaultAnswer hidden = pat::exercise_answers(panel->session()->exercise()).front();
+  QVERIFY2(panel->status_text().contains(
+               QString::fromStdString(hidden.setting + " " + hidden.direction)),
+           qPrintable(panel->status_text()));
+  QVERIFY(panel->session()->revealed());
+}
+
+void PracticePanelTest::adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel() {
+  // the window steps the simulation on Left/Right: a focused adjuster slider keeps those keys
+  QWidget host;
+  auto* slider = new pat::ui::StepSlider(Qt::Horizontal, &host);
+  slider->setRange(-10, 10);
+  int steps = 0;
+  auto* step = new QShortcut(QKeySequence(Qt::Key_Right), &host);
+  QObject::connect(step, &QShortcut::activated, [&] { ++steps; });
+  host.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&host));
+  // not focused: the shortcut has the key, and a wheel passing over leaves the slider alone
+  host.setFocus();
+  QTest::keyClick(&host, Qt::Key_Right);
+  QCOMPARE(steps, 1);
+  QWheelEvent wheel(QPointF(5, 5), slider->mapToGlobal(QPointF(5, 5)), QPoint(), QPoint(0, 120),
+                    Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(slider, &wheel);
+  QCOMPARE(slider->value(), 0);
+  // focused: the arrow moves the slider, not the simulation
+  slider->setFocus();
+  QTRY_VERIFY(slider->hasFocus());
+  QTest::keyClick(slider, Qt::Key_Right);
+  QCOMPARE(slider->value(), 1);
+  QCOMPARE(steps, 1);
 }
 
 void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
