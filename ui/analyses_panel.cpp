@@ -155,7 +155,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   connect(runner_, &AnalysisRunner::finished, this,
           [this](const QString& title, const AnalysisResult& result) {
             set_busy(false);
-            show_result(title, result);
+            show_result(title, result, running_action_);
           });
   connect(runner_, &AnalysisRunner::cancelled, this, [this](const QString& title) {
     set_busy(false);
@@ -173,7 +173,8 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
         QFileDialog::getSaveFileName(this, tr("Export the table"), {}, tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
     try {
-      write_table_csv(path);
+      const QStringList written = write_table_csv(path);
+      if (written.size() > 1) stage_->setText(tr("Tables written: %1").arg(written.join(", ")));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
     }
@@ -401,6 +402,7 @@ bool AnalysesPanel::run(const QString& name) {
   }
   summary_->setText(tr("%1: running…").arg(entry.name));
   set_busy(true);
+  running_action_ = QString::fromStdString(model->kind);
   runner_->start(entry.name, std::move(task));
   return true;
 }
@@ -443,10 +445,13 @@ void AnalysesPanel::clear_result() {
   export_report_->hide();
 }
 
-void AnalysesPanel::show_result(const QString& title, const AnalysisResult& result) {
+void AnalysesPanel::show_result(const QString& title, const AnalysisResult& result,
+                                const QString& action) {
   clear_result();
   result_title_ = title;
-  summary_->setText(result.summary.isEmpty() ? title : title + ": " + result.summary);
+  // the result names its action: it stays on show when the window changes to the other one
+  const QString heading = action.isEmpty() ? title : tr("%1 (%2)").arg(title, action);
+  summary_->setText(result.summary.isEmpty() ? heading : heading + ": " + result.summary);
   table_->setRowCount(static_cast<int>(result.table.size()));
   for (int r = 0; r < table_->rowCount(); ++r) {
     const AnalysisTableRow& row = result.table[r];
@@ -517,15 +522,37 @@ void AnalysesPanel::write_report(const QString& folder) const {
                  QSize(1200, 700));
 }
 
-void AnalysesPanel::write_table_csv(const QString& path) const {
-  QFile file(path);
-  if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
-    throw InputError(path.toStdString() + ": cannot write: " + file.errorString().toStdString());
-  QTextStream out(&file);
-  out << "quantity,value,unit\n";
+QStringList AnalysesPanel::write_table_csv(const QString& path) const {
+  auto write = [](const QString& file_path, const QStringList& columns,
+                  const std::vector<QStringList>& rows) {
+    QFile file(file_path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate | QIODevice::Text))
+      throw InputError(file_path.toStdString() +
+                       ": cannot write: " + file.errorString().toStdString());
+    QTextStream out(&file);
+    QStringList fields;
+    for (const QString& c : columns) fields << csv_field(c);
+    out << fields.join(',') << '\n';
+    for (const QStringList& row : rows) {
+      fields.clear();
+      for (const QString& v : row) fields << csv_field(v);
+      out << fields.join(',') << '\n';
+    }
+  };
+  std::vector<QStringList> rows;
   for (int r = 0; r < table_->rowCount(); ++r)
-    out << csv_field(table_->item(r, 0)->text()) << ',' << csv_field(table_->item(r, 1)->text())
-        << ',' << csv_field(table_->item(r, 2)->text()) << '\n';
+    rows.push_back(
+        {table_->item(r, 0)->text(), table_->item(r, 1)->text(), table_->item(r, 2)->text()});
+  write(path, {"quantity", "value", "unit"}, rows);
+  QStringList written{path};
+  const QFileInfo info(path);
+  for (const AnalysisGrid& grid : result_.grids) {
+    const QString grid_path =
+        info.dir().filePath(info.completeBaseName() + "_" + file_stem(grid.title) + ".csv");
+    write(grid_path, grid.columns, grid.rows);
+    written << grid_path;
+  }
+  return written;
 }
 
 }  // namespace pat::ui

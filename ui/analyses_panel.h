@@ -68,9 +68,13 @@ class AnalysesPanel : public QWidget {
   void write_report(const QString& folder) const;
   bool has_report() const { return static_cast<bool>(result_.write_report); }
   /// Shows a result computed elsewhere (the deregulation demo) as if run here.
-  void show_result(const QString& title, const AnalysisResult& result);
-  /// Writes the result table as CSV (quantity,value,unit). Throws InputError naming the file.
-  void write_table_csv(const QString& path) const;
+  /// `action` (the kind it ran on, e.g. "grand"), when given, is named in the summary.
+  void show_result(const QString& title, const AnalysisResult& result,
+                   const QString& action = QString());
+  /// Writes the result table as CSV (quantity,value,unit), and each of the result's other
+  /// tables (a sweep's cycles, a diagnosis's candidates) beside it as PATH-STEM_TABLE.csv with
+  /// its own columns. Returns the files written. Throws InputError naming the file.
+  QStringList write_table_csv(const QString& path) const;
 
  signals:
   /// The user asked to export these plots (the window owns the file dialog and the size).
@@ -113,6 +117,7 @@ class AnalysesPanel : public QWidget {
   std::vector<QTableWidget*> grids_;
   AnalysisResult result_;
   QString result_title_;
+  QString running_action_;  ///< the kind of action the running analysis runs on
 };
 
 }  // namespace pat::ui

@@ -82,10 +82,17 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
       result.table.push_back(
           {name + QObject::tr(": run stopped"), QString::fromStdString(a.run.stop_cause), ""});
     if (o.repetition_limits) {
+      // the method in the name: a chirp's limit depends on where it starts and how fast it
+      // rises, so the sweep analysis with other settings reads another value
+      const QString method = QObject::tr("chirp from %1 Hz at %2 Hz/s")
+                                 .arg(number(o.sweep.f_start_hz))
+                                 .arg(number(o.sweep.chirp_rate_hz_per_s));
       result.table.push_back(
-          {name + QObject::tr(": repetition limit, full stroke"), limit_text(a.full_stroke), "Hz"});
+          {name + QObject::tr(": repetition limit, full stroke (%1)").arg(method),
+           limit_text(a.full_stroke), "Hz"});
       result.table.push_back(
-          {name + QObject::tr(": repetition limit, half stroke"), limit_text(a.half_stroke), "Hz"});
+          {name + QObject::tr(": repetition limit, half stroke (%1)").arg(method),
+           limit_text(a.half_stroke), "Hz"});
       // a limit found, and a lower bound (no failure up to the sweep's end) as its own series
       // so that the two do not look alike; a stroke without a repeating range has no point,
       // and the title says so

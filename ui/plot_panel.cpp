@@ -310,7 +310,7 @@ QString PlotPanel::cursor_readout() const {
   return lines.join('\n');
 }
 
-void PlotPanel::update_cursor_items() {
+void PlotPanel::update_cursor_items(bool for_export) {
   for (int i = 0; i < 2; ++i) {
     const bool shown = cursors_enabled_ && cursors_[i].has_value();
     cursor_lines_[i]->setVisible(shown);
@@ -322,10 +322,11 @@ void PlotPanel::update_cursor_items() {
   QString text = cursors_enabled_ ? cursor_readout() : QString();
   if (text.isEmpty() && cursors_enabled_ && (cursors_[0] || cursors_[1])) {
     const int which = cursors_[0] ? 0 : 1;
-    text = tr("%1 at %2 %3 (click: A, right click: B)")
+    text = tr("%1 at %2 %3")
                .arg(kCursorNames[which])
                .arg(*cursors_[which] * x_readout_scale_, 0, 'f', 2)
                .arg(x_readout_unit_);
+    if (!for_export) text += " " + tr("(click: A, right click: B)");
   }
   // the readout in a row of its own under the title, while there is one: inside the plot it ran
   // into the legend and covered data
@@ -355,13 +356,14 @@ void PlotPanel::render(QPaintDevice& device,
   painter.setMode(QCPPainter::pmNoCaching);  // full polylines (not the screen's fast segments)
   painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
   for (const auto& [panel, rect] : plots) {
-    panel->update_cursor_items();
+    panel->update_cursor_items(true);
     panel->time_mark_line_->setVisible(false);
     painter.save();
     painter.translate(rect.topLeft());
     panel->plot_->toPainter(&painter, rect.width(), rect.height());
     painter.restore();
     panel->time_mark_line_->setVisible(panel->time_mark_.has_value());
+    panel->update_cursor_items();  // the screen's readout again
   }
 }
 

@@ -108,7 +108,9 @@ class PlotPanel : public QWidget {
  private:
   /// Sets the title, axis, legend, readout and marker fonts from the widget's font.
   void apply_fonts();
-  void update_cursor_items();
+  /// Cursor lines and the readout row; `for_export`: without the on-screen instruction ("click:
+  /// A, right click: B"), which means nothing in an exported picture.
+  void update_cursor_items(bool for_export = false);
   /// Takes the legend out of the plot area into a row under it (categories, many series).
   void move_legend_below();
 

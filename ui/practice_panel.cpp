@@ -445,9 +445,11 @@ void PracticePanel::export_report(const QString& pdf_path, const QString& csv_pa
 }
 
 void PracticePanel::export_from_dialog() {
-  const QString pdf =
+  QString pdf =
       QFileDialog::getSaveFileName(this, tr("Export the session report"), {}, tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
+  // a name typed without its extension ("session") still makes session.pdf and session.csv
+  if (!pdf.endsWith(".pdf", Qt::CaseInsensitive)) pdf += ".pdf";
   QString csv = pdf;
   csv.replace(QRegularExpression("\\.pdf$", QRegularExpression::CaseInsensitiveOption), "");
   csv += ".csv";

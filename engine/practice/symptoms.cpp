@@ -67,6 +67,10 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
       out.add("short_blow", "Hammer rests closer to the string" + v + ": a short blow, less power.",
               seen);
   } else if (id == "rest.escapement_gap_mm") {
+    // the part the jack lifts: its label names it (observations.cpp: the grand's knuckle, the
+    // upright's hammer butt)
+    const std::string part =
+        seen.label.find("knuckle") != std::string::npos ? "the knuckle" : "the hammer butt";
     if (more)
       out.add("excess_gap",
               "Lost motion at rest" + v +
@@ -75,14 +79,15 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
               seen);
     else if (*seen.value <= 0.0)
       out.add("no_gap",
-              "No gap at rest" + v +
-                  ": the jack presses against its part and cannot return under it — "
+              "No gap at rest" + v + ": the jack presses against " + part +
+                  " and cannot return under it — "
                   "failure to repeat.",
               seen);
     else
-      out.add("small_gap",
-              "Smaller gap at rest" + v + ": little room for the jack to return under its part.",
-              seen);
+      out.add(
+          "small_gap",
+          "Smaller gap at rest" + v + ": little room for the jack to return under " + part + ".",
+          seen);
   } else if (id == "rest.jack_edge_mm") {
     if (more)
       out.add("jack_deep",

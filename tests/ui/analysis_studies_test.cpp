@@ -7,6 +7,7 @@
 // PAT_UI_SHOTS=DIR keeps a picture of the window with each result for a person to look at.
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QSignalSpy>
 #include <QTabWidget>
 #include <QTableWidget>
@@ -151,6 +152,19 @@ void AnalysisStudiesTest::short_sweep_shows_its_maximum() {
   }
   QCOMPARE(panel->grids().size(), std::size_t(1));
   QVERIFY(panel->grids().front()->rowCount() > 20);
+  // the table export writes the cycles too, beside the summary, one row a cycle
+  QTemporaryDir dir;
+  const QStringList written = panel->write_table_csv(dir.filePath("sweep.csv"));
+  QCOMPARE(written.size(), 2);
+  QCOMPARE(QFileInfo(written[1]).fileName(), QString("sweep_cycles.csv"));
+  QFile cycles(written[1]);
+  QVERIFY(cycles.open(QIODevice::ReadOnly));
+  const QStringList cycle_lines =
+      QString::fromUtf8(cycles.readAll()).split('\n', Qt::SkipEmptyParts);
+  QCOMPARE(cycle_lines.size(), panel->grids().front()->rowCount() + 1);
+  // the summary names the action it ran on (it stays when the window changes action)
+  QVERIFY2(panel->summary().startsWith("Repetition") && panel->summary().contains("(upright)"),
+           qPrintable(panel->summary()));
   keep_picture(window, "sweep_upright_full_chirp", {"Hammer", "Strikes", "Cycles"});
 
   // steps: one run per frequency, the failed cycles per frequency plotted
@@ -218,8 +232,10 @@ void AnalysisStudiesTest::comparison_overlays_both_actions() {
   const double t_upright = table_value(panel, "upright: impact time").toDouble(&ok_upright);
   QVERIFY(ok_grand && ok_upright);
   QVERIFY(t_grand > 0.0 && t_upright > 0.0 && t_grand != t_upright);
-  QVERIFY(!table_value(panel, "grand: repetition limit, full stroke").isEmpty());
-  QVERIFY(!table_value(panel, "upright: repetition limit, half stroke").isEmpty());
+  QVERIFY(!table_value(panel, "grand: repetition limit, full stroke (chirp from 2 Hz at 1 Hz/s)")
+               .isEmpty());
+  QVERIFY(!table_value(panel, "upright: repetition limit, half stroke (chirp from 2 Hz at 1 Hz/s)")
+               .isEmpty());
   for (const QString& title : {"Key angle", "Hammer angle", "Hammer–string gap"}) {
     pat::ui::PlotPanel* plot = plot_titled(panel, title);
     QVERIFY2(plot, qPrintable(title));
@@ -245,7 +261,8 @@ void AnalysisStudiesTest::comparison_overlays_both_actions() {
   QVERIFY(panel->set_parameter("limits", "without"));
   QVERIFY(panel->run(kCompare));
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
-  QVERIFY(table_value(panel, "grand: repetition limit, full stroke").isEmpty());
+  QVERIFY(table_value(panel, "grand: repetition limit, full stroke (chirp from 2 Hz at 1 Hz/s)")
+              .isEmpty());
   QVERIFY(!plot_titled(panel, "Repetition limits"));
 }
 

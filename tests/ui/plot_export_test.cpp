@@ -107,6 +107,15 @@ void PlotExportTest::csv_holds_the_visible_range_only() {
 
 void PlotExportTest::cursors_give_delta_t_and_delta_value() {
   QVERIFY(angles_->cursor_readout().isEmpty());
+  // one cursor: the screen says how to place the other, an exported picture does not
+  angles_->set_cursor(0, 0.010);
+  const QString svg = dir_.filePath("one_cursor.svg");
+  pat::ui::export_plots({angles_.get()}, svg, QSize(640, 300));
+  QFile svg_file(svg);
+  QVERIFY(svg_file.open(QIODevice::ReadOnly));
+  const QByteArray picture = svg_file.readAll();
+  QVERIFY(picture.contains("A at 10.00 ms"));
+  QVERIFY(!picture.contains("right click"));
   angles_->set_cursor(0, 0.010);
   angles_->set_cursor(1, 0.050);
   const QString readout = angles_->cursor_readout();
