@@ -19,6 +19,7 @@
 #include "measured/alignment.h"
 #include "measured/input_estimate.h"
 #include "measured/model_trace.h"
+#include "measured/raw_import.h"
 #include "sim/key_travel.h"
 #include "sim/static_equilibrium.h"
 
@@ -454,6 +455,33 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   w.fit.training_rms_deg = std::sqrt(training_cost / static_cast<double>(training_samples));
 }
 
+/// Refuses a hammer trace that cannot be in degrees from rest toward the string (DESIGN.md
+/// section 5) for an action whose hammer turns `contact_deg` from rest to the string: one that
+/// moves less than a tenth of that (radians, or a hammer that never rises), or that goes half of
+/// it below rest (the sign reversed) or half of it beyond the string. The real strike overshoots
+/// its rest by 2.5 deg on its return and peaks 0.1 deg past contact (felt compression).
+void check_angle_units(const MeasuredTrial& trial, double contact_deg) {
+  const auto [low, high] = std::minmax_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
+  std::ostringstream problem;
+  problem << trial.path << ": hammer_angle_deg runs from " << format_fixed(*low, 3) << " to "
+          << format_fixed(*high, 3) << " deg, ";
+  if (*high - *low < 0.1 * contact_deg) {
+    problem << "less than a tenth of the " << format_fixed(contact_deg, 1)
+            << " deg the hammer turns from rest to the string: are the angles in radians, or does "
+               "the hammer never rise?";
+  } else if (*low < -0.5 * contact_deg) {
+    problem << "more than half the hammer's " << format_fixed(contact_deg, 1)
+            << " deg stroke below rest: angles are positive toward the string (is the sign "
+               "reversed?)";
+  } else if (*high > 1.5 * contact_deg) {
+    problem << "half the hammer's " << format_fixed(contact_deg, 1)
+            << " deg stroke beyond the string: are the angles in degrees from rest?";
+  } else {
+    return;
+  }
+  throw InputError(problem.str());
+}
+
 PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
   PreparedTrial p;
   p.data = trial;
@@ -481,7 +509,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   Diagnosis d;
   d.action = model.kind;
   std::vector<PreparedTrial> prepared;
-  for (const MeasuredTrial& t : trials) prepared.push_back(prepare(model, t));
+  const double contact_deg = hammer_contact_angle_deg(model);
+  for (const MeasuredTrial& t : trials) {
+    prepared.push_back(prepare(model, t));  // first: a trial with no input says so
+    check_angle_units(t, contact_deg);
+  }
   const std::size_t n_trials = prepared.size();
   d.held_out = n_trials > 1;
   Evaluator ev(prepared);

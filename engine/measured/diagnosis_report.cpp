@@ -15,11 +15,55 @@ nlohmann::json finite_or_null(double x) {
   return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
 }
 
-/// The phase names in index order, space separated (the "phases" metadata line).
+/// The phase names in index order, space separated (the traces' "phases" metadata line).
 std::string phase_list() {
   std::string list;
   for (const std::string& p : phase_names()) list += (list.empty() ? "" : " ") + p;
   return list;
+}
+
+/// A CSV field: quoted when it holds a comma, a quote or a line break.
+std::string csv_text(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';  // a quote is doubled
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+/// A number to 10 significant digits, or an empty field where it is not finite (a candidate
+/// that was not validated has no held-out error).
+std::string csv_number(double x) {
+  if (!std::isfinite(x)) return {};
+  char buffer[32];
+  std::snprintf(buffer, sizeof(buffer), "%.10g", x);
+  return buffer;
+}
+
+/// Writes a table of text fields through a temporary file (an existing file is replaced only
+/// once the new one is whole).
+void write_text_csv(const std::string& path, const std::vector<std::string>& columns,
+                    const std::vector<std::vector<std::string>>& rows) {
+  std::string text;
+  auto add_row = [&text](const std::vector<std::string>& fields) {
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (i > 0) text += ',';
+      text += csv_text(fields[i]);
+    }
+    text += "\n";
+  };
+  add_row(columns);
+  for (const auto& row : rows) add_row(row);
+  const std::string tmp = path + ".tmp";
+  std::FILE* f = std::fopen(tmp.c_str(), "w");
+  if (!f) throw InputError(path + ": cannot write");
+  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  if (std::fclose(f) != 0 || !written) throw InputError(path + ": cannot write");
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) throw InputError(path + ": cannot write (" + ec.message() + ")");
 }
 
 }  // namespace
@@ -141,36 +185,34 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
     fs::rename(tmp, path, ec);
     if (ec) throw InputError(path + ": cannot write (" + ec.message() + ")");
   }
-  CsvTable ranking;
-  ranking.columns = {"rank", "validated_rms_deg", "training_rms_deg", "delta_bic", "value"};
-  std::string order;  // effect names are text: a metadata line lists them in rank order
+  // the candidates by rank, the model as it is first (rank 0) for scale; an empty
+  // validated_rms_deg: the candidate was screened out before its held-out fit (note says why)
+  std::vector<std::vector<std::string>> ranking{{"0", "baseline", "", "",
+                                                 csv_number(d.baseline_rms_deg),
+                                                 csv_number(d.baseline_rms_deg), "", ""}};
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const CandidateFit& c = d.ranking[i];
     if (!c.completed) continue;
-    ranking.rows.push_back({static_cast<double>(i + 1), c.validated_rms_deg, c.training_rms_deg,
-                            c.delta_bic, c.value});
-    order += (order.empty() ? "" : " ") + c.effect;
+    ranking.push_back({std::to_string(i + 1), c.effect, csv_number(c.value), c.unit,
+                       csv_number(c.validated_rms_deg), csv_number(c.training_rms_deg),
+                       csv_number(c.delta_bic), c.note});
   }
-  ranking.metadata["effects_by_rank"] = order;
-  ranking.metadata["baseline_rms_deg"] = std::to_string(d.baseline_rms_deg);
-  write_csv((fs::path(dir) / "ranking.csv").string(), ranking);
+  write_text_csv((fs::path(dir) / "ranking.csv").string(),
+                 {"rank", "effect", "value", "unit", "validated_rms_deg", "training_rms_deg",
+                  "delta_bic", "note"},
+                 ranking);
 
-  const auto& phases = phase_names();
-  CsvTable phase_table;
-  phase_table.columns = {"trial", "phase_index", "samples", "rms_deg", "mean_deg"};
-  phase_table.metadata["phases"] = phase_list();
-  for (std::size_t j = 0; j < d.trials.size(); ++j) {
-    const TrialReport& r = d.trials[j];
-    for (const PhaseResidual& p : r.discrepancies.phases) {
-      const double index =
-          static_cast<double>(std::find(phases.begin(), phases.end(), p.phase) - phases.begin());
-      phase_table.rows.push_back({static_cast<double>(j + 1), index, static_cast<double>(p.samples),
-                                  p.rms_deg, p.mean_deg});
-    }
+  std::vector<std::vector<std::string>> phase_rows;
+  for (const TrialReport& r : d.trials) {
+    const std::string file = fs::path(r.path).filename().string();
+    for (const PhaseResidual& p : r.discrepancies.phases)
+      phase_rows.push_back({file, p.phase, std::to_string(p.samples), csv_number(p.rms_deg),
+                            csv_number(p.mean_deg)});
     write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
               trial_traces_table(r));
   }
-  write_csv((fs::path(dir) / "phases.csv").string(), phase_table);
+  write_text_csv((fs::path(dir) / "phases.csv").string(),
+                 {"file", "phase", "samples", "rms_deg", "mean_deg"}, phase_rows);
 }
 
 }  // namespace pat

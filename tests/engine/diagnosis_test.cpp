@@ -166,6 +166,28 @@ TEST(Diagnosis, RealStrikeWithItsKeyMotionStrikesWhenTheRealHammerDoes) {
   EXPECT_NEAR(r.baseline.hammer_at(0.5), trial.hammer_deg[1000], 1.0);  // t = 0.5 s, held
 }
 
+TEST(Diagnosis, AnglesInRadiansOrOfTheWrongSignAreRefused) {
+  // the real strike peaks at the grand's 21 deg contact angle; the same trace in radians, or
+  // with its sign reversed, is refused with what looks wrong instead of being fitted
+  const MeasuredTrial real = read_measured(
+      std::string(PAT_ASSET_DIR) + "/measured/kawai_kg3c_e4_fast_strike.csv", "grand");
+  auto error_for = [&](double factor) {
+    MeasuredTrial t = real;
+    for (double& a : t.hammer_deg) a *= factor;
+    try {
+      diagnose(test::shipped("grand"), {t});
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string radians = error_for(kPi / 180.0);
+  EXPECT_NE(radians.find("are the angles in radians"), std::string::npos) << radians;
+  EXPECT_NE(radians.find("kawai_kg3c_e4_fast_strike.csv"), std::string::npos) << radians;
+  const std::string reversed = error_for(-1.0);
+  EXPECT_NE(reversed.find("is the sign reversed"), std::string::npos) << reversed;
+}
+
 TEST(Diagnosis, MissingInputWithoutAStrikeIsNamed) {
   const std::string path = write_temp("flat.csv", "time_s,hammer_angle_deg\n" + rows(200, 5e-4));
   const MeasuredTrial trial = read_measured(path, "grand");
