@@ -36,6 +36,9 @@ struct PreparedTrial {
   /// the time offset searched: none when the trial's own key column drives the model (the key
   /// and the hammer were sampled on one clock, so the model's time is the file's)
   double max_shift_s = kMaxShiftS;
+  /// time in the file = time compared + file_shift_s (an estimated input's strike is moved onto
+  /// the model's clock)
+  double file_shift_s = 0.0;
 };
 
 struct Evaluation {
@@ -495,6 +498,7 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
     p.data = est.trial;
     p.spec = est.spec;
     p.estimated = true;
+    p.file_shift_s = est.file_shift_s;
   }
   p.model_duration_s = p.data.t.back() + kMaxShiftS + 2e-3;
   return p;
@@ -545,6 +549,13 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
     r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
                                          r.measured_events, r.noise_deg);
+    if (prepared[j].file_shift_s != 0.0) {  // times on the model's clock: say where in the file
+      for (FeatureDiscrepancy& f : r.discrepancies.features)
+        if (f.feature == "impact_time" && f.measured_known)
+          f.text += " (the strike was moved onto the model's clock: measured " +
+                    format_fixed(f.measured + 1e3 * prepared[j].file_shift_s) +
+                    " ms in the file's time)";
+    }
     Evaluation baseline_evaluation;
     baseline_evaluation.ok = true;
     baseline_evaluation.rss = r.baseline_alignment.rss;

@@ -104,6 +104,7 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
 
   // the strike on the model's clock: onsets coincide, kKeptS kept
   const double shift = trial.t[i_on] - (r.ok ? r.onset : 0.0);
+  out.file_shift_s = shift;
   out.trial = trial;
   out.trial.t.clear();
   out.trial.hammer_deg.clear();

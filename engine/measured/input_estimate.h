@@ -21,6 +21,7 @@ struct EstimatedInput {
   /// The first strike of the trial, its time axis moved so that the motion onset falls at the
   /// model's onset under the estimated input (at most 0.5 s kept).
   MeasuredTrial trial;
+  double file_shift_s = 0.0;  ///< time in the file = time in `trial` + file_shift_s
 };
 
 /// Throws InputError naming the file when no strike is visible in its hammer trace.

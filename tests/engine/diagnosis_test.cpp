@@ -129,6 +129,18 @@ TEST(Diagnosis, RealStrikeRunsEndToEnd) {
   const auto peak = std::max_element(r.data.hammer_deg.begin(), r.data.hammer_deg.end());
   EXPECT_NEAR(r.measured_events.front().t,
               r.data.t[static_cast<std::size_t>(peak - r.data.hammer_deg.begin())], 2e-3);
+  // and the report says where that strike is in the file: at its peak, 186 ms
+  const auto impact_time =
+      std::find_if(r.discrepancies.features.begin(), r.discrepancies.features.end(),
+                   [](const FeatureDiscrepancy& f) { return f.feature == "impact_time"; });
+  ASSERT_NE(impact_time, r.discrepancies.features.end());
+  const auto file_peak = std::max_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
+  const double file_peak_ms =
+      1e3 * trial.t[static_cast<std::size_t>(file_peak - trial.hammer_deg.begin())];
+  const std::size_t at =
+      impact_time->text.find("measured ", impact_time->text.find("model's clock"));
+  ASSERT_NE(at, std::string::npos) << impact_time->text;
+  EXPECT_NEAR(std::stod(impact_time->text.substr(at + 9)), file_peak_ms, 2.0) << impact_time->text;
   EXPECT_FALSE(d.held_out);
   EXPECT_EQ(d.ranking.size(), 2u);
   EXPECT_FALSE(d.discrepancies.empty());
