@@ -109,6 +109,9 @@ int run_diagnose(const std::vector<std::string>& args) {
   if (!report.empty()) {
     try {
       write_diagnosis_report(report, d);
+      // and the plots, as the window's Export report writes them
+      if (plotting_available())
+        write_plots((std::filesystem::path(report) / "diagnosis.png").string(), diagnosis_plots(d));
     } catch (const InputError& e) {
       throw InputError(std::string("--report ") + e.what());
     }

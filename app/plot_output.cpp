@@ -37,6 +37,14 @@ ui::AnalysisPlot to_analysis_plot(const PlotSpec& spec) {
 
 }  // namespace
 
+bool plotting_available() {
+#ifdef PAT_HAVE_UI
+  return true;
+#else
+  return false;
+#endif
+}
+
 #ifdef PAT_HAVE_UI
 void check_plot_path(const std::string& path) {
   ui::export_format(text(path));

@@ -13,6 +13,8 @@ namespace pat::app {
 /// Throws InputError when the file's extension is not a plot format, or when this build has no
 /// plotting (configured without the window). Commands call it before their work.
 void check_plot_path(const std::string& path);
+/// Whether this build can draw plots (the window build; not one configured PAT_ENGINE_ONLY).
+bool plotting_available();
 /// Whether a valid --plot path writes the plotted columns as CSV (the extension, any case).
 bool is_csv_plot_path(const std::string& path);
 /// Writes the plots, stacked top to bottom. Throws InputError naming the file when it cannot

@@ -463,20 +463,21 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
 /// moves less than a tenth of that (radians, or a hammer that never rises), or that goes half of
 /// it below rest (the sign reversed) or half of it beyond the string. The real strike overshoots
 /// its rest by 2.5 deg on its return and peaks 0.1 deg past contact (felt compression).
-void check_angle_units(const MeasuredTrial& trial, double contact_deg) {
+/// `range`: the first check only, else the other two.
+void check_angle_units(const MeasuredTrial& trial, double contact_deg, bool range) {
   const auto [low, high] = std::minmax_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
   std::ostringstream problem;
   problem << trial.path << ": hammer_angle_deg runs from " << format_fixed(*low, 3) << " to "
           << format_fixed(*high, 3) << " deg, ";
-  if (*high - *low < 0.1 * contact_deg) {
+  if (range && *high - *low < 0.1 * contact_deg) {
     problem << "less than a tenth of the " << format_fixed(contact_deg, 1)
             << " deg the hammer turns from rest to the string: are the angles in radians, or does "
                "the hammer never rise?";
-  } else if (*low < -0.5 * contact_deg) {
+  } else if (!range && *low < -0.5 * contact_deg) {
     problem << "more than half the hammer's " << format_fixed(contact_deg, 1)
             << " deg stroke below rest: angles are positive toward the string (is the sign "
                "reversed?)";
-  } else if (*high > 1.5 * contact_deg) {
+  } else if (!range && *high > 1.5 * contact_deg) {
     problem << "half the hammer's " << format_fixed(contact_deg, 1)
             << " deg stroke beyond the string: are the angles in degrees from rest?";
   } else {
@@ -515,8 +516,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   std::vector<PreparedTrial> prepared;
   const double contact_deg = hammer_contact_angle_deg(model);
   for (const MeasuredTrial& t : trials) {
-    prepared.push_back(prepare(model, t));  // first: a trial with no input says so
-    check_angle_units(t, contact_deg);
+    // a reversed sign or a trace beyond the string first (an estimated input would be fitted to
+    // it), a trace too small after (a flat one without an input is told that first)
+    check_angle_units(t, contact_deg, false);
+    prepared.push_back(prepare(model, t));
+    check_angle_units(t, contact_deg, true);
   }
   const std::size_t n_trials = prepared.size();
   d.held_out = n_trials > 1;

@@ -28,7 +28,14 @@ std::string label(const ModelTrace& m, double t) {
     if ((caught_after && t <= last_check + 10e-3) || (!caught_after && t <= last_impact + 60e-3))
       return "rebound_and_check";
   }
-  if (angle < kNearRestDeg) return last_impact < 0 && rate < 10.0 ? "rest" : "return";
+  // before any strike a hammer near rest is at rest, or starting its rise
+  if (angle < kNearRestDeg && last_impact < 0) return rate < 10.0 ? "rest" : "acceleration";
+  if (angle < kNearRestDeg) return "return";
+  // after a check the hammer is held (a creep of a few deg/s included) until the key lets it go:
+  // then it falls, or is thrown up by a repetition lever first, both at tens of deg/s or more
+  constexpr double kHeldRateDegPerS = 50.0;
+  if (last_impact >= 0 && last_check > last_impact)
+    return std::abs(rate) < kHeldRateDegPerS ? "rebound_and_check" : "release";
   if (rate > 5.0) {
     double prev_escapement = -1.0;
     for (double x : m.escapement_t)

@@ -44,10 +44,12 @@ struct TrialDiscrepancies {
 };
 
 /// Phases come from the aligned model (its events and motion): rest before the first motion,
-/// acceleration while the hammer rises before escapement, free flight from escapement to 1 ms
-/// before the impact, impact (−1 ms … +2 ms), rebound and check (until 10 ms after the check, or
-/// 60 ms after the impact), release while the hammer falls, return once it is within 0.3° of
-/// rest. Features compare the measured events (detect_events) with the model's.
+/// acceleration while the hammer rises before escapement (from its first 10°/s), free flight
+/// from escapement to 1 ms before the impact, impact (−1 ms … +2 ms), rebound and check (until
+/// 10 ms after the check, or 60 ms after the impact, and then while the caught hammer moves less
+/// than 50°/s), release while the hammer falls (or, caught, moves faster: a repetition lever
+/// throwing it up as the key rises), return once it is within 0.3° of rest after a strike.
+/// Features compare the measured events (detect_events) with the model's.
 TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTrace& model,
                                       const Alignment& alignment,
                                       const std::vector<MeasuredEvent>& measured_events,

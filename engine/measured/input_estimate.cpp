@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "measured/model_trace.h"
 
 namespace pat {
@@ -81,12 +82,26 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
   double prev_f = 0, prev_rise = 0;
   bool have_prev = false;
   out.force_n = 0;
+  // a strike the force pulses cannot make: slower than the softest one by half again (a slow
+  // press, a hammer pushed by hand) or faster than the hardest by as much. Refused rather than
+  // fitted with the nearest pulse, whose rise would differ from the data's by that much.
+  auto out_of_reach = [&](double model_rise_s, double force, const char* which) {
+    std::ostringstream problem;
+    problem << trial.path << ": no key input is known (no '# input:' line and no key_angle_deg "
+            << "column) and a force pulse cannot make this strike: the hammer rises in "
+            << format_fixed(1e3 * out.measured_rise_s, 1) << " ms from its first motion to the "
+            << "string, the " << which << " pulse (" << format_fixed(force, 0) << " N) in "
+            << format_fixed(1e3 * model_rise_s, 1)
+            << " ms; give the input ('# input:'), or record the key (import-raw --key-column)";
+    throw InputError(problem.str());
+  };
   for (double f : forces) {
     const ModelRise r = model_rise(model, pulse_spec(f, out.pulse_ms));
     if (!r.ok) continue;
     const double rise = r.impact - r.onset;
     if (rise <= out.measured_rise_s) {
       if (!have_prev) {
+        if (out.measured_rise_s > 1.5 * rise) out_of_reach(rise, f, "softest");
         out.force_n = f;
       } else {
         const double x = std::log(out.measured_rise_s / prev_rise) / std::log(rise / prev_rise);
@@ -96,6 +111,8 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
     }
     prev_f = f, prev_rise = rise, have_prev = true;
   }
+  if (out.force_n == 0 && have_prev && out.measured_rise_s < prev_rise / 1.5)
+    out_of_reach(prev_rise, prev_f, "hardest");
   if (out.force_n == 0) out.force_n = have_prev ? prev_f : forces[0];
   out.force_n = std::round(out.force_n * 100.0) / 100.0;
   out.spec = pulse_spec(out.force_n, out.pulse_ms);

@@ -33,7 +33,7 @@ for key in baseline_rms_deg extended_rms_deg gain cause ranking discrepancies me
   grep -q "\"$key\"" d.json || fail "diagnose: no key $key"
 done
 grep -q '"effect": "repetition_spring"' d.json || fail "diagnose: the hidden spring is not named"
-for f in diagnosis.json ranking.csv phases.csv mass_traces.csv sine_traces.csv; do
+for f in diagnosis.json ranking.csv phases.csv mass_traces.csv sine_traces.csv diagnosis.png; do
   [[ -s "report/$f" ]] || fail "diagnose --report: no $f"
 done
 

@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "core/error.h"
+#include "measured/discrepancies.h"
 #include "measured/hidden_effects.h"
 #include "measured/measured_data.h"
 #include "measured/synth.h"
@@ -178,6 +179,55 @@ TEST(Diagnosis, RealStrikeWithItsKeyMotionStrikesWhenTheRealHammerDoes) {
   EXPECT_NEAR(r.baseline.hammer_at(0.5), trial.hammer_deg[1000], 1.0);  // t = 0.5 s, held
 }
 
+TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
+  // a model hammer: at rest, a rise from 50 ms (escapement at 78, impact at 80 ms), caught at
+  // 90 ms and held while creeping 2 deg/s, thrown up at 100 deg/s from 0.30 s as the key rises,
+  // then falling back to rest by 0.45 s
+  ModelTrace m;
+  m.dt = 1e-4;
+  for (int i = 0; i <= 6000; ++i) {
+    const double t = i * m.dt;
+    double a = 0.0;
+    if (t < 0.05)
+      a = 0.0;
+    else if (t < 0.08)
+      a = 21.0 * (t - 0.05) / 0.03;
+    else if (t < 0.09)
+      a = 21.0 - 8.0 * (t - 0.08) / 0.01;
+    else if (t < 0.30)
+      a = 13.0 + 2.0 * (t - 0.09);
+    else if (t < 0.35)
+      a = 13.42 + 100.0 * (t - 0.30);
+    else if (t < 0.45)
+      a = 18.42 * (0.45 - t) / 0.10;
+    m.hammer_deg.push_back(a);
+    m.key_deg.push_back(0.0);
+  }
+  m.escapement_t = {0.078};
+  m.impact_t = {0.080};
+  m.check_t = {0.090};
+  MeasuredTrial trial;
+  trial.path = "phases.csv";
+  for (int i = 0; i <= 1200; ++i) {
+    trial.t.push_back(i * 5e-4);
+    trial.hammer_deg.push_back(m.hammer_at(i * 5e-4));
+  }
+  Alignment al;
+  al.residual.assign(trial.t.size(), 0.0);
+  const TrialDiscrepancies d = find_discrepancies(trial, m, al, {}, 0.01);
+  auto phase_at = [&](double t) {
+    return d.phase_of_sample[static_cast<std::size_t>(std::lround(t / 5e-4))];
+  };
+  EXPECT_EQ(phase_at(0.02), "rest");
+  EXPECT_EQ(phase_at(0.0505), "acceleration");  // near rest but rising: not a return
+  EXPECT_EQ(phase_at(0.0785), "free_flight");   // the impact phase starts 1 ms before it
+  EXPECT_EQ(phase_at(0.080), "impact");
+  EXPECT_EQ(phase_at(0.2), "rebound_and_check");  // held, creeping
+  EXPECT_EQ(phase_at(0.32), "release");           // thrown up as the key rises
+  EXPECT_EQ(phase_at(0.40), "release");           // falling
+  EXPECT_EQ(phase_at(0.55), "return");
+}
+
 TEST(Diagnosis, AnglesInRadiansOrOfTheWrongSignAreRefused) {
   // the real strike peaks at the grand's 21 deg contact angle; the same trace in radians, or
   // with its sign reversed, is refused with what looks wrong instead of being fitted
@@ -198,6 +248,33 @@ TEST(Diagnosis, AnglesInRadiansOrOfTheWrongSignAreRefused) {
   EXPECT_NE(radians.find("kawai_kg3c_e4_fast_strike.csv"), std::string::npos) << radians;
   const std::string reversed = error_for(-1.0);
   EXPECT_NE(reversed.find("is the sign reversed"), std::string::npos) << reversed;
+}
+
+TEST(Diagnosis, AStrikeNoForcePulseCanMakeIsRefused) {
+  // the hammer pushed up to the string over 0.45 s (a slow press), then rebounding into check:
+  // every force pulse that strikes does so within about 0.1 s, so none is fitted to it
+  std::string text = "time_s,hammer_angle_deg\n";
+  for (int i = 0; i < 2000; ++i) {
+    const double t = i * 5e-4;
+    double a = 0.0;
+    if (t > 0.56)
+      a = 13.0;
+    else if (t > 0.55)
+      a = 21.0 - 8.0 * (t - 0.55) / 0.01;
+    else if (t > 0.1)
+      a = 21.0 * (t - 0.1) / 0.45;
+    text += std::to_string(t) + "," + std::to_string(a) + "\n";
+  }
+  const MeasuredTrial trial = read_measured(write_temp("slow_press.csv", text), "grand");
+  try {
+    diagnose(test::shipped("grand"), {trial});
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("slow_press.csv"), std::string::npos) << message;
+    EXPECT_NE(message.find("a force pulse cannot make this strike"), std::string::npos) << message;
+    EXPECT_NE(message.find("softest pulse (3 N)"), std::string::npos) << message;
+  }
 }
 
 TEST(Diagnosis, MissingInputWithoutAStrikeIsNamed) {
