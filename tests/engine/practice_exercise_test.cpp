@@ -192,10 +192,16 @@ TEST(PracticeExerciseFile, BrokenOrImpossibleFilesNameTheFileAndTheField) {
   EXPECT_THROW(load_exercise("/nonexistent/exercise.json"), InputError);
 }
 
-TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
-  const ActionModel& model = shipped_model("grand");
+/// A grand exercise whose one hidden fault is the backcheck's wire bent 2 mm.
+Exercise checking_exercise(const ActionModel& model) {
   Exercise e = generate_exercise(model, "grand", 3, 1);
   e.faults = {{"checking", 2.0}};
+  return e;
+}
+
+TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
+  const ActionModel& model = shipped_model("grand");
+  const Exercise e = checking_exercise(model);
   PracticeSession session(e, model);
   const FaultAnswer right = exercise_answers(e).front();
   EXPECT_FALSE(session.answer({{"drop", "more"}}, 30.0).correct);
@@ -262,8 +268,7 @@ TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
 
 TEST(PracticeSession, RevealShowsTheAnswerAndLaterAnswersDoNotCount) {
   const ActionModel& model = shipped_model("grand");
-  Exercise e = generate_exercise(model, "grand", 3, 1);
-  e.faults = {{"checking", 2.0}};
+  const Exercise e = checking_exercise(model);
   PracticeSession session(e, model);
   const FaultAnswer right = exercise_answers(e).front();
   const std::string shown = session.reveal(30.0);
