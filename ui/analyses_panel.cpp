@@ -402,7 +402,7 @@ bool AnalysesPanel::run(const QString& name) {
   }
   summary_->setText(tr("%1: running…").arg(entry.name));
   set_busy(true);
-  running_action_ = QString::fromStdString(model->kind);
+  running_action_ = entry.on_the_window_action ? QString::fromStdString(model->kind) : QString();
   runner_->start(entry.name, std::move(task));
   return true;
 }
@@ -546,9 +546,13 @@ QStringList AnalysesPanel::write_table_csv(const QString& path) const {
   write(path, {"quantity", "value", "unit"}, rows);
   QStringList written{path};
   const QFileInfo info(path);
-  for (const AnalysisGrid& grid : result_.grids) {
-    const QString grid_path =
+  for (std::size_t g = 0; g < result_.grids.size(); ++g) {
+    const AnalysisGrid& grid = result_.grids[g];
+    QString grid_path =
         info.dir().filePath(info.completeBaseName() + "_" + file_stem(grid.title) + ".csv");
+    if (written.contains(grid_path))  // two tables of one title: numbered
+      grid_path = info.dir().filePath(
+          QString("%1_%2_%3.csv").arg(info.completeBaseName(), file_stem(grid.title)).arg(g + 1));
     write(grid_path, grid.columns, grid.rows);
     written << grid_path;
   }

@@ -58,6 +58,8 @@ struct AnalysisEntry {
   /// True when the analysis applies to this action (some are upright or grand only).
   std::function<bool(const ActionModel&)> applies = [](const ActionModel&) { return true; };
   std::vector<AnalysisParameter> parameters;
+  /// False for an analysis that runs on both actions (its result's summary then names none).
+  bool on_the_window_action = true;
   /// Builds the task; throws InputError when the settings cannot be run (the panel shows it).
   std::function<AnalysisTask(std::shared_ptr<const ActionModel>, const AnalysisSettings&)> make;
 };

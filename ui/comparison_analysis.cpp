@@ -132,6 +132,7 @@ AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOpti
 AnalysisEntry action_comparison_entry() {
   AnalysisEntry e;
   e.name = QObject::tr("Upright vs grand");
+  e.on_the_window_action = false;
   e.description = QObject::tr(
       "The same blow on the window's action and on the shipped action of the other kind: key "
       "and hammer motion overlaid, when and how fast each hammer strikes, and how fast each "

@@ -142,6 +142,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   answer_button_ = new QPushButton(tr("Answer"), answer_box);
   hint_button_ = new QPushButton(tr("Hint"), answer_box);
   answer_button_->setObjectName("answer_button");
+  hint_button_->setObjectName("hint_button");
   answer_grid->addWidget(answer_setting_, 0, 0);
   answer_grid->addWidget(answer_direction_, 0, 1);
   answer_grid->addWidget(second_setting_, 1, 0);
@@ -232,13 +233,14 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
             const SessionScore s = session_->score(readings, elapsed_s());
             append_history();
             show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4, hints −%5). "
-                           "The hidden setting: %6.")
+                           "The hidden %6: %7.")
                             .arg(s.total, 0, 'f', 1)
                             .arg(s.diagnosis, 0, 'f', 1)
                             .arg(s.regulation, 0, 'f', 1)
                             .arg(s.economy, 0, 'f', 1)
                             .arg(s.hint_penalty, 0, 'f', 1)
-                            .arg(QString::fromStdString(session_->answer_text())));
+                            .arg(QString::fromStdString(session_->answer_heading()),
+                                 QString::fromStdString(session_->answer_text())));
             export_button_->setEnabled(true);
             remember_session(s);
             emit scored(s.total);
@@ -405,12 +407,14 @@ QString PracticePanel::reveal_answer() {
   if (!session_) return {};
   const QString text = QString::fromStdString(session_->reveal(elapsed_s()));
   show_status(text + " " + tr("Answers from now on are judged but not scored."));
+  hint_button_->setEnabled(false);  // nothing left to hint
   append_history();
   return text;
 }
 
 void PracticePanel::resume() {
-  if (!session_) return;
+  // a scored exercise is over (its answer is on show): the window stays on the regulated action
+  if (!session_ || session_->final_score()) return;
   emit practiceActive(true);
   emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
 }
@@ -478,6 +482,7 @@ void PracticePanel::set_busy(bool busy) {
            answer_setting_, answer_direction_, second_setting_, second_direction_, answer_button_,
            hint_button_, reveal_button_, finish_button_, adjusters_box_})
     w->setEnabled(active && !busy);
+  if (session_ && session_->revealed()) hint_button_->setEnabled(false);
   if (!busy) {
     progress_->setValue(progress_->maximum());
     progress_->setFormat(tr("ready"));

@@ -316,4 +316,33 @@ void write_csv(const std::string& path, const CsvTable& table) {
   }
 }
 
+std::string csv_quoted(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';  // a quote is doubled
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+void write_file_replacing(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  std::error_code ec;
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (out) out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    if (!out) {
+      std::filesystem::remove(tmp, ec);
+      throw InputError(path + ": cannot write");
+    }
+  }
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw InputError(path + ": cannot write (" + ec.message() + ")");
+  }
+}
+
 }  // namespace pat

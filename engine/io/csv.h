@@ -37,4 +37,13 @@ void write_csv(const std::string& path, const CsvTable& table);
 /// The same text as write_csv would write, as a string.
 std::string format_csv(const CsvTable& table);
 
+/// A text field for a CSV file: as it is, or in double quotes (quotes doubled) when it holds a
+/// comma, a quote or a line break.
+std::string csv_quoted(const std::string& text);
+
+/// Writes `text` to `path` through a temporary file renamed over it once whole: an existing file
+/// is replaced only by a complete one, and no temporary is left behind. Throws InputError naming
+/// the path.
+void write_file_replacing(const std::string& path, const std::string& text);
+
 }  // namespace pat

@@ -30,7 +30,7 @@ Alignment align(const MeasuredTrial& trial, const ModelTrace& model, double max_
     if (c < best) best = c, best_shift = s;
   }
   Alignment out;
-  out.time_offset_s = best_shift;
+  out.time_offset_s = max_shift_s > 0.0 ? best_shift : 0.0;  // not the grid's −0
   if (max_shift_s > 0.0) {  // with none searched, the model's clock is the file's
     // golden-section refinement in [best − grid, best + grid]
     const double g = 0.5 * (std::sqrt(5.0) - 1.0);

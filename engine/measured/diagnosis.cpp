@@ -465,6 +465,7 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
 /// its rest by 2.5 deg on its return and peaks 0.1 deg past contact (felt compression).
 /// `range`: the first check only, else the other two.
 void check_angle_units(const MeasuredTrial& trial, double contact_deg, bool range) {
+  if (trial.hammer_deg.empty()) return;  // read_measured refuses such a file first
   const auto [low, high] = std::minmax_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
   std::ostringstream problem;
   problem << trial.path << ": hammer_angle_deg runs from " << format_fixed(*low, 3) << " to "
@@ -478,7 +479,7 @@ void check_angle_units(const MeasuredTrial& trial, double contact_deg, bool rang
             << " deg stroke below rest: angles are positive toward the string (is the sign "
                "reversed?)";
   } else if (!range && *high > 1.5 * contact_deg) {
-    problem << "half the hammer's " << format_fixed(contact_deg, 1)
+    problem << "more than half the hammer's " << format_fixed(contact_deg, 1)
             << " deg stroke beyond the string: are the angles in degrees from rest?";
   } else {
     return;

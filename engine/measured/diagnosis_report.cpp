@@ -22,17 +22,6 @@ std::string phase_list() {
   return list;
 }
 
-/// A CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csv_text(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';  // a quote is doubled
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
 /// A number to 10 significant digits, or an empty field where it is not finite (a candidate
 /// that was not validated has no held-out error).
 std::string csv_number(double x) {
@@ -42,28 +31,20 @@ std::string csv_number(double x) {
   return buffer;
 }
 
-/// Writes a table of text fields through a temporary file (an existing file is replaced only
-/// once the new one is whole).
+/// Writes a table of text fields (write_file_replacing).
 void write_text_csv(const std::string& path, const std::vector<std::string>& columns,
                     const std::vector<std::vector<std::string>>& rows) {
   std::string text;
   auto add_row = [&text](const std::vector<std::string>& fields) {
     for (std::size_t i = 0; i < fields.size(); ++i) {
       if (i > 0) text += ',';
-      text += csv_text(fields[i]);
+      text += csv_quoted(fields[i]);
     }
     text += "\n";
   };
   add_row(columns);
   for (const auto& row : rows) add_row(row);
-  const std::string tmp = path + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "w");
-  if (!f) throw InputError(path + ": cannot write");
-  const bool written = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-  if (std::fclose(f) != 0 || !written) throw InputError(path + ": cannot write");
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError(path + ": cannot write (" + ec.message() + ")");
+  write_file_replacing(path, text);
 }
 
 }  // namespace
@@ -174,28 +155,19 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
   fs::create_directory(dir, ec);  // one level: a mistyped parent is an error, not a new tree
   if (ec || !fs::is_directory(dir))
     throw InputError(dir + ": cannot create the folder (" + ec.message() + ")");
-  {
-    const std::string path = (fs::path(dir) / "diagnosis.json").string();
-    const std::string tmp = path + ".tmp";
-    std::FILE* f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw InputError(path + ": cannot write");
-    const std::string text = json.dump(1) + "\n";
-    std::fwrite(text.data(), 1, text.size(), f);
-    std::fclose(f);
-    fs::rename(tmp, path, ec);
-    if (ec) throw InputError(path + ": cannot write (" + ec.message() + ")");
-  }
-  // the candidates by rank, the model as it is first (rank 0) for scale; an empty
-  // validated_rms_deg: the candidate was screened out before its held-out fit (note says why)
+  write_file_replacing((fs::path(dir) / "diagnosis.json").string(), json.dump(1) + "\n");
+  // the candidates by rank, the model as it is first (rank 0) for scale; an empty number: the
+  // candidate was screened out before its held-out fit, or its fit made the model fail (the
+  // note says which)
   std::vector<std::vector<std::string>> ranking{{"0", "baseline", "", "",
                                                  csv_number(d.baseline_rms_deg),
                                                  csv_number(d.baseline_rms_deg), "", ""}};
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const CandidateFit& c = d.ranking[i];
-    if (!c.completed) continue;
-    ranking.push_back({std::to_string(i + 1), c.effect, csv_number(c.value), c.unit,
-                       csv_number(c.validated_rms_deg), csv_number(c.training_rms_deg),
-                       csv_number(c.delta_bic), c.note});
+    const auto number = [&c](double x) { return c.completed ? csv_number(x) : std::string(); };
+    ranking.push_back({std::to_string(i + 1), c.effect, number(c.value), c.unit,
+                       number(c.validated_rms_deg), number(c.training_rms_deg), number(c.delta_bic),
+                       c.note});
   }
   write_text_csv((fs::path(dir) / "ranking.csv").string(),
                  {"rank", "effect", "value", "unit", "validated_rms_deg", "training_rms_deg",

@@ -15,9 +15,11 @@ std::string label(const ModelTrace& m, double t) {
   constexpr double kNearRestDeg = 0.3;
   const double angle = m.hammer_at(t);
   const double rate = (m.hammer_at(t + 5e-4) - m.hammer_at(t - 5e-4)) / 1e-3;  // deg/s
-  double last_impact = -1.0, last_check = -1.0, next_escapement = 1e9;
-  for (double x : m.impact_t)
+  double last_impact = -1.0, last_check = -1.0, next_escapement = 1e9, next_impact = 1e9;
+  for (double x : m.impact_t) {
     if (x <= t + 1e-3) last_impact = std::max(last_impact, x);
+    if (x > t + 1e-3) next_impact = std::min(next_impact, x);
+  }
   for (double x : m.check_t)
     if (x <= t) last_check = std::max(last_check, x);
   for (double x : m.escapement_t)
@@ -33,8 +35,10 @@ std::string label(const ModelTrace& m, double t) {
   if (angle < kNearRestDeg) return "return";
   // after a check the hammer is held (a creep of a few deg/s included) until the key lets it go:
   // then it falls, or is thrown up by a repetition lever first, both at tens of deg/s or more
+  // (a rise into another strike within 50 ms is that strike's acceleration, below)
   constexpr double kHeldRateDegPerS = 50.0;
-  if (last_impact >= 0 && last_check > last_impact)
+  const bool rising_to_strike = rate > 0.0 && next_impact - t < 50e-3;
+  if (last_impact >= 0 && last_check > last_impact && !rising_to_strike)
     return std::abs(rate) < kHeldRateDegPerS ? "rebound_and_check" : "release";
   if (rate > 5.0) {
     double prev_escapement = -1.0;

@@ -69,12 +69,12 @@ EstimatedInput estimate_key_input(const ActionModel& model, const MeasuredTrial&
   while (i_fall + 1 < trial.t.size() && (trial.hammer_deg[i_fall] > rest + 0.2 * (peak - rest) ||
                                          trial.t[i_fall] < impact->t + 20e-3))
     ++i_fall;
+  // held until the hammer falls back, or past the kept window when it falls back only after it
+  // (or never): a release inside the window would then be the model's alone
+  const double held_ms = (trial.t[i_fall] - trial.t[i_on]) * 1e3 - 20.0;
   const bool falls_back = trial.hammer_deg[i_fall] <= rest + 0.2 * (peak - rest);
-  // a hammer still held at the end of the trace: the key is held past the kept window, since a
-  // release inside it would be the model's alone (the data show none)
-  out.pulse_ms = falls_back
-                     ? std::clamp((trial.t[i_fall] - trial.t[i_on]) * 1e3 - 20.0, 30.0, 400.0)
-                     : 1e3 * kKeptS + 100.0;
+  out.pulse_ms =
+      falls_back && held_ms <= 1e3 * kKeptS ? std::max(held_ms, 30.0) : 1e3 * kKeptS + 100.0;
   out.pulse_ms = std::round(out.pulse_ms);
 
   // force whose rise time matches: scan, then interpolate log(rise) against log(force)

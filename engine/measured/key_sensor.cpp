@@ -5,18 +5,19 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/format.h"
+#include "measured/rest_level.h"
 
 namespace pat {
 
 namespace {
 
 constexpr double kMetresPerInch = 0.0254;
-
-double median(std::vector<double> x) {
-  const auto middle = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
-  std::nth_element(x.begin(), middle, x.end());
-  return *middle;
-}
+/// A key front dips about 10 mm on an arm of about 220 mm: a fifth of the arm (44 mm) is no key.
+constexpr double kMostDipOfArm = 0.2;
+/// Less than this (m) is no press: a window whose dips stay under it and go as far above rest
+/// has a sensor running against its points.
+constexpr double kLeastPressM = 1e-3;
 
 /// Zero-phase Gaussian smoothing of σ = sigma_samples, truncated at 3σ; near the ends the
 /// weights that fall inside are renormalized.
@@ -60,28 +61,40 @@ KeyAngles key_angles_from_sensor(const std::vector<double>& reading, double rate
   std::vector<double> position(reading.size());
   for (std::size_t i = 0; i < reading.size(); ++i)
     position[i] = calibration.position_at(reading[i]);
-  // rest: the first 50 ms, at least 5 samples and at most a quarter of the window (as the hammer)
-  const std::size_t rest_count = std::max<std::size_t>(
-      5, std::min<std::size_t>(reading.size() / 4,
-                               static_cast<std::size_t>(std::lround(0.05 * rate_hz))));
+  const std::size_t rest_count = rest_sample_count(reading.size(), rate_hz);
   out.rest_position_in = median(std::vector<double>(
       position.begin(), position.begin() + static_cast<std::ptrdiff_t>(rest_count)));
   std::vector<double> dip_m(position.size());
-  for (std::size_t i = 0; i < position.size(); ++i)
+  double deepest_raw_m = 0.0;
+  for (std::size_t i = 0; i < position.size(); ++i) {
     dip_m[i] = (position[i] - out.rest_position_in) * kMetresPerInch;
+    deepest_raw_m = std::max(deepest_raw_m, dip_m[i]);
+    // checked before smoothing, so that the sample named is the one that reads so
+    if (std::abs(dip_m[i]) > kMostDipOfArm * front_arm_m) {
+      std::ostringstream problem;
+      problem << "the key sensor's reading " << reading[i] << " (sample " << i
+              << " of the window) gives a key-front dip of " << format_fixed(1e3 * dip_m[i], 1)
+              << " mm, more than a fifth of the key front's " << format_fixed(1e3 * front_arm_m, 0)
+              << " mm arm (a key dips about 10 mm): these points do not calibrate this sensor";
+      throw InputError(located_message(calibration.path, "", problem.str()));
+    }
+  }
+  // a key pressed moves its front down: readings that only go the other way belong to a sensor
+  // that runs opposite to these points (another sensor's rows?)
+  const double shallowest_raw_m = *std::min_element(dip_m.begin(), dip_m.end());
+  if (deepest_raw_m < kLeastPressM && shallowest_raw_m < -kLeastPressM) {
+    std::ostringstream problem;
+    problem << "the key sensor's readings give key-front dips from "
+            << format_fixed(1e3 * shallowest_raw_m, 2) << " to "
+            << format_fixed(1e3 * deepest_raw_m, 2)
+            << " mm: the key only rises above its rest, so the reading runs the other way from "
+               "these points (another sensor's rows?)";
+    throw InputError(located_message(calibration.path, "", problem.str()));
+  }
   dip_m = gaussian_smoothed(dip_m, kKeySmoothingSigmaS * rate_hz);
   out.angle_deg.resize(dip_m.size());
   for (std::size_t i = 0; i < dip_m.size(); ++i) {
-    const double ratio = dip_m[i] / front_arm_m;
-    if (std::abs(ratio) >= 1.0) {
-      std::ostringstream problem;
-      problem << "the key sensor's reading " << reading[i] << " gives a key-front dip of "
-              << 1e3 * dip_m[i] << " mm, more than the key front's " << 1e3 * front_arm_m
-              << " mm arm (sample " << i << " of the window): these points do not calibrate "
-              << "a key-front displacement";
-      throw InputError(located_message(calibration.path, "", problem.str()));
-    }
-    out.angle_deg[i] = std::asin(ratio) * 180.0 / kPi;
+    out.angle_deg[i] = std::asin(dip_m[i] / front_arm_m) * 180.0 / kPi;  // |dip| < arm / 5
     out.deepest_dip_mm = std::max(out.deepest_dip_mm, 1e3 * dip_m[i]);
   }
   return out;

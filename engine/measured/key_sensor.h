@@ -9,8 +9,9 @@
 // p(r) is the calibration's position at reading r (monotone cubic, sensor_calibration.h), p_rest
 // the median position over the window's first 50 ms (the key at rest), and a the horizontal
 // distance from the key's balance pin to its front (the model's key_front landmark: 220 mm on
-// the grand). The front also stands 22 mm above the pin, which moves it sideways and changes its
-// drop by a·(1 − cos θ) at most 0.03 mm at 3°: left out.
+// the grand). The front also stands h = 22 mm above the pin: its drop is a·sin θ + h·(1 − cos θ),
+// and the second term is at most 0.03 mm at 3° (left out); it also moves h·sin θ ≈ 1.2 mm
+// sideways, which a sensor under the key does not see.
 //
 // Smoothing. Near rest the sensor barely responds (its first calibration step is 1/32 in of
 // key travel for 0.0015 of normalized reading), so its noise there is about ±0.1 mm of key
@@ -46,7 +47,9 @@ double key_front_arm_m(const ActionModel& model);
 
 /// Key angles for a window of readings (fraction of the ADC's full scale) sampled at `rate_hz`
 /// (at least 5 samples of rest; the caller has checked the window's length). Throws InputError
-/// naming the calibration file when a dip exceeds the key front's arm.
+/// naming the calibration file when a reading's dip exceeds a fifth of the key front's arm (no
+/// key dips so far), or when the key only rises above its rest by more than 1 mm and never
+/// goes down as far (a sensor that runs against its points).
 KeyAngles key_angles_from_sensor(const std::vector<double>& reading, double rate_hz,
                                  const SensorCalibration& calibration, double front_arm_m);
 

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "io/csv.h"
+#include "measured/rest_level.h"
 
 namespace pat {
 
@@ -70,10 +71,6 @@ double estimate_noise(const std::vector<double>& v) {
   std::vector<double> d2;
   d2.reserve(v.size());
   for (std::size_t i = 1; i + 1 < v.size(); ++i) d2.push_back(v[i + 1] - 2 * v[i] + v[i - 1]);
-  auto median = [](std::vector<double> x) {
-    std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
-    return x[x.size() / 2];
-  };
   const double m = median(d2);
   for (double& x : d2) x = std::abs(x - m);
   return 1.4826 * median(d2) / std::sqrt(6.0);

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "dynamics/action_dynamics.h"
 #include "measured/measured_data.h"
+#include "measured/rest_level.h"
 #include "sim/simulation.h"
 
 namespace pat {
@@ -46,12 +47,6 @@ double hammer_contact_angle_deg(const ActionModel& model) {
 }
 
 namespace {
-
-double median(std::vector<double> x) {
-  const auto middle = x.begin() + static_cast<std::ptrdiff_t>(x.size() / 2);
-  std::nth_element(x.begin(), middle, x.end());
-  return *middle;
-}
 
 std::string number_text(double x, int precision = 6) {
   std::ostringstream out;
@@ -100,8 +95,7 @@ std::optional<RawStrike> find_raw_strike(const std::vector<double>& r, double ra
                                          std::string& why_not) {
   const std::size_t n = r.size();
   // rest: the first 50 ms, at least 5 samples and at most a quarter of the window
-  const std::size_t rest_count = std::max<std::size_t>(
-      5, std::min<std::size_t>(n / 4, static_cast<std::size_t>(std::lround(0.05 * rate_hz))));
+  const std::size_t rest_count = rest_sample_count(n, rate_hz);
   if (n < 2 * rest_count) {
     why_not = "the window is too short to hold a rest level and a strike";
     return std::nullopt;

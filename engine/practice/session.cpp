@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
+#include "io/csv.h"
 #include "model/model_edits.h"
 #include "regulation/measurements.h"
 
@@ -52,13 +53,6 @@ std::optional<double> try_measure(const ActionModel& model, const std::string& s
   } catch (const std::runtime_error&) {
     return std::nullopt;  // not measurable (no escapement, no check): scored as not corrected
   }
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string quoted = "\"";
-  for (char c : s) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return quoted + "\"";
 }
 
 }  // namespace
@@ -110,6 +104,7 @@ AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, d
 }
 
 std::string PracticeSession::hint(double t_s) {
+  if (revealed_) return reveal(t_s);  // shown already: no more to hint, nothing to charge
   const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
   const FaultAnswer& first = answers.front();
   std::string text;
@@ -144,6 +139,10 @@ std::string PracticeSession::hint(double t_s) {
   return text;
 }
 
+std::string PracticeSession::answer_heading() const {
+  return exercise_.faults.size() > 1 ? "settings were" : "setting was";
+}
+
 std::string PracticeSession::answer_text() const {
   const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
   std::string text;
@@ -157,9 +156,7 @@ std::string PracticeSession::answer_text() const {
 }
 
 std::string PracticeSession::reveal(double t_s) {
-  const std::string text = "The hidden setting" +
-                           std::string(exercise_.faults.size() > 1 ? "s were: " : " was: ") +
-                           answer_text() + ".";
+  const std::string text = "The hidden " + answer_heading() + ": " + answer_text() + ".";
   if (!revealed_) history_.push_back({t_s, "reveal", text});
   revealed_ = true;
   return text;
@@ -279,31 +276,21 @@ void write_session_csv(const std::string& path, const PracticeSession& session) 
   if (!e.source_file.empty()) out << "# file: " << e.source_file << "\n";
   out << "t_s,kind,detail\n";
   for (const SessionEvent& ev : session.history())
-    out << format_number(ev.t_s) << "," << ev.kind << "," << csv_field(ev.detail) << "\n";
+    out << format_number(ev.t_s) << "," << ev.kind << "," << csv_quoted(ev.detail) << "\n";
   if (const auto& s = session.final_score()) {
     for (const std::string& note : s->notes)
-      out << format_number(s->time_s) << ",score_note," << csv_field(note) << "\n";
+      out << format_number(s->time_s) << ",score_note," << csv_quoted(note) << "\n";
     for (const CorrectionReading& r : s->readings) {
       auto value = [](const std::optional<double>& v) {
         return v ? format_number(*v) : std::string("not measurable");
       };
       out << format_number(s->time_s) << ",reading,"
-          << csv_field(r.setting + ": regulated " + value(r.regulated) + ", hidden " +
-                       value(r.hidden) + ", corrected " + value(r.corrected))
+          << csv_quoted(r.setting + ": regulated " + value(r.regulated) + ", hidden " +
+                        value(r.hidden) + ", corrected " + value(r.corrected))
           << "\n";
     }
   }
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (!file) throw InputError(path + ": cannot write the session report");
-    file << out.str();
-    if (!file.flush()) throw InputError(path + ": cannot write the session report");
-  }
-  if (std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    throw InputError(path + ": cannot write the session report (rename failed)");
-  }
+  write_file_replacing(path, out.str());
 }
 
 }  // namespace pat

@@ -71,13 +71,16 @@ class PracticeSession {
   /// Gives a diagnosis; the first one counts for the score.
   AnswerJudgement answer(const std::vector<FaultAnswer>& given, double t_s);
   /// The next hint (each more telling than the last, the last names the setting). The first
-  /// quotes the symptom read from the hidden setting's own measurement when one was seen.
+  /// quotes the symptom read from the hidden setting's own measurement when one was seen. After
+  /// reveal() it repeats the answer and costs nothing.
   std::string hint(double t_s);
   /// Gives up: the hidden settings in words (recorded in the history); answers given after it
   /// are judged but do not count for the score.
   std::string reveal(double t_s);
   /// The hidden settings in words: each setting, its direction and its adjuster's offset.
   std::string answer_text() const;
+  /// "setting was" or "settings were", as many as are hidden.
+  std::string answer_heading() const;
   bool revealed() const { return revealed_; }
   /// Moves an adjuster by `delta_mm` relative to where it is (the trainee's slider). Throws
   /// InputError for an unknown setting or a move beyond the adjuster's physical range.

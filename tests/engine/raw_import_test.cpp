@@ -494,12 +494,21 @@ TEST(RawImport, KeySensorWithoutItsPointsOrOfAnotherLengthIsNamed) {
   o.key_trace->reading.pop_back();
   expect_message(error_of([&] { import_file(path, o); }),
                  {path, "key's column 2 has 399 samples", "hammer's column 1 400"});
-  // a calibration whose points would put the key front beyond its own arm
+  // a reading whose dip no key makes (11.9 mm on a 20 mm arm): the sample is named
   o.key_trace = read_raw_trace(path, 2);
-  o.key_front_arm_m = 1e-3;
+  o.key_front_arm_m = 0.02;
   o.key_trace->reading[300] = 0.9;
   expect_message(error_of([&] { import_file(path, o); }),
-                 {"two_sensor_cal.csv", "more than the key front's 1 mm arm"});
+                 {"two_sensor_cal.csv", "reading 0.9 (sample 300 of the window)",
+                  "more than a fifth of the key front's 20 mm arm"});
+  // a sensor running against its points: the key only rises above its rest
+  std::vector<double> rising(400, 0.0);
+  for (std::size_t i = 200; i < 400; ++i) rising[i] = -5e-3;
+  const std::string against = write_two_columns("key_against.txt", rising);
+  o.key_trace = read_raw_trace(against, 2);
+  o.key_front_arm_m = kKeyArmM;
+  expect_message(error_of([&] { import_file(against, o); }),
+                 {"two_sensor_cal.csv", "the key only rises above its rest"});
 }
 
 }  // namespace

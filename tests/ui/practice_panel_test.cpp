@@ -120,6 +120,15 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY2(panel->status_text().startsWith("Correct"), qPrintable(panel->status_text()));
   QVERIFY(!panel->request_hint().isEmpty());
 
+  // closed and reopened mid-exercise, the exercise goes on with its answer hidden again (the
+  // regulation panel would show the hidden action's readings)
+  practice_mode->trigger();
+  QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  practice_mode->trigger();
+  QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
+  QVERIFY(window.model()->adjusters[window.model()->adjuster_index("checking")].value != 0.0);
+
   // correct: the relative moves that undo both faults
   for (const pat::HiddenFault& f : panel->session()->exercise().faults)
     panel->move_adjuster(f.setting, -f.adjuster_mm);
@@ -131,7 +140,8 @@ void PracticePanelTest::walk_through_an_exercise() {
   const pat::SessionScore score = *panel->session()->final_score();
   QVERIFY2(score.regulation > 39.0, qPrintable(panel->status_text()));
   // the score comes with the answer
-  QVERIFY2(panel->status_text().contains("The hidden setting: "), qPrintable(panel->status_text()));
+  QVERIFY2(panel->status_text().contains("The hidden settings were: "),
+           qPrintable(panel->status_text()));
   QVERIFY(score.total > 0.0);
   // the scored session is remembered for the next run of the program
   QVERIFY(panel->past_sessions().value(0).contains("Grand, level 2"));
@@ -159,11 +169,10 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (QAction* action : window.menuBar()->findChildren<QAction*>())
     if (action->text().contains("preset")) QVERIFY(action->isEnabled());
 
-  // reopened, the exercise goes on with its answer hidden again (the regulation panel would show
-  // the hidden action's readings)
+  // reopened after the score, the exercise is over: the regulated action stays, with its panels
   practice_mode->trigger();
-  QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
-  QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
+  QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
   practice_mode->trigger();
 }
 
@@ -180,6 +189,11 @@ void PracticePanelTest::giving_up_shows_the_answer() {
                QString::fromStdString(hidden.setting + " " + hidden.direction)),
            qPrintable(panel->status_text()));
   QVERIFY(panel->session()->revealed());
+  QVERIFY(!panel->findChild<QPushButton*>("hint_button")->isEnabled());
+  // nothing left to hint, and a hint asked for anyway costs nothing
+  const int hints = panel->session()->hints_used();
+  panel->request_hint();
+  QCOMPARE(panel->session()->hints_used(), hints);
 }
 
 void PracticePanelTest::adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel() {
