@@ -489,8 +489,18 @@ void PracticePanel::set_busy(bool busy) {
   }
 }
 
+QString PracticePanel::readable(QString text) const {
+  if (!regulated_) return text;
+  // the engine's identifiers ("lever_height") as the form names them ("lever height")
+  for (const RegulationSetting& s : regulated_->regulation)
+    text.replace(QRegularExpression(
+                     "\\b" + QRegularExpression::escape(QString::fromStdString(s.name)) + "\\b"),
+                 setting_title(s.name));
+  return text;
+}
+
 void PracticePanel::show_status(const QString& text) {
-  status_->setText(text);
+  status_->setText(readable(text));
 }
 
 void PracticePanel::append_history() {
@@ -500,7 +510,7 @@ void PracticePanel::append_history() {
     history_->addItem(QStringLiteral("%1 s  %2: %3")
                           .arg(events[i].t_s, 0, 'f', 1)
                           .arg(QString::fromStdString(events[i].kind))
-                          .arg(QString::fromStdString(events[i].detail)));
+                          .arg(readable(QString::fromStdString(events[i].detail))));
   history_->scrollToBottom();
 }
 

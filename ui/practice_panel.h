@@ -73,6 +73,8 @@ class PracticePanel : public QWidget {
   void build_adjusters();
   void set_busy(bool busy);
   void show_status(const QString& text);
+  /// `text` with the settings' identifiers replaced by the names the form shows.
+  QString readable(QString text) const;
   void append_history();
   void remember_session(const SessionScore& score);
   void show_past_sessions();

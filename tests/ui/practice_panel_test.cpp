@@ -22,6 +22,7 @@
 #include "practice/exercise.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
+#include "setting_names.h"
 #include "step_slider.h"
 #include "ui_test_support.h"
 
@@ -185,9 +186,11 @@ void PracticePanelTest::giving_up_shows_the_answer() {
   QVERIFY(reveal && reveal->isEnabled());
   QTest::mouseClick(reveal, Qt::LeftButton);
   const pat::FaultAnswer hidden = pat::exercise_answers(panel->session()->exercise()).front();
-  QVERIFY2(panel->status_text().contains(
-               QString::fromStdString(hidden.setting + " " + hidden.direction)),
+  // named as the form names it ("hammer blow", not "hammer_blow")
+  QVERIFY2(panel->status_text().contains(pat::ui::setting_title(hidden.setting) + " " +
+                                         QString::fromStdString(hidden.direction)),
            qPrintable(panel->status_text()));
+  QVERIFY2(!panel->status_text().contains('_'), qPrintable(panel->status_text()));
   QVERIFY(panel->session()->revealed());
   QVERIFY(!panel->findChild<QPushButton*>("hint_button")->isEnabled());
   // nothing left to hint, and a hint asked for anyway costs nothing
