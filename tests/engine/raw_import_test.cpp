@@ -413,7 +413,9 @@ std::string write_two_columns(const std::string& name, const std::vector<double>
 }
 
 RawImport import_with_key(const std::string& path) {
-  const std::string cal = write_file("two_sensor_cal.csv", kTwoSensorCalibration);
+  // a calibration file of this test's own: the tests run in parallel processes
+  const std::string cal =
+      write_file(std::filesystem::path(path).stem().string() + "_cal.csv", kTwoSensorCalibration);
   RawImportOptions o;
   o.calibration = read_sensor_calibration(cal, "hammer");
   o.key_calibration = read_sensor_calibration(cal, "key");
@@ -485,12 +487,12 @@ TEST(RawImport, KeySensorWithoutItsPointsOrOfAnotherLengthIsNamed) {
   const std::string path = write_two_columns("key_no_points.txt", dip);
   RawImportOptions o;
   o.calibration =
-      read_sensor_calibration(write_file("two_sensor_cal.csv", kTwoSensorCalibration), "hammer");
+      read_sensor_calibration(write_file("key_no_points_cal.csv", kTwoSensorCalibration), "hammer");
   o.key_trace = read_raw_trace(path, 2);
   o.key_front_arm_m = kKeyArmM;
   expect_message(error_of([&] { import_file(path, o); }),
                  {"column 2", "needs its calibration points"});
-  o.key_calibration = read_sensor_calibration(temp_path("two_sensor_cal.csv"), "key");
+  o.key_calibration = read_sensor_calibration(temp_path("key_no_points_cal.csv"), "key");
   o.key_trace->reading.pop_back();
   expect_message(error_of([&] { import_file(path, o); }),
                  {path, "key's column 2 has 399 samples", "hammer's column 1 400"});
@@ -499,7 +501,7 @@ TEST(RawImport, KeySensorWithoutItsPointsOrOfAnotherLengthIsNamed) {
   o.key_front_arm_m = 0.02;
   o.key_trace->reading[300] = 0.9;
   expect_message(error_of([&] { import_file(path, o); }),
-                 {"two_sensor_cal.csv", "reading 0.9 (sample 300 of the window)",
+                 {"key_no_points_cal.csv", "reading 0.9 (sample 300 of the window)",
                   "more than a fifth of the key front's 20 mm arm"});
   // a sensor running against its points: the key only rises above its rest
   std::vector<double> rising(400, 0.0);
@@ -508,7 +510,7 @@ TEST(RawImport, KeySensorWithoutItsPointsOrOfAnotherLengthIsNamed) {
   o.key_trace = read_raw_trace(against, 2);
   o.key_front_arm_m = kKeyArmM;
   expect_message(error_of([&] { import_file(against, o); }),
-                 {"two_sensor_cal.csv", "the key only rises above its rest"});
+                 {"key_no_points_cal.csv", "the key only rises above its rest"});
 }
 
 }  // namespace
