@@ -382,14 +382,18 @@ void MainWindow::build_practice() {
     practising_ = active;
     regulation_dock_->setVisible(!active);
     analyses_dock_->setVisible(!active);
-    // another action or preset would leave the exercise's panel on the wrong action, and a
-    // saved preset of the hidden action gives its adjusters away
-    for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
-      a->setEnabled(!active);
+    enable_action_changes(!active);
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
   practice_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+}
+
+void MainWindow::enable_action_changes(bool on) {
+  // during an exercise another action or preset would leave its panel on the wrong action, and
+  // a saved preset of the hidden action gives its adjusters away
+  for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
+    a->setEnabled(on);
 }
 
 void MainWindow::end_practice() {
@@ -397,8 +401,7 @@ void MainWindow::end_practice() {
   practising_ = false;
   regulation_dock_->show();
   analyses_dock_->show();
-  for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
-    a->setEnabled(true);
+  enable_action_changes(true);
   if (!action_name_.empty()) open_action(action_name_);
 }
 

@@ -106,6 +106,8 @@ class MainWindow : public QMainWindow {
   void show_deregulation_result(const DeregulationResult& result);
   void build_practice();
   void practise_on(std::shared_ptr<const ActionModel> model);
+  /// Opening another action or preset, and saving one: off while an exercise runs.
+  void enable_action_changes(bool on);
   void end_practice();
   /// The status bar: what runs now and with which input, or where the run is paused.
   void show_run_status();

@@ -282,8 +282,21 @@ void check_output_path(const std::string& path) {
 }
 
 void write_csv(const std::string& path, const CsvTable& table) {
+  write_file_replacing(path, format_csv(table));
+}
+
+std::string csv_quoted(const std::string& text) {
+  if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';  // a quote is doubled
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+void write_file_replacing(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
-  const std::string text = format_csv(table);
   const fs::path target(path);
   check_output_path(path);
   std::error_code ec;
@@ -313,35 +326,6 @@ void write_csv(const std::string& path, const CsvTable& table) {
     std::error_code ignored;
     fs::remove(temporary, ignored);
     throw InputError(located_message(path, "", "cannot replace the file: " + ec.message()));
-  }
-}
-
-std::string csv_quoted(const std::string& text) {
-  if (text.find_first_of(",\"\n") == std::string::npos) return text;
-  std::string quoted = "\"";
-  for (char c : text) {
-    if (c == '"') quoted += '"';  // a quote is doubled
-    quoted += c;
-  }
-  return quoted + "\"";
-}
-
-void write_file_replacing(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  std::error_code ec;
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (out) out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    if (!out) {
-      std::filesystem::remove(tmp, ec);
-      throw InputError(path + ": cannot write");
-    }
-  }
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw InputError(path + ": cannot write (" + ec.message() + ")");
   }
 }
 

@@ -41,9 +41,10 @@ std::string format_csv(const CsvTable& table);
 /// comma, a quote or a line break.
 std::string csv_quoted(const std::string& text);
 
-/// Writes `text` to `path` through a temporary file renamed over it once whole: an existing file
-/// is replaced only by a complete one, and no temporary is left behind. Throws InputError naming
-/// the path.
+/// Writes `text` to `path` through a temporary file (a unique name beside it) renamed over it
+/// once whole: an existing file is replaced only by a complete one, and no temporary is left
+/// behind. Checks the path first (check_output_path). Throws InputError naming the path. write_csv
+/// writes through it.
 void write_file_replacing(const std::string& path, const std::string& text);
 
 }  // namespace pat

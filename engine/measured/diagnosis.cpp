@@ -458,33 +458,40 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   w.fit.training_rms_deg = std::sqrt(training_cost / static_cast<double>(training_samples));
 }
 
+/// "FILE: hammer_angle_deg runs from LOW to HIGH deg, " : the start of a units message.
+std::string angle_span_text(const MeasuredTrial& trial, double low, double high) {
+  return trial.path + ": hammer_angle_deg runs from " + format_fixed(low, 3) + " to " +
+         format_fixed(high, 3) + " deg, ";
+}
+
 /// Refuses a hammer trace that cannot be in degrees from rest toward the string (DESIGN.md
 /// section 5) for an action whose hammer turns `contact_deg` from rest to the string: one that
-/// moves less than a tenth of that (radians, or a hammer that never rises), or that goes half of
-/// it below rest (the sign reversed) or half of it beyond the string. The real strike overshoots
-/// its rest by 2.5 deg on its return and peaks 0.1 deg past contact (felt compression).
-/// `range`: the first check only, else the other two.
-void check_angle_units(const MeasuredTrial& trial, double contact_deg, bool range) {
+/// goes half of that below rest (the sign reversed) or half of it beyond the string. The real
+/// strike overshoots its rest by 2.5 deg on its return and peaks 0.1 deg past contact (felt
+/// compression).
+void check_angle_sign_and_scale(const MeasuredTrial& trial, double contact_deg) {
   if (trial.hammer_deg.empty()) return;  // read_measured refuses such a file first
   const auto [low, high] = std::minmax_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
-  std::ostringstream problem;
-  problem << trial.path << ": hammer_angle_deg runs from " << format_fixed(*low, 3) << " to "
-          << format_fixed(*high, 3) << " deg, ";
-  if (range && *high - *low < 0.1 * contact_deg) {
-    problem << "less than a tenth of the " << format_fixed(contact_deg, 1)
-            << " deg the hammer turns from rest to the string: are the angles in radians, or does "
-               "the hammer never rise?";
-  } else if (!range && *low < -0.5 * contact_deg) {
-    problem << "more than half the hammer's " << format_fixed(contact_deg, 1)
-            << " deg stroke below rest: angles are positive toward the string (is the sign "
-               "reversed?)";
-  } else if (!range && *high > 1.5 * contact_deg) {
-    problem << "more than half the hammer's " << format_fixed(contact_deg, 1)
-            << " deg stroke beyond the string: are the angles in degrees from rest?";
-  } else {
-    return;
-  }
-  throw InputError(problem.str());
+  const std::string stroke = format_fixed(contact_deg, 1);
+  if (*low < -0.5 * contact_deg)
+    throw InputError(angle_span_text(trial, *low, *high) + "more than half the hammer's " + stroke +
+                     " deg stroke below rest: angles are positive toward the string (is the "
+                     "sign reversed?)");
+  if (*high > 1.5 * contact_deg)
+    throw InputError(angle_span_text(trial, *low, *high) + "more than half the hammer's " + stroke +
+                     " deg stroke beyond the string: are the angles in degrees from rest?");
+}
+
+/// Refuses a hammer trace that moves less than a tenth of the hammer's `contact_deg` (radians,
+/// or a hammer that never rises).
+void check_angle_range(const MeasuredTrial& trial, double contact_deg) {
+  if (trial.hammer_deg.empty()) return;
+  const auto [low, high] = std::minmax_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
+  if (*high - *low < 0.1 * contact_deg)
+    throw InputError(angle_span_text(trial, *low, *high) + "less than a tenth of the " +
+                     format_fixed(contact_deg, 1) +
+                     " deg the hammer turns from rest to the string: are the angles in radians, "
+                     "or does the hammer never rise?");
 }
 
 PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
@@ -519,9 +526,9 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   for (const MeasuredTrial& t : trials) {
     // a reversed sign or a trace beyond the string first (an estimated input would be fitted to
     // it), a trace too small after (a flat one without an input is told that first)
-    check_angle_units(t, contact_deg, false);
+    check_angle_sign_and_scale(t, contact_deg);
     prepared.push_back(prepare(model, t));
-    check_angle_units(t, contact_deg, true);
+    check_angle_range(t, contact_deg);
   }
   const std::size_t n_trials = prepared.size();
   d.held_out = n_trials > 1;

@@ -55,9 +55,10 @@ std::string number_text(double x, int precision = 6) {
   return out.str();
 }
 
-/// The key angles of the window [first, first + count) and the file's key columns and metadata.
-void add_key_metadata(const RawImportOptions& o, const RawTrace& hammer, std::size_t first,
-                      std::size_t count, RawImport& result, CsvTable& table) {
+/// The key angles of the window [first, first + count) into `result`, and the table's key
+/// columns and metadata.
+void add_key_columns(const RawImportOptions& o, const RawTrace& hammer, std::size_t first,
+                     std::size_t count, RawImport& result, CsvTable& table) {
   const RawTrace& key = *o.key_trace;
   if (!o.key_calibration)
     throw InputError("the key's sensor (column " + std::to_string(key.column) +
@@ -248,7 +249,7 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
   table.metadata["source"] = source.str();
   table.metadata["calibration"] = calibration_note.str();
   table.columns = {"time_s", "hammer_angle_deg", "sensor_reading"};
-  if (o.key_trace) add_key_metadata(o, trace, first, count, result, table);
+  if (o.key_trace) add_key_columns(o, trace, first, count, result, table);
   table.rows.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
     // 1e-4 deg: far below the sensor's noise (about 0.05 deg at rest on the real files)

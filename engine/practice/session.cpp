@@ -16,14 +16,6 @@
 namespace pat {
 namespace {
 
-/// The technician's test that measures a setting (measurements.h).
-std::string measuring_test(const std::string& setting) {
-  if (setting == "let_off" || setting == "drop" || setting == "damper_lift")
-    return "the slow key press";
-  if (setting == "checking") return "the forte blow";
-  return "the rest geometry";
-}
-
 /// The observation (observations.h) that measures a setting directly: the symptom read from it
 /// points at the setting itself rather than at one it moves along.
 std::string own_observation(const std::string& kind, const std::string& setting) {
@@ -38,6 +30,14 @@ std::string own_observation(const std::string& kind, const std::string& setting)
   if (setting == "damper_lift") return "slow_press.damper_start_fraction";
   if (setting == "checking") return "forte_blow.caught_distance_mm";
   return {};
+}
+
+/// The technician's test that measures a setting: the one its own observation belongs to.
+std::string measuring_test(const std::string& kind, const std::string& setting) {
+  const std::string own = own_observation(kind, setting);
+  if (own.starts_with("slow_press.")) return "the slow key press";
+  if (own.starts_with("forte_blow.")) return "the forte blow";
+  return "the rest geometry";
 }
 
 std::string answers_text(const std::vector<FaultAnswer>& answers) {
@@ -124,7 +124,8 @@ std::string PracticeSession::hint(double t_s) {
       break;
     }
     case 1:
-      text = "The hidden setting is measured in " + measuring_test(first.setting) + ".";
+      text = "The hidden setting is measured in " + measuring_test(regulated_.kind, first.setting) +
+             ".";
       break;
     case 2:
       text = "Its measured value is " +
