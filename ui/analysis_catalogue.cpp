@@ -199,7 +199,9 @@ MetricName metric_name(const std::string& key) {
   }
   if (words == "max_repetition") words = "repetition limit";
   std::replace(words.begin(), words.end(), '_', ' ');
-  return {QString::fromStdString(words), unit};
+  QString title = QString::fromStdString(words);
+  title.replace(QStringLiteral("let off"), QStringLiteral("let-off"));  // the technicians' spelling
+  return {title, unit};
 }
 
 }  // namespace
@@ -216,8 +218,7 @@ AnalysisEntry regulation_sensitivity() {
       const SensitivityResult r = sensitivity(*model, SensitivityOptions{}, progress);
       AnalysisResult result;
       std::vector<QString> settings;
-      for (const SensitivityRow& row : r.rows)
-        settings.push_back(QString::fromStdString(row.setting));
+      for (const SensitivityRow& row : r.rows) settings.push_back(setting_title(row.setting));
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
         const QString metric = QString::fromStdString(r.metrics[m]);  // the CSV column's stem
         const MetricName name = metric_name(r.metrics[m]);
@@ -229,18 +230,21 @@ AnalysisEntry regulation_sensitivity() {
           plus.x.push_back(double(s));
           plus.y.push_back(r.rows[s].plus[m] - r.baseline[m]);
         }
-        AnalysisPlot plot{name.words,
-                          QObject::tr("setting"),
-                          "setting_index",
-                          "",
-                          QObject::tr("change of %1").arg(name.with_unit()),
-                          {minus, plus}};
+        // the plot's title names the metric; the axis keeps to the change and its unit, which
+        // fits the dock's short plots ("change of impact velocity (m/s)" was cut off)
+        AnalysisPlot plot{
+            name.words,
+            QObject::tr("setting"),
+            "setting_index",
+            "",
+            name.unit.isEmpty() ? QObject::tr("change") : QObject::tr("change (%1)").arg(name.unit),
+            {minus, plus}};
         plot.x_categories = settings;
         result.plots.push_back(plot);
       }
       // one row per setting: how the setting itself moved, then one row per metric
       for (const SensitivityRow& row : r.rows) {
-        const QString name = QString::fromStdString(row.setting);
+        const QString name = setting_title(row.setting);
         result.table.push_back({name + QObject::tr(" measured (−0.5 / 0 / +0.5 mm)"),
                                 QObject::tr("%1 / %2 / %3")
                                     .arg(number(row.measured[0]))
@@ -266,7 +270,7 @@ AnalysisEntry regulation_sensitivity() {
         const std::vector<SensitivityRank> by_change = rank_by_change(r, m);
         for (std::size_t i = 0; i < 3; ++i)
           row << (i < by_change.size() ? QObject::tr("%1 (%2)")
-                                             .arg(QString::fromStdString(by_change[i].setting))
+                                             .arg(setting_title(by_change[i].setting))
                                              .arg(number(by_change[i].change))
                                        : QObject::tr("—"));
         ranking.rows.push_back(row);
@@ -277,7 +281,7 @@ AnalysisEntry regulation_sensitivity() {
       result.summary =
           ranks.empty() ? QObject::tr("no setting changed the blow measurably.")
                         : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
-                              .arg(QString::fromStdString(ranks.front().setting))
+                              .arg(setting_title(ranks.front().setting))
                               .arg(number(ranks.front().change));
       return result;
     };

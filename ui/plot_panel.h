@@ -64,6 +64,7 @@ class PlotPanel : public QWidget {
   void set_minimum_value_span(double span) { minimum_value_span_ = span; }
 
   QString title() const { return title_; }
+  QString y_title() const { return y_title_; }
   /// The x axis' CSV column (time_s unless set_x_axis named another).
   QString x_column() const { return x_column_; }
   void set_x_range(double lo, double hi);
