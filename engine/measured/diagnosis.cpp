@@ -700,8 +700,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     for (const PhaseResidual& p : r.discrepancies.phases) {
       std::string text = r.path + ": " + p.phase + ": residual rms " + format_fixed(p.rms_deg) +
                          " deg over " + std::to_string(p.samples) + " samples (noise " +
-                         format_fixed(r.noise_deg) + " deg)";
-      if (p.rms_deg > 2.0 * r.noise_deg)
+                         format_fixed(p.noise_deg) + " deg in this phase)";
+      if (p.rms_deg > 2.0 * p.noise_deg)
         text += std::string(", the measured hammer is on average ") +
                 (p.mean_deg > 0 ? "higher" : "lower") + " than the model by " +
                 format_fixed(std::abs(p.mean_deg)) + " deg";

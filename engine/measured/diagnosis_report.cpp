@@ -77,7 +77,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
       phases.push_back({{"phase", p.phase},
                         {"samples", p.samples},
                         {"rms_deg", p.rms_deg},
-                        {"mean_deg", p.mean_deg}});
+                        {"mean_deg", p.mean_deg},
+                        {"noise_deg", p.noise_deg}});
     nlohmann::json features = nlohmann::json::array();
     for (const FeatureDiscrepancy& f : r.discrepancies.features)
       features.push_back(
@@ -179,12 +180,12 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
     const std::string file = fs::path(r.path).filename().string();
     for (const PhaseResidual& p : r.discrepancies.phases)
       phase_rows.push_back({file, p.phase, std::to_string(p.samples), csv_number(p.rms_deg),
-                            csv_number(p.mean_deg)});
+                            csv_number(p.mean_deg), csv_number(p.noise_deg)});
     write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
               trial_traces_table(r));
   }
   write_text_csv((fs::path(dir) / "phases.csv").string(),
-                 {"file", "phase", "samples", "rms_deg", "mean_deg"}, phase_rows);
+                 {"file", "phase", "samples", "rms_deg", "mean_deg", "noise_deg"}, phase_rows);
 }
 
 }  // namespace pat

@@ -81,6 +81,14 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
     sums[p].second += al.residual[i] * al.residual[i];
     ++counts[p];
   }
+  // each phase's own noise: second differences of the measured angle within one phase only
+  std::map<std::string, std::vector<double>> second_differences;
+  for (std::size_t i = 1; i + 1 < trial.t.size(); ++i) {
+    const std::string& p = out.phase_of_sample[i];
+    if (out.phase_of_sample[i - 1] == p && out.phase_of_sample[i + 1] == p)
+      second_differences[p].push_back(trial.hammer_deg[i + 1] - 2.0 * trial.hammer_deg[i] +
+                                      trial.hammer_deg[i - 1]);
+  }
   for (const std::string& p : phase_names()) {
     if (!counts.count(p)) continue;
     PhaseResidual r;
@@ -88,6 +96,10 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
     r.samples = counts[p];
     r.rms_deg = std::sqrt(sums[p].second / r.samples);
     r.mean_deg = sums[p].first / r.samples;
+    std::vector<double>& d2 = second_differences[p];
+    r.noise_deg = d2.size() >= static_cast<std::size_t>(kMinPhaseNoiseSamples)
+                      ? noise_from_second_differences(std::move(d2))
+                      : noise_deg;
     out.phases.push_back(r);
   }
 

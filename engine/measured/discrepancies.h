@@ -23,7 +23,16 @@ struct PhaseResidual {
   int samples = 0;
   double rms_deg = 0.0;   ///< root mean square of the residual in the phase
   double mean_deg = 0.0;  ///< its mean (measured − model): > 0 the hammer is higher than modelled
+  /// The measurement's noise within the phase (estimate_noise over the second differences whose
+  /// three samples all lie in it): a position sensor's scatter depends on where it reads, e.g.
+  /// ten times larger near rest than near the string on the real Kawai files. The whole trial's
+  /// noise when the phase has fewer than kMinPhaseNoiseSamples such differences.
+  double noise_deg = 0.0;
 };
+
+/// Second differences a phase needs for its own noise estimate (a median of fewer scatters by
+/// more than a quarter of itself).
+inline constexpr int kMinPhaseNoiseSamples = 20;
 
 struct FeatureDiscrepancy {
   std::string feature;  ///< impact_time, impact_velocity, let_off_time, check_angle, ...

@@ -71,6 +71,11 @@ double estimate_noise(const std::vector<double>& v) {
   std::vector<double> d2;
   d2.reserve(v.size());
   for (std::size_t i = 1; i + 1 < v.size(); ++i) d2.push_back(v[i + 1] - 2 * v[i] + v[i - 1]);
+  return noise_from_second_differences(std::move(d2));
+}
+
+double noise_from_second_differences(std::vector<double> d2) {
+  if (d2.size() < 3) return 0.0;
   const double m = median(d2);
   for (double& x : d2) x = std::abs(x - m);
   return 1.4826 * median(d2) / std::sqrt(6.0);

@@ -60,4 +60,8 @@ std::vector<MeasuredEvent> detect_events(const std::vector<double>& t,
 /// smooth signal barely affects (white noise σ gives second differences of variance 6σ²).
 double estimate_noise(const std::vector<double>& values);
 
+/// The same estimate from second differences already taken (v[i+1] − 2v[i] + v[i−1]), e.g.
+/// only those of one phase of a stroke; 0 for fewer than 3.
+double noise_from_second_differences(std::vector<double> second_differences);
+
 }  // namespace pat
