@@ -2,6 +2,8 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "core/error.h"
 #include "io/csv.h"
@@ -76,6 +78,15 @@ std::string CommandLine::output_path(const std::string& option, bool required) c
   } catch (const InputError& e) {
     throw InputError(option + ": " + e.what());
   }
+  std::error_code error;
+  std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  const std::string key =
+      (error ? std::filesystem::path(path) : absolute).lexically_normal().string();
+  const auto [named, fresh] = outputs_.emplace(key, option);
+  if (!fresh && named->second != option)
+    throw InputError(option + ": " + path + " is also the " + named->second +
+                     " file; the second output would overwrite the first, so give each its own "
+                     "file");
   return path;
 }
 

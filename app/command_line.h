@@ -27,13 +27,16 @@ class CommandLine {
   double positive_number(const std::string& option) const;
   double positive_number_or(const std::string& option, double fallback) const;
   /// The path of an output option ("" when absent), checked before any work: not empty, in a
-  /// folder that exists, not a folder (the error names the option).
+  /// folder that exists, not a folder, and not a file another output option of the same command
+  /// already names (one would overwrite the other; the error names both options).
   /// `required`: absent is an error too.
   std::string output_path(const std::string& option, bool required = false) const;
 
  private:
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_;
+  /// Output files named so far (absolute, normalized) and the option that named each.
+  mutable std::map<std::string, std::string> outputs_;
 };
 
 /// Parses a finite number; throws InputError naming `what`.

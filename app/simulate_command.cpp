@@ -58,12 +58,14 @@ int run_simulate(const std::vector<std::string>& args) {
                        {"integrator", options.integrator},
                        {"rest_hammer_string_gap_mm", rest.hammer_string_gap * 1e3}};
     std::cout << out.dump(1) << "\n";
+    if (!input->note().empty()) std::cerr << "note: " << input->note() << "\n";
   } else {
     std::cout << model.name << ", input " << input->spec() << ", " << options.integrator << ": "
               << result.status;
     if (result.status != "ok")
       std::cout << " at t = " << result.end_time << " s (" << result.stop_cause << ")";
     std::cout << "\n";
+    if (!input->note().empty()) std::cout << "  note: " << input->note() << "\n";
     for (const SimEvent& e : result.events) {
       std::cout << "  " << e.t * 1e3 << " ms  " << e.type << "  hammer-string gap "
                 << e.hammer_string_gap * 1e3 << " mm";

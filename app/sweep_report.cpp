@@ -144,6 +144,27 @@ std::string sweep_summary(const SweepResult& r) {
             " strikes, at " + format_number(f.frequency_hz) +
             " Hz, t = " + format_number(f.t_start_s) + " s)";
   }
+  // a run that stopped (a contact beyond its travel, a diverging step) did not simulate the
+  // band above it: said even when an earlier failure already set the maximum
+  const CycleResult* stopped = nullptr;
+  std::string cause = r.stop_cause;
+  for (const CycleResult& c : r.cycles)
+    if (c.outcome == CycleOutcome::stopped && !stopped) stopped = &c;
+  for (const FrequencyResult& f : r.frequencies)
+    for (const CycleResult& c : f.cycles)
+      if (c.outcome == CycleOutcome::stopped && !stopped) {
+        stopped = &c;
+        cause = f.stop_cause;
+      }
+  if (stopped) {
+    const bool is_first_failure =
+        r.first_failure && r.first_failure->outcome == CycleOutcome::stopped;
+    text += is_first_failure ? "; the run stopped there: "
+                             : "; the run stopped at " + format_number(stopped->frequency_hz) +
+                                   " Hz (t = " + format_number(stopped->t_start_s) + " s): ";
+    text += (cause.empty() ? std::string("no cause given") : cause) +
+            ", so nothing above was simulated";
+  }
   if (r.alternating_from_hz)
     text += "; strong and weak blows alternate from " + format_number(*r.alternating_from_hz) +
             " Hz (period doubling: the limit depends on how the key got there, compare " +

@@ -32,6 +32,7 @@
 #include "deregulation_runner.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
+#include "inputs/key_input.h"
 #include "measurement_service.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
@@ -116,6 +117,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    "rest\".")
                     .arg(controller_->display_time() * 1e3, 0, 'f', 2)
                     .arg(cause));
+  });
+  connect(controller_, &PlaybackController::runRefused, this, [this](const QString& why) {
+    show_run_status();
+    show_banner(tr("Could not start: %1. Choose another input, or fix the setting or the file, "
+                   "and press \"Start from rest\".")
+                    .arg(why));
   });
   connect(controller_, &PlaybackController::inputChanged, this, [this](const QString& what) {
     running_input_ = what;
@@ -476,6 +483,18 @@ void MainWindow::open_action(const std::string& name_or_path) {
 
 void MainWindow::start(const std::string& spec) {
   if (!model_) return;
+  // a CSV that cannot drive any run (missing, malformed, times running back) is refused here,
+  // before the run on screen is thrown away; the worker still checks what needs the action's
+  // geometry (a recorded key angle beyond this key's travel). The form's other inputs are kept
+  // within range by their fields.
+  try {
+    if (spec.rfind("csv:", 0) == 0) parse_input_spec(spec, InputContext{});
+  } catch (const std::exception& e) {
+    show_banner(tr("Not started: %1. Fix the file or choose another input; the run shown "
+                   "before goes on.")
+                    .arg(QString::fromStdString(e.what())));
+    return;
+  }
   run_controls_->input_form()->set_spec(spec);  // the form shows what runs
   controller_->restart(model_, spec);
   controller_->play();

@@ -227,7 +227,7 @@ void PlaybackController::on_run_failed(int run_id, const QString& message) {
   if (run_id != run_id_) return;
   stopped_ = true;
   pause();
-  emit runStopped(message);
+  emit runRefused(message);
 }
 
 void PlaybackController::on_run_stopped(int run_id, const QString& cause) {

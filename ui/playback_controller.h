@@ -73,8 +73,10 @@ class PlaybackController : public QObject {
   /// mouse, or a recorded replay.
   void inputChanged(const QString& what);
   void runRestarted();
-  /// The run stopped by itself or could not start; the message says why.
+  /// The run stopped by itself (a diverging step); the message says why.
   void runStopped(const QString& message);
+  /// The run could not start (its input or model refused); the message says why.
+  void runRefused(const QString& message);
   void realtimeFactorChanged(double factor);
 
  private slots:

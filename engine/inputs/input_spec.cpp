@@ -7,7 +7,8 @@
 //     durations must be positive, the double-pulse gap must not be negative (0: the second pulse
 //     starts as the first ends); forces may have either sign (negative lifts the key);
 //   - csv:PATH takes everything after "csv:" as the path (it may contain ':'); a file with both
-//     key_angle_deg and key_force_n is a motion input (the angle is prescribed);
+//     key_angle_deg and key_force_n is a motion input (the angle is prescribed, and note() says
+//     the force column is not used);
 //   - before t = 0 every input is at rest (zero force, zero angle).
 #include <algorithm>
 #include <charconv>
@@ -106,9 +107,12 @@ class InputBase : public KeyInput {
  public:
   explicit InputBase(std::string spec) : spec_(std::move(spec)) {}
   const std::string& spec() const override { return spec_; }
+  std::string note() const override { return note_; }
+  void set_note(std::string note) { note_ = std::move(note); }
 
  private:
   std::string spec_;
+  std::string note_;
 };
 
 class ForceInput : public InputBase {
@@ -368,8 +372,22 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
                                          number_text(time[i]) + " after " +
                                          number_text(time[i - 1]) + ")"));
   }
+  // the run starts at t = 0 at rest and holds the first row until its time: a file starting
+  // later must start at rest, or the action would be held pressed by a guess
+  auto require_rest_before_first_row = [&](const char* column, double value, double at_rest,
+                                           const char* unit) {
+    if (time.front() <= 0.0 || std::abs(value) <= at_rest) return;
+    throw InputError(located_message(
+        path, "",
+        std::string("starts at time_s ") + number_text(time.front()) + " s with " + column + " " +
+            number_text(value) + " " + unit + " (" + data_row_place(path, 0) +
+            "): every run starts at t = 0 at rest, and this value would be held from 0 to " +
+            number_text(time.front()) + " s; add a row at rest at time 0 or shift the times to " +
+            "start at 0"));
+  };
   if (angle_column >= 0) {
     std::vector<double> angle = table.column("key_angle_deg");
+    require_rest_before_first_row("key_angle_deg", angle.front(), kCsvRestAngleDeg, "deg");
     for (std::size_t i = 0; i < angle.size(); ++i) {
       const double a = rad(angle[i]);
       // a known full dip (0: not known here) bounds the angles a key can take
@@ -387,9 +405,16 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
     }
     CubicSpline spline(time, angle);
     check_spline_follows_the_data(path, time, angle, spline);
-    return std::make_unique<CsvMotion>(spec, std::move(spline));
+    auto motion = std::make_unique<CsvMotion>(spec, std::move(spline));
+    if (force_column >= 0)
+      motion->set_note(path +
+                       ": has key_angle_deg and key_force_n; the key follows key_angle_deg and "
+                       "key_force_n is not used (the finger force is computed)");
+    return motion;
   }
-  return std::make_unique<CsvForce>(spec, std::move(time), table.column("key_force_n"));
+  std::vector<double> force = table.column("key_force_n");
+  require_rest_before_first_row("key_force_n", force.front(), kCsvRestForceN, "N");
+  return std::make_unique<CsvForce>(spec, std::move(time), std::move(force));
 }
 
 bool parse_stroke(const std::string& spec, std::string_view field) {

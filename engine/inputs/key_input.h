@@ -37,7 +37,17 @@ class KeyInput {
   virtual double added_mass_kg() const { return 0.0; }
   /// The SPEC the input was made from, for metadata and messages.
   virtual const std::string& spec() const = 0;
+  /// What the user should know about how the input was read, in words (empty: nothing), e.g.
+  /// that a CSV with both a force and a key angle column drives the key by its angle.
+  virtual std::string note() const { return {}; }
 };
+
+/// How near rest the first row of a CSV input starting after t = 0 must be (its value is held
+/// from t = 0, when every run starts at rest): 0.1 N, under half of the smallest force that
+/// moves a key (an upweight of 20–30 g, 0.2–0.3 N, fact F9); 0.1°, 0.4 mm at a 220 mm key front,
+/// four times the key sensor's scatter at rest (engine/measured/key_sensor.h).
+constexpr double kCsvRestForceN = 0.1;
+constexpr double kCsvRestAngleDeg = 0.1;
 
 /// Model quantities the input SPECs need.
 struct InputContext {
@@ -63,7 +73,10 @@ struct InputContext {
 ///   csv:PATH                     a CSV (io/csv.h) with time_s and either key_force_n (force) or
 ///                                key_angle_deg (motion); force is interpolated linearly, the angle
 ///                                with a natural cubic spline (which gives rate and acceleration);
-///                                before the first and after the last row the end value is held.
+///                                before the first and after the last row the end value is held,
+///                                so a file whose first row comes after t = 0 must start at rest
+///                                (force within kCsvRestForceN, angle within kCsvRestAngleDeg);
+///                                with both columns the angle drives the key (note() says so).
 /// Throws InputError naming the SPEC (and the file and line for csv:) and what is wrong.
 std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputContext& context);
 

@@ -182,6 +182,12 @@ expect_failure "a trace of billions of rows" "5 million|sample less often" \
   simulate --action grand --input mass:1kg --duration 0.05 --sample-interval 1e-12 --out out.csv
 expect_failure "an empty --out name" "--out|empty name" \
   simulate --action grand --input mass:1kg --duration 0.05 --out ""
+expect_failure "--plot naming the --out file" "--plot|same_out.csv|also the --out file" \
+  simulate --action grand --input mass:1kg --duration 0.05 --out same_out.csv --plot ./same_out.csv
+printf 'time_s,key_force_n\n0.5,1\n0.6,1\n' >late_start.csv
+expect_failure "a CSV starting after t = 0 away from rest" \
+  "late_start.csv|line 2|key_force_n 1 N|held from 0 to 0.5 s" \
+  simulate --action grand --input csv:late_start.csv --duration 0.2 --out out.csv
 
 # --- a run that blows up says so (a step far too long), it does not report "ok" -------------------
 cases=$((cases + 1))

@@ -37,6 +37,20 @@ for f in r["frequencies"]:
 print("ok: sweep steps --json (max %s Hz)" % r["max_frequency_hz"])
 PY
 
+# a chirp whose run stops (far above any finger, at 28-29 Hz, the grand's jack is driven
+# through its repetition-lever window) says so in the text, with the cause, even when an earlier
+# double strike already set the maximum: the band above was not simulated
+"$exe" sweep --action grand --stroke full --fstart 26 --fmax 30 --json >stopped.json
+"$exe" sweep --action grand --stroke full --fstart 26 --fmax 30 >stopped.txt
+python3 - stopped.json stopped.txt <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+text = open(sys.argv[2]).read()
+assert r["run_status"] == "stopped", r["run_status"]
+assert "the run stopped" in text and r["stop_cause"][:40] in text, text
+print("ok: a stopped chirp is named in the text: " + text.strip()[:160])
+PY
+
 # study compare: both actions, impact time and velocity, overlay CSV with both
 "$exe" study compare --no-limits --duration 0.2 --out overlay.csv --json >compare.json
 python3 - compare.json overlay.csv <<'PY'

@@ -293,13 +293,17 @@ TEST(CubicSpline, TwoPointsMakeALineAndBadKnotsThrow) {
 }
 
 TEST_F(InputsCsvTest, ForceIsInterpolatedLinearlyAndHeldAtTheEnds) {
+  // a file may start after t = 0 when it starts at rest (0.05 N: within kCsvRestForceN)
   const std::string file = write_text("force.csv",
-                                      "# input: recorded\ntime_s,key_force_n\n0.01,2\n0.02,12\n"
-                                      "0.04,4\n");
+                                      "# input: recorded\ntime_s,key_force_n\n0.005,0.05\n0.01,2\n"
+                                      "0.02,12\n0.04,4\n");
   const auto input = parse("csv:" + file);
   EXPECT_FALSE(input->is_motion());
   EXPECT_EQ(input->spec(), "csv:" + file);
-  EXPECT_EQ(input->force_n(0.0), 2.0);
+  EXPECT_TRUE(input->note().empty());
+  EXPECT_EQ(input->force_n(0.0), 0.05);
+  EXPECT_EQ(input->force_n(0.005), 0.05);
+  EXPECT_NEAR(input->force_n(0.0075), 1.025, 1e-12);
   EXPECT_EQ(input->force_n(0.01), 2.0);
   EXPECT_NEAR(input->force_n(0.015), 7.0, 1e-12);
   EXPECT_NEAR(input->force_n(0.03), 8.0, 1e-12);
@@ -319,6 +323,8 @@ TEST_F(InputsCsvTest, MotionIsSplinedInRadiansAndHeldAtTheEnds) {
   }
   const auto input = parse("csv:" + write_text("motion.csv", text.str()));
   EXPECT_TRUE(input->is_motion());  // a key_angle_deg column wins over key_force_n
+  // and the run says so: the force column is not used
+  EXPECT_NE(input->note().find("key_force_n is not used"), std::string::npos) << input->note();
   const double amp = rad(amp_deg);
   EXPECT_NEAR(input->motion(0.1).angle, amp, 1e-15);  // a knot
   // Interpolation errors of a cubic spline with knot spacing h, far from the ends (standard
@@ -383,6 +389,31 @@ TEST_F(InputsCsvTest, CsvErrorsNameTheFileAndLine) {
 // the key would follow, swings 0.34 deg (17 % of the 2 deg range) below its foot before the ramp,
 // beyond the 10 % a sampled smooth stroke can need. The same ramp with its corners rounded (a
 // half cosine sampled every millisecond) is accepted and followed within 1 % of its range.
+TEST_F(InputsCsvTest, AFileStartingLaterMustStartAtRest) {
+  // every run starts at t = 0 at rest; a first row at 0.5 s would be held from 0: a force of
+  // 1 N or a key 1 deg down from the start would be a guess, so the file is refused with the
+  // row, the value and what to do
+  const std::string force = write_text("late_force.csv", "time_s,key_force_n\n0.5,1\n0.6,1\n");
+  std::string message = spec_error("csv:" + force);
+  EXPECT_NE(message.find("late_force.csv"), std::string::npos) << message;
+  EXPECT_NE(message.find("line 2"), std::string::npos) << message;
+  EXPECT_NE(message.find("key_force_n 1 N"), std::string::npos) << message;
+  EXPECT_NE(message.find("held from 0 to 0.5 s"), std::string::npos) << message;
+  const std::string angle =
+      write_text("late_angle.csv", "time_s,key_angle_deg\n0.5,1\n0.55,1.5\n0.6,1\n");
+  message = spec_error("csv:" + angle);
+  EXPECT_NE(message.find("key_angle_deg 1 deg"), std::string::npos) << message;
+  // at rest within the tolerances (0.1 N, 0.1 deg): accepted, rest held until the first row
+  EXPECT_EQ(parse("csv:" + write_text("late_rest.csv", "time_s,key_force_n\n0.5,0\n0.6,5\n"))
+                ->force_n(0.2),
+            0.0);
+  EXPECT_NEAR(parse("csv:" + write_text("late_rest_angle.csv",
+                                        "time_s,key_angle_deg\n0.5,0.05\n0.55,0.5\n0.6,1\n"))
+                  ->motion(0.2)
+                  .angle,
+              rad(0.05), 1e-15);
+}
+
 TEST_F(InputsCsvTest, AMotionWithCornersTheSplineOvershootsIsRefused) {
   const std::string ramp =
       write_text("ramp.csv", "time_s,key_angle_deg\n0,0\n0.01,0\n0.015,2\n0.05,2\n0.06,0\n0.1,0\n");

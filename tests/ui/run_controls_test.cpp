@@ -4,6 +4,9 @@
 // grand/upright rebuilds the panel and the view.
 #include "run_controls.h"
 
+#include <QCoreApplication>
+#include <QDir>
+#include <QFile>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
@@ -14,6 +17,7 @@
 #include <vector>
 
 #include "action_view.h"
+#include "input_spec_form.h"
 #include "main_window.h"
 #include "playback_controller.h"
 #include "plot_panel.h"
@@ -34,6 +38,7 @@ class RunControlsTest : public QObject {
   void moving_a_slider_changes_the_running_model();
   void a_diverging_run_pauses_and_shows_its_cause();
   void a_bad_input_spec_is_shown_not_thrown();
+  void a_malformed_csv_keeps_the_run_on_screen();
   void switching_actions_rebuilds_panel_and_view();
 };
 
@@ -172,8 +177,48 @@ void RunControlsTest::a_bad_input_spec_is_shown_not_thrown() {
   window.show();
   window.open_action("grand");
   window.start("csv:/nonexistent/key.csv");
-  QVERIFY(wait_until([&] { return window.controller()->run_stopped(); }));
   QVERIFY2(window.banner_text().contains("/nonexistent/key.csv"), qPrintable(window.banner_text()));
+  QVERIFY2(window.banner_text().startsWith("Not started"), qPrintable(window.banner_text()));
+}
+
+void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("force:pulse:20:40");
+  PlaybackController* c = window.controller();
+  QVERIFY(wait_until([&] { return c->display_time() > 0.02; }));
+  const QString path =
+      QDir::temp().filePath(QString("pat_bad_key_%1.csv").arg(QCoreApplication::applicationPid()));
+  {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    file.write("time_s,key_force_n\n0,0\n0.001,abc\n0.002,5\n");
+  }
+  QSignalSpy restarted(c, &PlaybackController::runRestarted);
+  const double before = c->display_time();
+  window.start("csv:" + path.toStdString());
+  // the message names the file, the line and the value; the pulse run goes on, untouched
+  QVERIFY2(window.banner_text().contains("line 3") && window.banner_text().contains("abc"),
+           qPrintable(window.banner_text()));
+  QCOMPARE(restarted.count(), 0);
+  QVERIFY(c->playing());
+  QVERIFY(wait_until([&] { return c->display_time() > before + 0.01; }));
+  QCOMPARE(window.run_controls()->input_form()->spec(), std::string("force:pulse:20:40"));
+
+  // a well-formed file the action refuses (a key angle beyond its travel): the worker's message
+  // says the run could not start, not that a setting made it diverge
+  {
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write("time_s,key_angle_deg\n0,0\n0.01,30\n0.02,30\n");
+  }
+  window.start("csv:" + path.toStdString());
+  QVERIFY(wait_until([&] { return c->run_stopped(); }));
+  QVERIFY2(window.banner_text().startsWith("Could not start") &&
+               window.banner_text().contains("beyond the key's travel"),
+           qPrintable(window.banner_text()));
+  QFile::remove(path);
 }
 
 void RunControlsTest::switching_actions_rebuilds_panel_and_view() {
