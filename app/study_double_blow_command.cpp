@@ -7,6 +7,7 @@
 #include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "plot_output.h"
 
 namespace pat::app {
@@ -59,18 +60,23 @@ int run_study_double_blow(const std::vector<std::string>& args) {
         {"variants", variants}, {"rest_band_mm", options.rest_band_mm}, {"action", model.kind}};
     std::cout << out.dump(1) << "\n";
   } else {
-    std::cout << model.name << ": double blow " << options.force_n << " N, " << options.pulse_ms
-              << " ms pulses " << options.gap_ms << " ms apart\n";
+    // two runs per variant: the return is timed after a single blow (in the double blow the
+    // second one may come before the hammer is back), the second impact in the double blow
+    std::cout << model.name << ": " << options.force_n << " N blows held " << options.pulse_ms
+              << " ms. Return: after a single blow, from its impact until the hammer is within "
+              << options.rest_band_mm << " mm of rest. Second blow: a second pulse "
+              << options.gap_ms << " ms after the first ends\n";
     for (const DoubleBlowVariant& v : study.variants) {
       std::cout << "  " << v.name << ": back to rest ";
       if (v.hammer_return_s >= 0.0)
-        std::cout << v.hammer_return_s * 1e3 << " ms after the first impact";
+        std::cout << format_number(v.hammer_return_s * 1e3) << " ms after a single blow's impact";
       else
-        std::cout << "never within the run";
+        std::cout << "not within the run after a single blow";
       if (v.second_impact_t_s >= 0.0)
-        std::cout << ", second impact " << v.second_impact_velocity_mps << " m/s";
+        std::cout << "; the second blow strikes at " << format_number(v.second_impact_velocity_mps)
+                  << " m/s (t = " << format_number(v.second_impact_t_s * 1e3) << " ms)";
       else
-        std::cout << ", no second impact within the run";
+        std::cout << "; the second blow does not strike within the run";
       if (!v.stop_cause.empty()) std::cout << "  [" << v.stop_cause << "]";
       std::cout << "\n";
     }

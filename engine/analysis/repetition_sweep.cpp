@@ -362,10 +362,17 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
   run_parallel(count, run_segment, nullptr, threads);
   reporter.throw_if_cancelled();
   for (const ChirpSegment& seg : segments) {
+    // a segment's cycles are kept from where the kept ones of the segment before end (the cycle
+    // across the cut did not finish in that run, so cutting at the band's edge left it out of
+    // both): from the first cycle whose middle lies past that seam, and never one wholly before
+    // the segment's band (its run-in from rest)
+    const double seam_s = result.cycles.empty() ? -std::numeric_limits<double>::infinity()
+                                                : result.cycles.back().t_end_s;
     for (CycleResult c : seg.cycles) {  // times as in one continuous chirp from f_start
-      if (c.t_start_s < seg.keep_from_s - 1e-12) continue;
+      if (c.t_end_s <= seg.keep_from_s) continue;  // wholly before its band: the run-in
       c.t_start_s += seg.t_offset_s;
       c.t_end_s += seg.t_offset_s;
+      if (0.5 * (c.t_start_s + c.t_end_s) < seam_s) continue;
       result.cycles.push_back(c);
     }
     result.simulated_s += seg.run.end_time;

@@ -212,6 +212,20 @@ TEST(RepetitionSweep, ChirpResultDoesNotDependOnTheThreadCount) {
   }
   EXPECT_EQ(results[0].max_frequency_hz, results[1].max_frequency_hz);
   EXPECT_EQ(results[0].simulated_s, results[1].simulated_s);
+  // the cycles follow each other with no cycle left out: within a segment each starts where the
+  // one before ended (1e-9 s: the rounding of the times); across the cut (at 12.25 Hz) the second
+  // segment's own cycles, counted from its start 1 s of chirp earlier, meet the first's within
+  // half a cycle (cutting at the band's edge used to leave out the cycle across it)
+  const std::vector<CycleResult>& cycles = results[1].cycles;
+  int seams = 0;
+  for (std::size_t i = 1; i < cycles.size(); ++i) {
+    const double step = cycles[i].t_start_s - cycles[i - 1].t_end_s;
+    if (std::abs(step) <= 1e-9) continue;
+    ++seams;
+    EXPECT_LE(std::abs(step), 0.5 * (cycles[i].t_end_s - cycles[i].t_start_s)) << "cycle " << i;
+    EXPECT_NEAR(cycles[i].t_start_s, 12.25 - o.f_start_hz, 0.1) << "cycle " << i;  // at the cut
+  }
+  EXPECT_LE(seams, 1);
 
   // asking for a trace (a plot) does not change the result either; the segments' traces are put
   // end to end in the times of one chirp, without going back in time
