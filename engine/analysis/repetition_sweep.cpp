@@ -272,6 +272,9 @@ void check_options(const SweepOptions& o) {
                      format_number(kMaxKeyMotionHz) + " Hz (got " + format_number(o.f_max_hz) +
                      " Hz)");
   if (o.settle_cycles < 0) throw InputError("settling cycles must not be negative");
+  if (!(o.min_strike_speed_mps >= 0.0) || !std::isfinite(o.min_strike_speed_mps))
+    throw InputError("the slowest strike speed must be 0 or more m/s (got " +
+                     format_number(o.min_strike_speed_mps) + ")");
   if (o.window_cycles < 1) throw InputError("steady window must have at least one cycle");
 }
 
@@ -284,10 +287,12 @@ SimulationOptions simulation_options(const SweepOptions& o, double duration) {
   return options;
 }
 
-std::vector<Impact> impacts_of(const SimulationResult& run) {
+// The run's strikes: its impacts at min_speed_mps or faster (slower ones are touches).
+std::vector<Impact> impacts_of(const SimulationResult& run, double min_speed_mps) {
   std::vector<Impact> impacts;
   for (const SimEvent& e : run.events)
-    if (e.type == "impact") impacts.push_back({e.t, e.hammer_velocity});
+    if (e.type == "impact" && e.hammer_velocity >= min_speed_mps)
+      impacts.push_back({e.t, e.hammer_velocity});
   return impacts;
 }
 
@@ -355,9 +360,10 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
       return !reporter.cancelled();
     };
     seg.run = simulate(model, input.get(), options, &rest);
-    seg.cycles = classify_cycles(
-        cycle_boundaries(o.stroke, seg.f_a, o.chirp_rate_hz_per_s, duration), impacts_of(seg.run),
-        o.strike_merge_s, o.settle_cycles, seg.run.end_time, seg.run.status != "ok");
+    seg.cycles =
+        classify_cycles(cycle_boundaries(o.stroke, seg.f_a, o.chirp_rate_hz_per_s, duration),
+                        impacts_of(seg.run, o.min_strike_speed_mps), o.strike_merge_s,
+                        o.settle_cycles, seg.run.end_time, seg.run.status != "ok");
   };
   run_parallel(count, run_segment, nullptr, threads);
   reporter.throw_if_cancelled();
@@ -368,7 +374,7 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
     // the segment's band (its run-in from rest)
     const double seam_s = result.cycles.empty() ? -std::numeric_limits<double>::infinity()
                                                 : result.cycles.back().t_end_s;
-    for (CycleResult c : seg.cycles) {  // times as in one continuous chirp from f_start
+    for (CycleResult c : seg.cycles) {             // times as in one continuous chirp from f_start
       if (c.t_end_s <= seg.keep_from_s) continue;  // wholly before its band: the run-in
       c.t_start_s += seg.t_offset_s;
       c.t_end_s += seg.t_offset_s;
@@ -426,9 +432,9 @@ void run_steps(const ActionModel& model, const RestState& rest, const SweepOptio
         out.frequency_hz = f;
         out.run_status = run.status;
         out.stop_cause = run.stop_cause;
-        out.cycles =
-            classify_cycles(cycle_boundaries(o.stroke, f, 0.0, duration), impacts_of(run),
-                            o.strike_merge_s, o.settle_cycles, run.end_time, run.status != "ok");
+        out.cycles = classify_cycles(cycle_boundaries(o.stroke, f, 0.0, duration),
+                                     impacts_of(run, o.min_strike_speed_mps), o.strike_merge_s,
+                                     o.settle_cycles, run.end_time, run.status != "ok");
         int judged = 0;
         for (const CycleResult& c : out.cycles) {
           if (!c.judged) continue;

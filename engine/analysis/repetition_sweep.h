@@ -24,9 +24,12 @@
 //     for the full stroke (the key at rest), φ = π + 2πk for the half stroke (the key at half
 //     release); the half stroke's cycle 0 runs from t = 0 (rest) through the first descent to the
 //     first half release. A cycle's frequency is 1 / its duration (Hz).
-//   - A STRIKE is an `impact` event of the Simulator (the hammer–string contact becoming active).
-//     Impacts closer than `strike_merge_s` to the previous one are the same strike (the felt
-//     chattering on the string within one blow), not a new one.
+//   - A STRIKE is an `impact` event of the Simulator (the hammer–string contact becoming active)
+//     at a hammer speed of at least `min_strike_speed_mps` (0.1 m/s, a tenth of the softest blow
+//     of fact F2, about 1 m/s under 2 N): a slower touch sounds no note (in a slow halfway
+//     stroke the grand's hammer drifts onto the string at 3-4 cm/s after let-off, 0.007 m/s in
+//     the steps at 3 Hz) and is not counted. Impacts closer than `strike_merge_s` to the previous
+//     one are the same strike (the felt chattering on the string within one blow), not a new one.
 //   - A cycle SUCCEEDS when exactly one strike falls in [start, end). Otherwise it fails with the
 //     kind `missed` (no strike: the jack did not reset under the knuckle, or the hammer was
 //     blocked) or `double` (two or more strikes: the hammer bounced back to the string); a run
@@ -92,7 +95,8 @@ struct SweepOptions {
   int settle_cycles = 3;             ///< cycles of each run not judged (start from rest)
   int window_cycles = 8;         ///< cycles of a steady window (steps: judged cycles per frequency)
   double strike_merge_s = 3e-3;  ///< impacts closer than this are one strike (s)
-  double trace_interval_s = 0.0;  ///< chirp: > 0 keeps a trace sampled at this interval (s)
+  double min_strike_speed_mps = 0.1;  ///< slower impacts are touches, not strikes (m/s)
+  double trace_interval_s = 0.0;      ///< chirp: > 0 keeps a trace sampled at this interval (s)
   std::string integrator = "w2";
   double step_s = 1e-5;  ///< fixed integrator step (s)
   unsigned threads = 0;  ///< worker threads (0: one per core)

@@ -303,6 +303,38 @@ TEST(RepetitionSweep, StepsReportWhereTheGrandsBlowsStartToAlternate) {
   EXPECT_EQ(*r.alternating_from_hz, 20.0);
 }
 
+// A slow halfway stroke (3 Hz: the key front moves at most 2π·3·2.5 mm = 47 mm/s) lets the
+// grand's hammer off and drifts it onto the string at under 1 cm/s, which sounds no note: those
+// touches are not strikes (min_strike_speed_mps, 0.1 m/s), so the cycles miss. Counting every
+// impact, as before, called them successful repetitions.
+TEST(RepetitionSweep, ATouchTooSlowToSoundIsNotAStrike) {
+  const ActionModel grand = test::shipped("grand");
+  SweepOptions o;
+  o.mode = SweepMode::steps;
+  o.stroke = Stroke::half;
+  o.f_start_hz = 3.0;
+  o.f_max_hz = 3.5;
+  o.step_hz = 1.0;  // 3 Hz only
+  const SweepResult counted = run_repetition_sweep(grand, o);
+  ASSERT_EQ(counted.frequencies.size(), 1u);
+  for (const CycleResult& c : counted.frequencies[0].cycles) {
+    if (!c.judged) continue;
+    EXPECT_EQ(c.strikes, 0) << "at " << c.t_start_s << " s: " << c.strike_velocity_mps << " m/s";
+    EXPECT_EQ(c.outcome, CycleOutcome::missed);
+  }
+  EXPECT_FALSE(counted.frequencies[0].passed);
+  // the same run with every impact a strike: the touches (under 0.1 m/s) pass as repetitions
+  o.min_strike_speed_mps = 0.0;
+  const SweepResult every_impact = run_repetition_sweep(grand, o);
+  int touches = 0;
+  for (const CycleResult& c : every_impact.frequencies[0].cycles)
+    if (c.judged && c.strikes > 0) {
+      ++touches;
+      EXPECT_LT(c.strike_velocity_mps, 0.1);
+    }
+  EXPECT_GT(touches, 0);
+}
+
 TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
   SweepOptions o;
   o.f_max_hz = 1.0;  // below the 2 Hz start
