@@ -67,6 +67,16 @@ usage:
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
   motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  csv:PATH
+  (N newtons down at the key front; MS held, with 1 ms ramps; GAP_MS from the end of the first
+  pulse to the start of the second; full: rest to full dip, half: full dip to half release;
+  csv: time_s with key_force_n or key_angle_deg, starting at rest)
+--set ADJUSTER=MM turns an adjuster MM mm from its regulated position (the sign as the preset's
+  description of it says). grand: key_dip jack_position lever_height hammer_blow let_off drop
+  checking; upright: key_dip lost_motion hammer_blow let_off checking bridle damper_lift
+--without PART takes a spring or strap out. grand: repetition_spring jack_spring damper_spring;
+  upright: jack_spring butt_spring damper_spring bridle
+--window CYCLES (sweep): judged cycles in a steady window (8); the maximum is the top of the
+  longest run of successful cycles at least that long
 
 effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
   joint_friction.JOINT=FACTOR  repetition_spring=FACTOR (grand)  butt_spring=FACTOR (upright)

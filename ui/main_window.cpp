@@ -102,7 +102,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->raise();
   connect(analyses_, &AnalysesPanel::exportRequested, this,
           [this](const std::vector<PlotPanel*>& plots, const QString& what) {
-            export_from_menu(plots, what);
+            export_from_menu(plots, what, false);
           });
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
@@ -276,13 +276,13 @@ void MainWindow::build_menus() {
 
   QMenu* exports = menuBar()->addMenu(tr("&Export"));
   exports->addAction(tr("&All plots…"), QKeySequence(tr("Ctrl+E")), this,
-                     [this] { export_from_menu(plots_->panels(), tr("all plots")); });
+                     [this] { export_from_menu(plots_->panels(), tr("all plots"), true); });
   QMenu* one = exports->addMenu(tr("One &plot"));
   for (PlotPanel* panel : plots_->panels()) {
     const QString title = panel->title();
     one->addAction(title + "…", this, [this, title] {
       for (PlotPanel* p : plots_->panels())
-        if (p->title() == title) export_from_menu({p}, title);
+        if (p->title() == title) export_from_menu({p}, title, true);
     });
   }
   exports->addAction(tr("Export &size…"), this,
@@ -677,20 +677,38 @@ void MainWindow::open_preset_from_menu() {
   }
 }
 
-void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QString& what) {
+void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QString& what,
+                                  bool run_plots) {
+  // the run pauses while the file is chosen: what is written is what was on screen when Export
+  // was chosen, not where the run had got to when the dialog closed
+  const bool was_playing = run_plots && controller_->playing();
+  if (was_playing) controller_->pause();
   QSettings settings;
   const QString folder = settings.value("export_folder").toString();
   const QString path = QFileDialog::getSaveFileName(
       this, tr("Export %1").arg(what), folder,
       tr("PNG image (*.png);;PDF (*.pdf);;SVG (*.svg);;CSV of the visible range (*.csv)"));
+  if (was_playing) controller_->play();
   if (path.isEmpty()) return;
   try {
-    export_plots(plots, path, export_size_);
+    export_plots(plots, path, export_size_, export_metadata(run_plots));
     settings.setValue("export_folder", QFileInfo(path).absolutePath());
     statusBar()->showMessage(tr("Exported %1 to %2").arg(what, path));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
   }
+}
+
+std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) const {
+  std::map<std::string, std::string> metadata;
+  if (!model_) return metadata;
+  metadata["action"] = model_->kind;
+  metadata["preset"] = model_->source_file;
+  // during an exercise the turned adjusters are what the student is looking for
+  metadata["settings"] =
+      practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
+  if (run_plots) metadata["input"] = running_input_.toStdString();
+  return metadata;
 }
 
 void MainWindow::restore_settings() {

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 #include <QSize>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -88,6 +89,9 @@ class MainWindow : public QMainWindow {
   /// The message shown over the action (empty when hidden).
   QString banner_text() const;
   QSize export_size() const { return export_size_; }
+  /// A CSV export's '#' lines: action, preset, settings (hidden during an exercise) and, for the
+  /// run's plots, the input.
+  std::map<std::string, std::string> export_metadata(bool run_plots) const;
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -99,7 +103,10 @@ class MainWindow : public QMainWindow {
   void show_banner(const QString& text);
   void hide_banner();
   void open_preset_from_menu();
-  void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what);
+  /// Asks for a file and exports `plots` to it; `run_plots`: the run's plots (the run pauses
+  /// while the file is chosen, and a CSV names the input), not an analysis result's.
+  void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
+                        bool run_plots);
   void restore_settings();
   void measure_current_model();
   void save_preset_from_menu();

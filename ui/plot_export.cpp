@@ -82,7 +82,8 @@ ExportFormat export_format(const QString& path) {
   fail(path, "unknown plot format '." + suffix.toStdString() + "' (use .png, .pdf, .svg or .csv)");
 }
 
-void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size) {
+void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
+                  const std::map<std::string, std::string>& metadata) {
   if (plots.empty()) fail(path, "there is no plot to export");
   if (size.width() < 50 || size.height() < 50 || size.width() > 20000 || size.height() > 20000)
     fail(path, "export size must be between 50 and 20000 pixels a side");
@@ -118,9 +119,12 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
       if (!QFileInfo(path).exists()) fail(path, "could not write the SVG file");
       break;
     }
-    case ExportFormat::Csv:
-      write_csv(path.toStdString(), merged_table(plots, path));
+    case ExportFormat::Csv: {
+      CsvTable table = merged_table(plots, path);
+      for (const auto& [key, value] : metadata) table.metadata[key] = value;
+      write_csv(path.toStdString(), table);
       break;
+    }
   }
 }
 

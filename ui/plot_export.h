@@ -5,6 +5,8 @@
 
 #include <QSize>
 #include <QString>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace pat::ui {
@@ -18,8 +20,9 @@ enum class ExportFormat { Png, Pdf, Svg, Csv };
 ExportFormat export_format(const QString& path);
 
 /// Writes `plots` to `path` (format from the extension). `size` is the whole export in pixels
-/// (points for PDF); the plots share its height. Throws InputError naming the file when it
-/// cannot be written.
-void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size);
+/// (points for PDF); the plots share its height. `metadata` (e.g. action, input, settings) goes
+/// into a CSV's '#' lines. Throws InputError naming the file when it cannot be written.
+void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
+                  const std::map<std::string, std::string>& metadata = {});
 
 }  // namespace pat::ui

@@ -87,13 +87,7 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
           [this](const QCPRange& range) {
             if (!setting_range_) emit userChangedTimeRange(range.lower, range.upper);
           });
-  // a marker's label sits on the side of its line that has more room (never cut at the edge)
-  connect(plot_, &QCustomPlot::beforeReplot, this, [this] {
-    const double middle = plot_->xAxis->range().center();
-    for (auto& [line, text] : markers_)
-      text->setPositionAlignment(
-          (line->point1->coords().x() > middle ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
-  });
+  connect(plot_, &QCustomPlot::beforeReplot, this, &PlotPanel::align_marker_labels);
   connect(plot_, &QCustomPlot::afterReplot, this, [this] { emit replotted(plot_->replotTime()); });
   connect(plot_, &QCustomPlot::mousePress, this,
           [this](QMouseEvent* event) { press_position_ = event->pos(); });
@@ -349,6 +343,14 @@ void PlotPanel::update_cursor_items(bool for_export) {
   readout_row_->setText(text);
 }
 
+void PlotPanel::align_marker_labels() {
+  // a marker's label sits on the side of its line that has more room (never cut at the edge)
+  const double middle = plot_->xAxis->range().center();
+  for (auto& [line, text] : markers_)
+    text->setPositionAlignment(
+        (line->point1->coords().x() > middle ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
+}
+
 void PlotPanel::render(QPaintDevice& device,
                        const std::vector<std::pair<PlotPanel*, QRect>>& plots) {
   QCPPainter painter(&device);
@@ -357,6 +359,7 @@ void PlotPanel::render(QPaintDevice& device,
   painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
   for (const auto& [panel, rect] : plots) {
     panel->update_cursor_items(true);
+    panel->align_marker_labels();  // drawing to a file replots nothing: its range as it is now
     panel->time_mark_line_->setVisible(false);
     painter.save();
     painter.translate(rect.topLeft());

@@ -112,6 +112,8 @@ class PlotPanel : public QWidget {
   /// Cursor lines and the readout row; `for_export`: without the on-screen instruction ("click:
   /// A, right click: B"), which means nothing in an exported picture.
   void update_cursor_items(bool for_export = false);
+  /// Puts each marker's label on the side of its line with more room in the x range shown.
+  void align_marker_labels();
   /// Takes the legend out of the plot area into a row under it (categories, many series).
   void move_legend_below();
 

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace pat {
 namespace {
@@ -96,6 +97,15 @@ std::string model_origin(const ActionModel& model) {
     break;
   }
   return model.source_file + changes;
+}
+
+std::string adjuster_settings_text(const ActionModel& model) {
+  std::string settings;
+  for (const Adjuster& a : model.adjusters)
+    if (a.value != 0.0)
+      settings +=
+          (settings.empty() ? "" : " ") + a.name + "=" + format_number(a.value * 1e3) + "mm";
+  return settings.empty() ? "regulated" : settings;
 }
 
 ActionModel with_setting(const ActionModel& model, const std::string& assignment) {

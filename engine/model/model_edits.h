@@ -23,6 +23,10 @@ ActionModel without_part(const ActionModel& model, const std::string& part);
 /// messages reach the practice mode's student, whose hidden faults are turned adjusters.
 std::string model_origin(const ActionModel& model);
 
+/// The adjusters turned from their regulated positions, for a file's metadata: "regulated", or
+/// e.g. "let_off=0.5mm drop=-0.2mm".
+std::string adjuster_settings_text(const ActionModel& model);
+
 /// Parses "NAME=MM" (as given to --set) and applies it.
 ActionModel with_setting(const ActionModel& model, const std::string& assignment);
 

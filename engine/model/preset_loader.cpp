@@ -530,6 +530,9 @@ ActionModel load_action(const std::string& name_or_path) {
   std::string path = name_or_path;
   if (name_or_path == "grand" || name_or_path == "upright")
     path = preset_directory() + "/" + name_or_path + ".json";
+  else if (!std::filesystem::exists(path))  // a mistyped action name, or a file not there
+    throw InputError(located_message(
+        path, "", "no such preset file (an action is grand, upright or a preset file's path)"));
   return parse_action(read_file(path), path);
 }
 

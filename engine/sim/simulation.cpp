@@ -130,23 +130,29 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     result.trace.metadata["preset"] = model.source_file;
     result.trace.metadata["input"] = input ? input->spec() : "none";
     result.trace.metadata["integrator"] = options.integrator;
-    std::string settings, removed;
-    for (const Adjuster& a : model.adjusters)
-      if (a.value != 0.0)
-        settings +=
-            (settings.empty() ? "" : " ") + a.name + "=" + format_number(a.value * 1e3) + "mm";
+    std::string removed;
     for (const std::string& part : model.removed_parts)
       removed += (removed.empty() ? "" : " ") + part;
-    result.trace.metadata["settings"] = settings.empty() ? "regulated" : settings;
+    result.trace.metadata["settings"] = adjuster_settings_text(model);
     if (!removed.empty()) result.trace.metadata["without"] = removed;
   }
   auto record = [&](double t, const DofVector& q, const DofVector& v) {
     result.trace.rows.push_back(sim.trace_row(t, q, v));
   };
+  // sample k at k·interval, computed as k / rate when the rate is a whole number of samples per
+  // second (1e4 for 1e-4 s), so that the times are the decimals they stand for (0.0003, not the
+  // 0.00030000000000000003 of 3·1e-4 or of a running sum)
+  std::size_t sample_index = 0;
+  const double rate = options.sample_interval_s > 0.0 ? 1.0 / options.sample_interval_s : 0.0;
+  const bool whole_rate = rate > 0.0 && std::abs(rate - std::round(rate)) <= 1e-9 * rate;
+  auto sample_time = [&](std::size_t k) {
+    return whole_rate ? static_cast<double>(k) / std::round(rate)
+                      : static_cast<double>(k) * options.sample_interval_s;
+  };
   double next_sample = 0.0;
   if (options.sample_interval_s > 0.0) {
     record(0.0, sim.q(), sim.v());
-    next_sample = options.sample_interval_s;
+    next_sample = sample_time(++sample_index);
   }
 
   DofVector qs, vs;
@@ -163,14 +169,14 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
         // step) is the step end itself; the dynamics then reuse its memoized positions
         if (!sim.q().allFinite() || !sim.v().allFinite()) break;
         record(next_sample, sim.q(), sim.v());
-        next_sample += options.sample_interval_s;
+        next_sample = sample_time(++sample_index);
         continue;
       }
       hermite(sim.previous_time(), sim.previous_q(), sim.previous_v(), sim.time(), sim.q(), sim.v(),
               next_sample, qs, vs);
       if (!qs.allFinite() || !vs.allFinite()) break;
       record(next_sample, qs, vs);
-      next_sample += options.sample_interval_s;
+      next_sample = sample_time(++sample_index);
     }
     if (!running) break;
     if (options.on_step && !options.on_step(sim.time())) {

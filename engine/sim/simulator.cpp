@@ -117,6 +117,7 @@ std::vector<double> Simulator::trace_row(double t, const DofVector& q, const Dof
   row.push_back(reading_.finger_force);
   for (const ContactReading& c : reading_.contacts) row.push_back(c.normal_force);
   for (double tension : reading_.strap_tension) row.push_back(tension);
+  for (double& x : row) x += 0.0;  // −0 (a sign flip of an exact 0) is +0: no "-0" in a CSV
   return row;
 }
 

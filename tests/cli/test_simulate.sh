@@ -210,6 +210,19 @@ grep -q "simulate" help.txt || { echo "FAIL: --help does not mention simulate" >
 grep -q "pianoaction simulate" simulate-help.txt && grep -q "input SPEC" simulate-help.txt &&
   ! grep -q "pianoaction regulate" simulate-help.txt ||
   { echo "FAIL: simulate --help: $(cat simulate-help.txt)" >&2; exit 1; }
+# the help names every adjuster and removable part of the shipped presets (kept in step with
+# them: a renamed or added adjuster fails here)
+python3 - "$source_dir/presets" simulate-help.txt <<'PY'
+import json, sys
+help_text = open(sys.argv[2]).read()
+for action in ("grand", "upright"):
+    preset = json.load(open("%s/%s.json" % (sys.argv[1], action)))
+    names = [a["name"] for a in preset["adjusters"]]
+    names += [p["name"] for p in preset.get("springs", []) + preset.get("straps", [])]
+    for name in names:
+        assert name in help_text, "simulate --help does not name %s's %s" % (action, name)
+print("ok: simulate --help names the adjusters and parts")
+PY
 echo "ok: --help"
 
 echo "all simulate checks passed"

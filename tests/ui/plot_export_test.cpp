@@ -94,10 +94,14 @@ void PlotExportTest::csv_holds_the_visible_range_only() {
   angles_->set_x_range(0.020, 0.040);
   gap_->set_x_range(0.020, 0.040);
   const QString path = dir_.filePath("visible.csv");
-  pat::ui::export_plots({angles_.get(), gap_.get()}, path, QSize(800, 600));
+  pat::ui::export_plots({angles_.get(), gap_.get()}, path, QSize(800, 600),
+                        {{"action", "grand"}, {"input", "force:pulse:20:40"}});
   const pat::CsvTable table = pat::read_csv(path.toStdString());
   QCOMPARE(table.columns, (std::vector<std::string>{"time_s", "key_angle_deg", "hammer_angle_deg",
                                                     "hammer_string_gap_mm"}));
+  // what the window knows about the run goes into the '#' lines
+  QCOMPARE(table.metadata.at("action"), std::string("grand"));
+  QCOMPARE(table.metadata.at("input"), std::string("force:pulse:20:40"));
   QCOMPARE(table.rows.size(), std::size_t(21));
   QVERIFY(std::abs(table.rows.front()[0] - 0.020) < 1e-12);
   QVERIFY(std::abs(table.rows.back()[0] - 0.040) < 1e-12);

@@ -70,6 +70,12 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (QAction* action : window.menuBar()->findChildren<QAction*>())
     if (action->text().contains("preset") || action->text() == "&Upright")
       QVERIFY2(!action->isEnabled(), qPrintable(action->text()));
+  // and an exported CSV of the plots names the action, not its turned adjusters
+  const std::map<std::string, std::string> exported = window.export_metadata(true);
+  QCOMPARE(exported.at("action"), std::string("grand"));
+  QVERIFY2(exported.at("settings").find("checking") == std::string::npos &&
+               exported.at("settings").find("hidden") != std::string::npos,
+           exported.at("settings").c_str());
 
   // observe: the forte blow runs in the background while the event loop keeps turning (measured
   // once the window has been painted: its first paint is not the test's business)

@@ -205,6 +205,14 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   QVERIFY(c->playing());
   QVERIFY(wait_until([&] { return c->display_time() > before + 0.01; }));
   QCOMPARE(window.run_controls()->input_form()->spec(), std::string("force:pulse:20:40"));
+  // an export of the run's plots names what is shown: action, preset, settings and input
+  window.set_adjuster("let_off", 0.5);
+  const std::map<std::string, std::string> exported = window.export_metadata(true);
+  QCOMPARE(exported.at("action"), std::string("grand"));
+  QCOMPARE(exported.at("settings"), std::string("let_off=0.5mm"));
+  QCOMPARE(exported.at("input"), std::string("force:pulse:20:40"));
+  QVERIFY(exported.at("preset").find("grand.json") != std::string::npos);
+  QVERIFY(!window.export_metadata(false).count("input"));  // an analysis has no run input
 
   // a well-formed file the action refuses (a key angle beyond its travel): the worker's message
   // says the run could not start, not that a setting made it diverge
