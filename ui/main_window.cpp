@@ -470,8 +470,9 @@ void MainWindow::open_action(const std::string& name_or_path) {
     const int keep = deregulation_setting_->findText(demo.isEmpty() ? "hammer_blow" : demo);
     deregulation_setting_->setCurrentIndex(std::max(0, keep));
   }
-  // the whole panel visible without a horizontal scroll bar
-  regulation_scroll_->setMinimumWidth(regulation_->sizeHint().width() + 24);
+  // the whole panel visible without a horizontal scroll bar, at its smallest (sliders at their
+  // minimum width) so that the window still fits a 1024-pixel projector
+  regulation_scroll_->setMinimumWidth(regulation_->minimumSizeHint().width() + 24);
   plots_->set_model(*model);
   fit_split_to_action(*model);
   view_->reset_view();

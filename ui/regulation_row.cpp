@@ -52,7 +52,7 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   slider_->setRange(static_cast<int>(std::round(adjuster.min * 1e3 * kSliderStepsPerMm)),
                     static_cast<int>(std::round(adjuster.max * 1e3 * kSliderStepsPerMm)));
   slider_->setToolTip(tip);
-  slider_->setMinimumWidth(70);
+  slider_->setMinimumWidth(60);  // the window fits 1024 pixels (a projector)
   spin_ = new QDoubleSpinBox(parent);
   spin_->setRange(adjuster.min * 1e3, adjuster.max * 1e3);
   spin_->setDecimals(2);
