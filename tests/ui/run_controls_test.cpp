@@ -39,7 +39,6 @@ class RunControlsTest : public QObject {
   void a_diverging_run_pauses_and_shows_its_cause();
   void a_bad_input_spec_is_shown_not_thrown();
   void a_malformed_csv_keeps_the_run_on_screen();
-  void both_actions_fit_a_1024_pixel_projector();
   void switching_actions_rebuilds_panel_and_view();
 };
 
@@ -228,20 +227,6 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
                window.banner_text().contains("beyond the key's travel"),
            qPrintable(window.banner_text()));
   QFile::remove(path);
-}
-
-void RunControlsTest::both_actions_fit_a_1024_pixel_projector() {
-  // a classroom projector's 1024x768: the window, its regulation dock included, fits it (the
-  // grand's dock once kept the window 1039 pixels wide)
-  MainWindow window;
-  window.show();
-  for (const char* action : {"grand", "upright"}) {
-    window.open_action(action);
-    window.resize(1024, 768);
-    QTest::qWait(50);
-    QVERIFY2(window.width() <= 1024,
-             qPrintable(QString("%1: %2 pixels wide").arg(action).arg(window.width())));
-  }
 }
 
 void RunControlsTest::switching_actions_rebuilds_panel_and_view() {
