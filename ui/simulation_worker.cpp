@@ -101,14 +101,17 @@ void SimulationWorker::start_run(const RunSetup& setup) {
     return;
   }
   target_time_.store(0.0);
-  next_sample_t_ = 0.0;
-  record_frame();
+  record_frame();  // the first frame, at rest; it sets last_frame_t_
   emit runStarted(run_id_, full_dip_rad_);
 }
 
 void SimulationWorker::compute() {
   compute_scheduled_.store(false);
   if (!sim_ || sim_->stopped()) return;
+  // a state computed past the last frame with no frame for it yet (the run went ahead at a
+  // faster speed's wider frame spacing): recorded now, or a slower playback, asking for less than
+  // the run already has, would wait for it for ever
+  if (sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12) record_frame();
   QElapsedTimer wall;
   wall.start();
   while (sim_->time() < target_time_.load() - 1e-12 && wall.nsecsElapsed() < kChunkNs) {
@@ -116,7 +119,10 @@ void SimulationWorker::compute() {
     if (!sim_->step(target_time_.load())) break;
     for (int k = sim_->new_event_count(); k > 0; --k)
       unreported_events_.push_back(sim_->events()[sim_->events().size() - k].type);
-    if (sim_->time() >= next_sample_t_ - 1e-12) record_frame();
+    // the interval read at every step: a slower playback speed chosen between two frames
+    // shortens the wait for the next one (stored at the last frame, the old 0.2 ms could lie
+    // beyond every target the slow playback asked for, and the run froze)
+    if (sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12) record_frame();
   }
   if (sim_->stopped()) {
     record_frame();
@@ -186,7 +192,7 @@ void SimulationWorker::record_frame() {
   for (const ContactReading& c : reading_.contacts) frame.contact_force_n.push_back(c.normal_force);
   frame.events.swap(unreported_events_);
   frame.run = run_id_;
-  next_sample_t_ = frame.t + sample_interval_.load();
+  last_frame_t_ = frame.t;
 
   bool was_empty = false;
   {

@@ -69,7 +69,7 @@ class SimulationWorker : public QObject {
   std::unique_ptr<Simulator> sim_;
   int run_id_ = 0;
   double full_dip_rad_ = 0.0;
-  double next_sample_t_ = 0.0;
+  double last_frame_t_ = 0.0;  ///< simulated time of the last frame recorded (s)
   std::vector<std::string> unreported_events_;
   std::shared_ptr<LiveKeyInput> live_key_;
   DynamicsReading reading_;

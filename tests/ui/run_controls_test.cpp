@@ -39,6 +39,7 @@ class RunControlsTest : public QObject {
   void a_diverging_run_pauses_and_shows_its_cause();
   void a_bad_input_spec_is_shown_not_thrown();
   void a_malformed_csv_keeps_the_run_on_screen();
+  void switching_to_the_slowest_speed_keeps_playing();
   void switching_actions_rebuilds_panel_and_view();
 };
 
@@ -227,6 +228,27 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
                window.banner_text().contains("beyond the key's travel"),
            qPrintable(window.banner_text()));
   QFile::remove(path);
+}
+
+void RunControlsTest::switching_to_the_slowest_speed_keeps_playing() {
+  // a teacher's first move: play at 1/10, then straight to 1/1000 for slow motion. The frame
+  // spacing of 1/10 (0.2 ms) lay beyond every target 1/1000 asked for, and the run froze
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.run_controls()->set_speed_index(3);  // 1/10
+  window.start("force:pulse:20:40");
+  PlaybackController* c = window.controller();
+  QVERIFY(wait_until([&] { return c->display_time() > 0.01; }));
+  window.run_controls()->set_speed_index(static_cast<int>(pat::ui::RunControls::speeds().size()) -
+                                         1);  // 1/1000
+  const double before = c->display_time();
+  // 1/1000 moves 1 ms of the run per wall second. The frames computed ahead at 1/10 (up to 4 ms)
+  // play first; the freeze came once they were used up, so the test asks for 6 ms (6 s), with
+  // 6 s more for a loaded machine
+  QVERIFY2(wait_until([&] { return c->display_time() > before + 6e-3; }, 12000),
+           qPrintable(QString("stuck at %1 ms").arg(c->display_time() * 1e3)));
+  QVERIFY(c->playing());
 }
 
 void RunControlsTest::switching_actions_rebuilds_panel_and_view() {
