@@ -108,6 +108,8 @@ class MainWindow : public QMainWindow {
   void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
                         bool run_plots);
   void restore_settings();
+  /// The regulation dock as wide as its panel's smallest layout (after an action or text size).
+  void fit_regulation_dock();
   void measure_current_model();
   void save_preset_from_menu();
   void show_deregulation_result(const DeregulationResult& result);
@@ -142,7 +144,7 @@ class MainWindow : public QMainWindow {
   QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;
-  QScrollArea* regulation_scroll_;
+  QScrollArea* regulation_scroll_ = nullptr;
   class QDockWidget* regulation_dock_ = nullptr;
   class QDockWidget* practice_dock_ = nullptr;
   PracticePanel* practice_ = nullptr;

@@ -12,8 +12,9 @@ QColor series_colour(int i);
 namespace plot_titles {
 inline const char* kAngles = "Key and hammer";
 inline const char* kAnglesAxis = "angle (deg)";
-// below zero the hammer felt is pressed into the string (the string is a rigid plane here)
-inline const char* kGap = "Hammer–string gap (below 0: felt pressed)";
+// below zero the hammer felt is pressed into the string (the string is a rigid plane here); short
+// enough that the plots and the regulation dock fit 1280 pixels in larger text
+inline const char* kGap = "Hammer–string gap (< 0: felt pressed)";
 inline const char* kGapAxis = "gap (mm)";
 inline const char* kFinger = "Finger force (the touch)";
 inline const char* kFingerAxis = "force (N)";

@@ -120,7 +120,9 @@ void RegulationPanel::fit_title_font() {
 
 void RegulationPanel::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
-  if (event->type() == QEvent::FontChange && title_) fit_title_font();
+  if (event->type() != QEvent::FontChange) return;
+  if (title_) fit_title_font();
+  for (const auto& row : rows_) row->fit_to_font();
 }
 
 }  // namespace pat::ui

@@ -62,12 +62,7 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   spin_->setKeyboardTracking(false);
 
   measured_label_ = new QLabel(tr("—"), parent);
-  // wide enough for "no reading" in bold (its reason in the tooltip): the columns do not move
-  // when a reading fails
-  QFont bold_label = measured_label_->font();
-  bold_label.setBold(true);
-  measured_label_->setMinimumWidth(
-      std::max(72, QFontMetrics(bold_label).horizontalAdvance(tr("no reading")) + 10));
+  fit_to_font();  // bold, and wide enough
   measured_label_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
   measured_label_->setToolTip(tr("Measured the way a technician measures it"));
   target_label_ = new QLabel(parent);
@@ -119,20 +114,33 @@ void RegulationRow::set_measured(double value) {
   measured_label_->setText(format_value(value, unit));
   const bool bad = out_of_tolerance();
   measured_label_->setStyleSheet(
-      setting_ ? (bad ? "color: white; background: #c0392b; font-weight: bold; padding: 1px 3px;"
-                      : "color: white; background: #1e8449; font-weight: bold; padding: 1px 3px;")
+      setting_ ? (bad ? "color: white; background: #c0392b; padding: 1px 3px;"
+                      : "color: white; background: #1e8449; padding: 1px 3px;")
                : "");
 }
 
 void RegulationRow::set_measurement_failed(const QString& reason) {
   measured_.reset();
   measured_label_->setText(tr("no reading"));
-  measured_label_->setStyleSheet("color: #c0392b; font-weight: bold; padding: 1px 3px;");
+  measured_label_->setStyleSheet("color: #c0392b; padding: 1px 3px;");
   measured_label_->setToolTip(reason);
 }
 
 void RegulationRow::set_measuring() {
   measured_label_->setStyleSheet("color: #888888;");
+}
+
+void RegulationRow::fit_to_font() {
+  // the panel's font in bold: a label with a style sheet (its colours) keeps the font it was
+  // polished with, so a larger text has to be given to it
+  QFont bold = measured_label_->parentWidget() ? measured_label_->parentWidget()->font()
+                                               : measured_label_->font();
+  bold.setBold(true);
+  measured_label_->setFont(bold);
+  // wide enough for "no reading" in bold (its reason in the tooltip): the columns do not move
+  // when a reading fails
+  measured_label_->setMinimumWidth(
+      std::max(72, QFontMetrics(measured_label_->font()).horizontalAdvance(tr("no reading")) + 10));
 }
 
 bool RegulationRow::out_of_tolerance() const {

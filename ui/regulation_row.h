@@ -35,6 +35,8 @@ class RegulationRow : public QObject {
   void set_measurement_failed(const QString& reason);
   /// A new measurement is being taken.
   void set_measuring();
+  /// Refits the measured value's column to the current font (larger text).
+  void fit_to_font();
   std::optional<double> measured() const { return measured_; }
   bool out_of_tolerance() const;
   QSlider* slider() const { return slider_; }

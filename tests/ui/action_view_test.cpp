@@ -3,6 +3,7 @@
 // escapement and the checking.
 #include "action_view.h"
 
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTest>
 
@@ -11,6 +12,8 @@
 #include "playback_controller.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "regulation_panel.h"
+#include "regulation_row.h"
 #include "ui_test_support.h"
 
 using pat::ui::ActionView;
@@ -234,6 +237,9 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   const pat::ui::PlotPanel* plot = window.plots()->panels().front();
   const double ticks = plot->tick_label_point_size();
   const double view_text = window.view()->font().pointSizeF();
+  // the measured values shown (coloured by their style sheet) before the text grows
+  const QLabel* measured = window.regulation()->rows().front()->measured_label();
+  QVERIFY(wait_until([&] { return measured->text().endsWith("mm"); }, 60000));
   window.set_large_text(true);
   QVERIFY(window.large_text());
   // the widgets hear of the application's new font through events; the 9 pt floor of the tick
@@ -241,6 +247,14 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   QVERIFY2(wait_until([&] { return plot->tick_label_point_size() > 1.2 * ticks; }),
            qPrintable(QString("%1 → %2 pt").arg(ticks).arg(plot->tick_label_point_size())));
   QVERIFY(window.view()->font().pointSizeF() > 1.3 * view_text);
+  // the regulation panel's measured values (coloured by a style sheet, which kept their old
+  // font) grow with the rest, and the dock widens to show every column
+  QVERIFY2(wait_until([&] { return measured->font().pointSizeF() > 1.3 * view_text; }),
+           qPrintable(QString("%1 pt").arg(measured->font().pointSizeF())));
+  QVERIFY(measured->font().bold());
+  QVERIFY(wait_until([&] {
+    return window.regulation()->width() >= window.regulation()->minimumSizeHint().width();
+  }));
   window.set_large_text(false);
   QVERIFY(wait_until([&] { return plot->tick_label_point_size() == ticks; }));
   QCOMPARE(window.view()->font().pointSizeF(), view_text);
