@@ -232,6 +232,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                        .arg(QString::fromStdString(result.stop_cause)));
             show_deregulation_result(result);
             if (!frames.empty()) {
+              // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
+              // a slower speed than 1/10 becomes 1/10 (the class can slow it down again)
+              const auto& speeds = RunControls::speeds();
+              const auto tenth = std::find(speeds.begin(), speeds.end(), 0.1);
+              if (tenth != speeds.end() && controller_->speed() < 0.1)
+                run_controls_->set_speed_index(static_cast<int>(tenth - speeds.begin()));
               controller_->replay(frames);
               statusBar()->showMessage(
                   tr("Replaying the deregulation demo; Start from rest "
@@ -573,7 +579,7 @@ void MainWindow::run_deregulation_demo() {
   options.rate_mm_per_s = deregulation_rate_->value();
   options.frequency_hz = 3.0;
   options.duration_s = 10.0;
-  options.step_interval_s = 0.5;
+  options.step_interval_s = kDeregulationStepS;
   regulation_->log(tr("Deregulation demo: %1 %2 mm/s, key at %3 Hz…")
                        .arg(deregulation_setting_->currentText())
                        .arg(options.rate_mm_per_s, 0, 'f', 2)
@@ -607,8 +613,6 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
   for (const DeregulationSample& s : result.samples) {
     measured.x.push_back(s.t);
     measured.y.push_back(s.measured);
-    adjuster.x.push_back(s.t);
-    adjuster.y.push_back(s.adjuster_mm);
     gap.x.push_back(s.t);
     gap.y.push_back(s.hammer_string_gap_mm);
     shown.table.push_back({tr("%1 at t = %2 s (adjuster %3 mm)")
@@ -617,6 +621,11 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
                                .arg(s.adjuster_mm, 0, 'f', 2),
                            QString::number(s.measured, 'f', 3), unit});
   }
+  // the adjuster as the run turned it, from its trace: steps of rate × interval (the paper's
+  // 0.5 mm every 0.5 s); joined once per key cycle, as the readings are, it looked like a ramp
+  const AdjusterSteps steps = adjuster_steps(result.trace);
+  adjuster.x = steps.t_s;
+  adjuster.y = steps.mm;
   // the setting and its adjuster on their own axes: a 2 mm turn beside a 45 mm reading would
   // look flat
   shown.plots.push_back({tr("%1 measured over time").arg(setting),
@@ -628,7 +637,9 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
                          {},
                          {},
                          {}});
-  shown.plots.push_back({tr("Its adjuster, turned at a steady rate"),
+  shown.plots.push_back({tr("Its adjuster, turned %1 mm every %2 s")
+                             .arg(deregulation_rate_->value() * kDeregulationStepS, 0, 'g', 3)
+                             .arg(kDeregulationStepS),
                          tr("time (s)"),
                          "time_s",
                          "s",

@@ -98,6 +98,9 @@ class MainWindow : public QMainWindow {
 
  private:
   static constexpr double kClassTextScale = 1.35;  // large enough to read from the back of a room
+  /// The deregulation demo turns its adjuster in steps this far apart (s), as the paper does
+  /// (0.5 mm every 0.5 s).
+  static constexpr double kDeregulationStepS = 0.5;
   void build_menus();
   void build_shortcuts();
   void show_banner(const QString& text);

@@ -143,4 +143,24 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   return result;
 }
 
+AdjusterSteps adjuster_steps(const CsvTable& trace) {
+  AdjusterSteps steps;
+  const int time_column = trace.column_index("time_s");
+  const int adjuster_column = trace.column_index("adjuster_mm");
+  if (time_column < 0 || adjuster_column < 0 || trace.rows.empty()) return steps;
+  for (const std::vector<double>& row : trace.rows) {
+    const double t = row[time_column], mm = row[adjuster_column];
+    if (!steps.mm.empty() && mm == steps.mm.back()) continue;
+    if (!steps.mm.empty()) {  // a turn: the old position up to now, then the new one
+      steps.t_s.push_back(t);
+      steps.mm.push_back(steps.mm.back());
+    }
+    steps.t_s.push_back(t);
+    steps.mm.push_back(mm);
+  }
+  steps.t_s.push_back(trace.rows.back()[time_column]);  // held to the end of the run
+  steps.mm.push_back(steps.mm.back());
+  return steps;
+}
+
 }  // namespace pat

@@ -47,4 +47,12 @@ struct DeregulationResult {
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options);
 
+/// The adjuster's position over time as the run turned it, from the trace's time_s and
+/// adjuster_mm: a staircase (two points at the time of each turn, the old and the new position,
+/// and the last position held to the trace's end), for a plot. Empty without those columns.
+struct AdjusterSteps {
+  std::vector<double> t_s, mm;
+};
+AdjusterSteps adjuster_steps(const CsvTable& trace);
+
 }  // namespace pat

@@ -590,5 +590,24 @@ TEST(Regulation, DeregulatingTheUprightHammerRailShrinksTheBlowAlone) {
               0.1);  // 0.1 degree: the rail does not touch the whippen's chain
 }
 
+// The deregulation demo's adjuster plot: the screw as the run turned it, a staircase with a
+// vertical step at each turn (two points at one time), held to the end of the trace.
+TEST(DeregulationPlot, AdjusterStepsAreAStaircase) {
+  CsvTable trace;
+  trace.columns = {"time_s", "key_angle_deg", "adjuster_mm"};
+  for (int i = 0; i <= 12; ++i) {
+    const double t = 0.1 * i;  // turned 0.5 mm at 0.5 s and at 1.0 s
+    trace.rows.push_back({t, 0.0, t < 0.5 - 1e-9 ? 0.0 : (t < 1.0 - 1e-9 ? 0.5 : 1.0)});
+  }
+  const AdjusterSteps steps = adjuster_steps(trace);
+  const std::vector<double> t{0.0, 0.5, 0.5, 1.0, 1.0, 1.2}, mm{0.0, 0.0, 0.5, 0.5, 1.0, 1.0};
+  ASSERT_EQ(steps.t_s.size(), t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    EXPECT_NEAR(steps.t_s[i], t[i], 1e-12) << i;
+    EXPECT_EQ(steps.mm[i], mm[i]) << i;
+  }
+  EXPECT_TRUE(adjuster_steps(CsvTable{}).t_s.empty());  // no trace: nothing to draw
+}
+
 }  // namespace
 }  // namespace pat

@@ -18,6 +18,7 @@
 #include "analyses_panel.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
+#include "run_controls.h"
 #include "main_window.h"
 #include "measurement_service.h"
 #include "model/preset_loader.h"
@@ -140,6 +141,10 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
           });
   window.set_deregulation_demo("let_off", -1.0);
   QVERIFY_THROWS_EXCEPTION(pat::InputError, window.set_deregulation_demo("no_such_setting", 1.0));
+  // watched at 1/1000 before, the replay (seconds of the run) would take half an hour: it
+  // comes at 1/10
+  window.run_controls()->set_speed_index(
+      static_cast<int>(pat::ui::RunControls::speeds().size()) - 1);
   window.run_deregulation_demo();
   QVERIFY(runner->running());
   QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
@@ -150,6 +155,7 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
   QVERIFY(frame_count > 0);
   QVERIFY(window.controller()->replaying());
   QCOMPARE(window.controller()->history().size(), frame_count);
+  QCOMPARE(window.controller()->speed(), 0.1);
   // the measured value over time is shown in the Analyses tab, titled with the chosen setting
   QVERIFY2(window.analyses()->summary().contains("Deregulation of let_off"),
            qPrintable(window.analyses()->summary()));
@@ -188,6 +194,10 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
   const auto plots = window.analyses()->plots();
   QVERIFY(!plots.empty());
   QCOMPARE(plots.front()->point_count(0), blow.size());
+  // the adjuster plot shows the screw as it was turned (engine test DeregulationPlot): as many
+  // points as the run's staircase, not one per reading
+  QVERIFY(plots.size() >= 2);
+  QCOMPARE(plots[1]->point_count(0), pat::adjuster_steps(result.trace).t_s.size());
   // PAT_UI_SHOTS=DIR keeps a picture of the replay with its plot for a person to look at
   const QString shots = qEnvironmentVariable("PAT_UI_SHOTS");
   if (!shots.isEmpty()) {
