@@ -45,6 +45,7 @@
 #include "regulation_panel.h"
 #include "regulation_runner.h"
 #include "run_controls.h"
+#include "setting_names.h"
 
 namespace pat::ui {
 
@@ -154,9 +155,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
           });
   connect(measurements_, &MeasurementService::failed, this,
           [this](const QString& name, const QString& reason) {
-            if (RegulationRow* row = regulation_->row(name.toStdString()))
-              row->set_measurement_failed(reason);
-            else
+            // the reason also goes to the log once (a tooltip alone is not seen in class)
+            if (RegulationRow* row = regulation_->row(name.toStdString())) {
+              if (row->set_measurement_failed(reason) && !practising_)
+                regulation_->log(
+                    tr("%1: no reading. %2").arg(setting_title(name.toStdString()), reason));
+            } else
               regulation_->log(tr("Cannot measure: %1").arg(reason));
           });
   regulation_runner_ = new RegulationRunner(this);

@@ -110,6 +110,7 @@ void RegulationRow::set_value_mm(double mm) {
 
 void RegulationRow::set_measured(double value) {
   measured_ = value;
+  failure_.clear();
   const std::string unit = setting_ ? setting_->unit : std::string("mm");
   measured_label_->setText(format_value(value, unit));
   const bool bad = out_of_tolerance();
@@ -119,11 +120,14 @@ void RegulationRow::set_measured(double value) {
                : "");
 }
 
-void RegulationRow::set_measurement_failed(const QString& reason) {
+bool RegulationRow::set_measurement_failed(const QString& reason) {
+  const bool news = failure_ != reason;
+  failure_ = reason;
   measured_.reset();
   measured_label_->setText(tr("no reading"));
   measured_label_->setStyleSheet("color: #c0392b; padding: 1px 3px;");
   measured_label_->setToolTip(reason);
+  return news;
 }
 
 void RegulationRow::set_measuring() {

@@ -32,7 +32,9 @@ class RegulationRow : public QObject {
   /// The measured value (setting's unit); colours it against the tolerance band.
   void set_measured(double value);
   /// The measurement could not be taken: shows why.
-  void set_measurement_failed(const QString& reason);
+  /// Shows "no reading" with `reason` in its tooltip; true when the reason is new (not the one
+  /// shown already), for the caller to say it once where the class can read it.
+  bool set_measurement_failed(const QString& reason);
   /// A new measurement is being taken.
   void set_measuring();
   /// Refits the measured value's column to the current font (larger text).
@@ -56,6 +58,7 @@ class RegulationRow : public QObject {
   QLabel* measured_label_;
   QLabel* target_label_;
   std::optional<double> measured_;
+  QString failure_;  ///< why the last reading failed; empty after a reading
 };
 
 }  // namespace pat::ui
