@@ -111,6 +111,10 @@ void RegulationPanel::clear_log() {
   log_->clear();
 }
 
+QString RegulationPanel::log_text() const {
+  return log_->toPlainText();
+}
+
 void RegulationPanel::fit_title_font() {
   QFont heading = font();  // the panel's: it follows the application's (larger text)
   heading.setBold(true);

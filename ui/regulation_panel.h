@@ -31,6 +31,8 @@ class RegulationPanel : public QWidget {
   /// Adds a line to the log under the rows (regulation steps, messages).
   void log(const QString& line);
   void clear_log();
+  /// The log's text, lines in order.
+  QString log_text() const;
   /// A button under the rows (the window adds the regulation actions).
   /// Adds a widget (a row of options) below the buttons added so far.
   void add_widget(QWidget* widget);

@@ -18,12 +18,12 @@
 #include "analyses_panel.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
-#include "run_controls.h"
 #include "main_window.h"
 #include "measurement_service.h"
 #include "model/preset_loader.h"
 #include "playback_controller.h"
 #include "regulation_runner.h"
+#include "run_controls.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
@@ -90,6 +90,15 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   // the tolerance colour follows the measurement
   const auto& setting = window.model()->regulation[window.model()->setting_index("hammer_blow")];
   QCOMPARE(row->out_of_tolerance(), std::abs(after - setting.target) > setting.tolerance);
+
+  // a setting that cannot be read says why in the log, once: the let-off button 0.6 mm down
+  // trips the jack only after the repetition lever carries the hammer
+  window.set_adjuster("let_off", 0.6);
+  QVERIFY(wait_until(
+      [&] { return window.regulation()->log_text().contains("let-off: no reading"); }, 60000));
+  QVERIFY2(window.regulation()->log_text().contains("repetition lever"),
+           qPrintable(window.regulation()->log_text()));
+  QCOMPARE(window.regulation()->log_text().count("let-off: no reading"), 1);
 }
 
 void RegulationPanelTest::reset_to_regulated() {
@@ -143,8 +152,8 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
   QVERIFY_THROWS_EXCEPTION(pat::InputError, window.set_deregulation_demo("no_such_setting", 1.0));
   // watched at 1/1000 before, the replay (seconds of the run) would take half an hour: it
   // comes at 1/10
-  window.run_controls()->set_speed_index(
-      static_cast<int>(pat::ui::RunControls::speeds().size()) - 1);
+  window.run_controls()->set_speed_index(static_cast<int>(pat::ui::RunControls::speeds().size()) -
+                                         1);
   window.run_deregulation_demo();
   QVERIFY(runner->running());
   QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
