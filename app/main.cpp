@@ -69,7 +69,7 @@ input SPEC:
   motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  csv:PATH
   (N newtons down at the key front; MS held, with 1 ms ramps; GAP_MS from the end of the first
   pulse to the start of the second; full: rest to full dip, half: full dip to half release;
-  csv: time_s with key_force_n or key_angle_deg, starting at rest)
+  csv: time_s with key_force_n or key_angle_deg; a file starting after 0 s starts at rest)
 --set ADJUSTER=MM turns an adjuster MM mm from its regulated position (the sign as the preset's
   description of it says). grand: key_dip jack_position lever_height hammer_blow let_off drop
   checking; upright: key_dip lost_motion hammer_blow let_off checking bridle damper_lift

@@ -144,8 +144,9 @@ std::string sweep_summary(const SweepResult& r) {
             " strikes, at " + format_number(f.frequency_hz) +
             " Hz, t = " + format_number(f.t_start_s) + " s)";
   }
-  // a run that stopped (a contact beyond its travel, a diverging step) did not simulate the
-  // band above it: said even when an earlier failure already set the maximum
+  // a run that stopped (a contact beyond its travel, a diverging step): said, with its cause,
+  // even when an earlier failure already set the maximum; in a chirp whose last cycle is the
+  // stopped one, nothing above it was simulated
   const CycleResult* stopped = nullptr;
   std::string cause = r.stop_cause;
   for (const CycleResult& c : r.cycles)
@@ -159,11 +160,12 @@ std::string sweep_summary(const SweepResult& r) {
   if (stopped) {
     const bool is_first_failure =
         r.first_failure && r.first_failure->outcome == CycleOutcome::stopped;
+    const bool band_ends_there = !r.cycles.empty() && stopped == &r.cycles.back();
     text += is_first_failure ? "; the run stopped there: "
-                             : "; the run stopped at " + format_number(stopped->frequency_hz) +
+                             : "; a run stopped at " + format_number(stopped->frequency_hz) +
                                    " Hz (t = " + format_number(stopped->t_start_s) + " s): ";
-    text += (cause.empty() ? std::string("no cause given") : cause) +
-            ", so nothing above was simulated";
+    text += cause.empty() ? std::string("no cause given") : cause;
+    if (band_ends_there) text += ", so nothing above was simulated";
   }
   if (r.alternating_from_hz)
     text += "; strong and weak blows alternate from " + format_number(*r.alternating_from_hz) +

@@ -518,9 +518,20 @@ void MainWindow::start(const std::string& spec) {
   try {
     if (spec.rfind("csv:", 0) == 0) parse_input_spec(spec, InputContext{});
   } catch (const std::exception& e) {
-    show_banner(tr("Not started: %1. Fix the file or choose another input; the run shown "
-                   "before goes on.")
-                    .arg(QString::fromStdString(e.what())));
+    const QString why = QString::fromStdString(e.what());
+    if (controller_->model() == model_) {  // the same action: its run goes on
+      show_banner(
+          tr("Not started: %1. Fix the file or choose another input; the run shown before goes "
+             "on.")
+              .arg(why));
+      return;
+    }
+    // another action (or an exercise's hidden one) was opened: it starts at rest, untouched
+    controller_->restart(model_, "");
+    controller_->play();
+    show_banner(tr("Not started with that input: %1. The action rests; fix the file or choose "
+                   "another input.")
+                    .arg(why));
     return;
   }
   run_controls_->input_form()->set_spec(spec);  // the form shows what runs
@@ -641,17 +652,18 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
                          {},
                          {},
                          {}});
-  shown.plots.push_back({tr("Its adjuster, turned %1 mm every %2 s")
-                             .arg(deregulation_rate_->value() * kDeregulationStepS, 0, 'g', 3)
-                             .arg(kDeregulationStepS),
-                         tr("time (s)"),
-                         "time_s",
-                         "s",
-                         tr("adjuster (mm)"),
-                         {adjuster},
-                         {},
-                         {},
-                         {}});
+  // the step as the run made it (the rate box may have changed since)
+  const double step_mm = steps.mm.size() >= 3 ? steps.mm[2] - steps.mm[1] : 0.0;
+  shown.plots.push_back(
+      {tr("Its adjuster, turned %1 mm every %2 s").arg(step_mm, 0, 'g', 3).arg(kDeregulationStepS),
+       tr("time (s)"),
+       "time_s",
+       "s",
+       tr("adjuster (mm)"),
+       {adjuster},
+       {},
+       {},
+       {}});
   shown.plots.push_back({tr("Hammer–string gap at the top of each key cycle"),
                          tr("time (s)"),
                          "time_s",
@@ -737,10 +749,14 @@ std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) c
   if (!model_) return metadata;
   metadata["action"] = model_->kind;
   metadata["preset"] = model_->source_file;
-  // during an exercise the turned adjusters are what the student is looking for
-  metadata["settings"] =
-      practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
-  if (run_plots) metadata["input"] = running_input_.toStdString();
+  // the run's settings and input; an analysis may have run before a slider moved, so its
+  // settings are not known here. During an exercise the turned adjusters are what the student
+  // is looking for
+  if (run_plots) {
+    metadata["settings"] =
+        practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
+    metadata["input"] = running_input_.toStdString();
+  }
   return metadata;
 }
 

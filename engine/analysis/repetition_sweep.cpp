@@ -86,7 +86,8 @@ std::vector<double> cycle_boundaries(Stroke stroke, double f0_hz, double rate_hz
 
 std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
                                          const std::vector<Impact>& impacts, double merge_s,
-                                         int settle_cycles, double run_end_s, bool stopped) {
+                                         int settle_cycles, double run_end_s, bool stopped,
+                                         double min_strike_speed_mps) {
   std::vector<CycleResult> cycles;
   std::size_t next_impact = 0;
   double last_strike = -std::numeric_limits<double>::infinity();
@@ -102,6 +103,8 @@ std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
       const bool new_strike = impact.t_s - last_strike >= merge_s;
       last_strike = impact.t_s;  // a chatter chain extends from its latest contact
       if (!new_strike || impact.t_s < cycle.t_start_s) continue;
+      // a touch too slow to sound (its chatter merged into it above) is no strike
+      if (impact.velocity_mps < min_strike_speed_mps) continue;
       if (cycle.strikes++ == 0) cycle.strike_velocity_mps = impact.velocity_mps;
     }
     if (stopped && run_end_s < cycle.t_end_s) {
@@ -287,12 +290,10 @@ SimulationOptions simulation_options(const SweepOptions& o, double duration) {
   return options;
 }
 
-// The run's strikes: its impacts at min_speed_mps or faster (slower ones are touches).
-std::vector<Impact> impacts_of(const SimulationResult& run, double min_speed_mps) {
+std::vector<Impact> impacts_of(const SimulationResult& run) {
   std::vector<Impact> impacts;
   for (const SimEvent& e : run.events)
-    if (e.type == "impact" && e.hammer_velocity >= min_speed_mps)
-      impacts.push_back({e.t, e.hammer_velocity});
+    if (e.type == "impact") impacts.push_back({e.t, e.hammer_velocity});
   return impacts;
 }
 
@@ -330,8 +331,12 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
     // a later segment starts kOverlapS of chirp earlier, from rest, and its cycles before f_a
     // are dropped: the action forgets its start from rest before it reaches its own band
     seg.f_a = std::max(o.f_start_hz, f_a - o.chirp_rate_hz_per_s * kOverlapS);
-    seg.keep_from_s = (f_a - seg.f_a) / o.chirp_rate_hz_per_s;
-    seg.t_offset_s = (seg.f_a - o.f_start_hz) / o.chirp_rate_hz_per_s;
+    // a half stroke's chirp starts after its first descent (half a period at its own start
+    // frequency): the segment's phase origin and the continuous chirp's differ by that much
+    const double origin = o.stroke == Stroke::half ? 0.5 / seg.f_a : 0.0;
+    const double global_origin = o.stroke == Stroke::half ? 0.5 / o.f_start_hz : 0.0;
+    seg.keep_from_s = origin + (f_a - seg.f_a) / o.chirp_rate_hz_per_s;
+    seg.t_offset_s = global_origin - origin + (seg.f_a - o.f_start_hz) / o.chirp_rate_hz_per_s;
     total_s += (seg.f_b - seg.f_a) / o.chirp_rate_hz_per_s;
   }
   const InputContext context = input_context(model, rest);
@@ -362,8 +367,8 @@ void run_chirp(const ActionModel& model, const RestState& rest, const SweepOptio
     seg.run = simulate(model, input.get(), options, &rest);
     seg.cycles =
         classify_cycles(cycle_boundaries(o.stroke, seg.f_a, o.chirp_rate_hz_per_s, duration),
-                        impacts_of(seg.run, o.min_strike_speed_mps), o.strike_merge_s,
-                        o.settle_cycles, seg.run.end_time, seg.run.status != "ok");
+                        impacts_of(seg.run), o.strike_merge_s, o.settle_cycles, seg.run.end_time,
+                        seg.run.status != "ok", o.min_strike_speed_mps);
   };
   run_parallel(count, run_segment, nullptr, threads);
   reporter.throw_if_cancelled();
@@ -432,9 +437,9 @@ void run_steps(const ActionModel& model, const RestState& rest, const SweepOptio
         out.frequency_hz = f;
         out.run_status = run.status;
         out.stop_cause = run.stop_cause;
-        out.cycles = classify_cycles(cycle_boundaries(o.stroke, f, 0.0, duration),
-                                     impacts_of(run, o.min_strike_speed_mps), o.strike_merge_s,
-                                     o.settle_cycles, run.end_time, run.status != "ok");
+        out.cycles = classify_cycles(cycle_boundaries(o.stroke, f, 0.0, duration), impacts_of(run),
+                                     o.strike_merge_s, o.settle_cycles, run.end_time,
+                                     run.status != "ok", o.min_strike_speed_mps);
         int judged = 0;
         for (const CycleResult& c : out.cycles) {
           if (!c.judged) continue;

@@ -172,9 +172,12 @@ std::vector<double> cycle_boundaries(Stroke stroke, double f0_hz, double rate_hz
 /// Counts strikes per cycle and classifies the cycles (definitions above). `run_end_s` is where
 /// the run ended; when `stopped`, the cycle containing run_end_s fails as `stopped` and later
 /// cycles are dropped. The first `settle_cycles` are marked not judged.
+/// Impacts slower than `min_strike_speed_mps` (after merging chatter into the impact that starts
+/// it) are touches, not strikes.
 std::vector<CycleResult> classify_cycles(const std::vector<double>& boundaries,
                                          const std::vector<Impact>& impacts, double merge_s,
-                                         int settle_cycles, double run_end_s, bool stopped);
+                                         int settle_cycles, double run_end_s, bool stopped,
+                                         double min_strike_speed_mps = 0.0);
 
 /// Strike speeds of neighbouring alternating blows differ by at least this factor. Measured on
 /// the grand's full stroke in steps: one blow per cycle mostly keeps its neighbours' speeds

@@ -100,6 +100,9 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
     r.noise_deg = d2.size() >= static_cast<std::size_t>(kMinPhaseNoiseSamples)
                       ? noise_from_second_differences(std::move(d2))
                       : noise_deg;
+    // a held phase of a quantised signal can have a median scatter of 0: no residual is "within"
+    // that, so the whole trial's estimate is used instead
+    if (!(r.noise_deg > 0.0)) r.noise_deg = noise_deg;
     out.phases.push_back(r);
   }
 

@@ -26,7 +26,8 @@ struct PhaseResidual {
   /// The measurement's noise within the phase (estimate_noise over the second differences whose
   /// three samples all lie in it): a position sensor's scatter depends on where it reads, e.g.
   /// ten times larger near rest than near the string on the real Kawai files. The whole trial's
-  /// noise when the phase has fewer than kMinPhaseNoiseSamples such differences.
+  /// noise when the phase has fewer than kMinPhaseNoiseSamples such differences, or when its
+  /// own estimate is 0.
   double noise_deg = 0.0;
 };
 

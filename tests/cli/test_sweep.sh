@@ -47,7 +47,8 @@ import json, sys
 r = json.load(open(sys.argv[1]))
 text = open(sys.argv[2]).read()
 assert r["run_status"] == "stopped", r["run_status"]
-assert "the run stopped" in text and r["stop_cause"][:40] in text, text
+assert "run stopped" in text and r["stop_cause"][:40] in text, text
+assert "nothing above was simulated" in text, text  # the stopped cycle ends the band
 print("ok: a stopped chirp is named in the text: " + text.strip()[:160])
 PY
 

@@ -237,7 +237,7 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
 TEST(Discrepancies, EachPhaseHasItsOwnNoise) {
   // a sensor that scatters ten times more near rest than in flight (the real Kawai files: 0.2 deg
   // against 0.02 deg): each phase's noise is estimated from its own samples. A model at rest for
-  // 50 ms, then rising at 300 deg/s; the measurement is the model plus seeded Gaussian noise of
+  // 0.2 s, then rising at 100 deg/s; the measurement is the model plus seeded Gaussian noise of
   // 0.2 deg at rest and 0.02 deg after.
   ModelTrace m;
   m.dt = 1e-4;

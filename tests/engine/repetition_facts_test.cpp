@@ -193,6 +193,29 @@ TEST(RepetitionSweep, ChirpReportsProgressBySimulatedTimeAndCancels) {
   EXPECT_NEAR(last, 20 * 0.01 / 3.0, 0.005);
 }
 
+// A half stroke's chirp starts after its first descent, half a period at its own start frequency:
+// a later segment's times are shifted by the difference of the two origins, so that its cycles
+// meet the first segment's at the cut (placed 0.2 s too early, they overlapped the first
+// segment's last ones and were dropped, and the longest run counted across the hole).
+TEST(RepetitionSweep, HalfStrokeChirpSegmentsMeetAtTheCut) {
+  const ActionModel grand = test::shipped("grand");
+  SweepOptions o;
+  o.stroke = Stroke::half;
+  o.f_start_hz = 2.0;  // the defaults' origins: 0.25 s, and 1/(2·10) s for the second segment
+  o.f_max_hz = 12.0;
+  const SweepResult r = run_repetition_sweep(grand, o);
+  ASSERT_GT(r.cycles.size(), 20u);
+  int seams = 0;
+  for (std::size_t i = 1; i < r.cycles.size(); ++i) {
+    const double step = r.cycles[i].t_start_s - r.cycles[i - 1].t_end_s;
+    if (std::abs(step) <= 1e-9) continue;
+    ++seams;
+    EXPECT_LE(std::abs(step), 0.5 * (r.cycles[i].t_end_s - r.cycles[i].t_start_s))
+        << "cycle " << i << " at " << r.cycles[i].frequency_hz << " Hz";
+  }
+  EXPECT_LE(seams, 1);
+}
+
 // The chirp's cut into segments is fixed, so its result does not depend on the machine: one
 // thread or two give the same cycles, bit for bit (each segment is the same deterministic run).
 TEST(RepetitionSweep, ChirpResultDoesNotDependOnTheThreadCount) {

@@ -98,7 +98,26 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
       [&] { return window.regulation()->log_text().contains("let-off: no reading"); }, 60000));
   QVERIFY2(window.regulation()->log_text().contains("repetition lever"),
            qPrintable(window.regulation()->log_text()));
-  QCOMPARE(window.regulation()->log_text().count("let-off: no reading"), 1);
+  // measured again (after another adjuster moved), a reason already shown is not logged again;
+  // a new one is (with the capstan 1 mm up from above, the first rounds may stop on the jack
+  // in the lever's window, the later ones name the lever carrying the hammer)
+  RegulationRow* dip = window.regulation()->row("key_dip");
+  QVERIFY(wait_until([&] { return !window.measurements()->busy() && dip->measured(); }, 60000));
+  const double dip_before = *dip->measured();
+  window.set_adjuster("key_dip", 0.5);  // half a millimetre of punching: a new reading
+  QVERIFY(wait_until(
+      [&] {
+        return !window.measurements()->busy() && dip->measured() &&
+               std::abs(*dip->measured() - dip_before) > 0.1;
+      },
+      60000));
+  QVERIFY(!window.regulation()->row("let_off")->measured());  // still unreadable
+  const QStringList lines = window.regulation()->log_text().split('\n');
+  QStringList let_off;
+  for (const QString& line : lines)
+    if (line.startsWith("let-off: no reading")) let_off << line;
+  for (int i = 1; i < let_off.size(); ++i)
+    QVERIFY2(let_off[i] != let_off[i - 1], qPrintable(let_off[i]));
 }
 
 void RegulationPanelTest::reset_to_regulated() {
