@@ -355,23 +355,25 @@ void MainWindow::set_large_text(bool on) {
   QApplication::setFont(font);
   // the dock follows its columns, which grow or shrink with the text once the layouts have taken
   // the new font (their size requests are events of their own)
-  QTimer::singleShot(0, this, &MainWindow::fit_regulation_dock);
+  QTimer::singleShot(0, this, [this] { fit_regulation_dock(true); });
   QSettings().setValue("view/large_text", on);
 }
 
-void MainWindow::fit_regulation_dock() {
+void MainWindow::fit_regulation_dock(bool within_screen) {
   if (!regulation_scroll_) return;
   // the whole panel visible without a horizontal scroll bar, at its smallest (sliders at their
   // minimum width) so that the window still fits a 1024-pixel projector
   int wanted = regulation_->minimumSizeHint().width() + 24;
-  // but never so wide that the window must outgrow its screen (the toolbar's Start button and
-  // the dock's right edge were cut off in larger text): beyond that the dock scrolls. The window's
-  // own width counts as room when it was sized larger (an offscreen screenshot's 1280 pixels on
-  // an 800-pixel virtual screen); 15 pixels are the dock's separator and frame
-  const int screen_width = screen() ? screen()->availableGeometry().width() : 0;
-  const int room =
-      std::max(screen_width, width()) - centralWidget()->minimumSizeHint().width() - 15;
-  if (room > 200) wanted = std::min(wanted, room);
+  // when the text grows on a shown window: never so wide that the window must outgrow its screen
+  // (the toolbar's Start button and the dock's right edge were cut off in larger text); beyond
+  // that the dock scrolls. Not when an action opens: the window may not have its size yet (an
+  // offscreen screenshot's 1280 pixels on an 800-pixel virtual screen). 15 pixels are the dock's
+  // separator and frame
+  if (within_screen && screen()) {
+    const int room = std::max(screen()->availableGeometry().width(), width()) -
+                     centralWidget()->minimumSizeHint().width() - 15;
+    if (room > 200) wanted = std::min(wanted, room);
+  }
   regulation_scroll_->setMinimumWidth(wanted);
 }
 
@@ -499,7 +501,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
     const int keep = deregulation_setting_->findText(demo.isEmpty() ? "hammer_blow" : demo);
     deregulation_setting_->setCurrentIndex(std::max(0, keep));
   }
-  fit_regulation_dock();
+  fit_regulation_dock(false);
   plots_->set_model(*model);
   fit_split_to_action(*model);
   view_->reset_view();

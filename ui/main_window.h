@@ -111,8 +111,9 @@ class MainWindow : public QMainWindow {
   void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
                         bool run_plots);
   void restore_settings();
-  /// The regulation dock as wide as its panel's smallest layout (after an action or text size).
-  void fit_regulation_dock();
+  /// The regulation dock as wide as its panel's smallest layout (after an action or text size);
+  /// `within_screen`: no wider than leaves the window on its screen.
+  void fit_regulation_dock(bool within_screen);
   void measure_current_model();
   void save_preset_from_menu();
   void show_deregulation_result(const DeregulationResult& result);

@@ -252,8 +252,9 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   QVERIFY2(wait_until([&] { return measured->font().pointSizeF() > 1.3 * view_text; }),
            qPrintable(QString("%1 pt").arg(measured->font().pointSizeF())));
   QVERIFY(measured->font().bold());
-  QVERIFY(wait_until([&] {
-    return window.regulation()->width() >= window.regulation()->minimumSizeHint().width();
+  QVERIFY(wait_until([&] {  // the scroll area's viewport (the panel's parent) shows it whole
+    return window.regulation()->parentWidget()->width() >=
+           window.regulation()->minimumSizeHint().width();
   }));
   window.set_large_text(false);
   QVERIFY(wait_until([&] { return plot->tick_label_point_size() == ticks; }));

@@ -40,6 +40,7 @@ class RunControlsTest : public QObject {
   void a_bad_input_spec_is_shown_not_thrown();
   void a_malformed_csv_keeps_the_run_on_screen();
   void switching_to_the_slowest_speed_keeps_playing();
+  void the_regulation_dock_shows_every_column();
   void switching_actions_rebuilds_panel_and_view();
 };
 
@@ -251,6 +252,25 @@ void RunControlsTest::switching_to_the_slowest_speed_keeps_playing() {
   QVERIFY2(wait_until([&] { return c->display_time() > before + 6e-3; }, 12000),
            qPrintable(QString("stuck at %1 ms").arg(c->display_time() * 1e3)));
   QVERIFY(c->playing());
+}
+
+void RunControlsTest::the_regulation_dock_shows_every_column() {
+  // as the trainer starts: the action opened first, the window sized after (a screenshot's
+  // 1280x800 on the offscreen platform's 800-pixel screen). The dock once took the unsized
+  // window for its room and cut off the targets behind a scroll bar
+  MainWindow window;
+  window.open_action("grand");
+  window.resize(1280, 800);
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QTest::qWait(100);
+  // the panel's scroll area shows it whole: its viewport (the panel's parent) is as wide as the
+  // panel's smallest layout
+  const QWidget* viewport = window.regulation()->parentWidget();
+  QVERIFY2(viewport->width() >= window.regulation()->minimumSizeHint().width(),
+           qPrintable(QString("%1 of %2 pixels")
+                          .arg(viewport->width())
+                          .arg(window.regulation()->minimumSizeHint().width())));
 }
 
 void RunControlsTest::switching_actions_rebuilds_panel_and_view() {
