@@ -111,7 +111,7 @@ void SimulationWorker::compute() {
   // a state computed past the last frame with no frame for it yet (the run went ahead at a
   // faster speed's wider frame spacing): recorded now, or a slower playback, asking for less than
   // the run already has, would wait for it for ever
-  if (sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12) record_frame();
+  if (frame_due()) record_frame();
   QElapsedTimer wall;
   wall.start();
   while (sim_->time() < target_time_.load() - 1e-12 && wall.nsecsElapsed() < kChunkNs) {
@@ -119,10 +119,7 @@ void SimulationWorker::compute() {
     if (!sim_->step(target_time_.load())) break;
     for (int k = sim_->new_event_count(); k > 0; --k)
       unreported_events_.push_back(sim_->events()[sim_->events().size() - k].type);
-    // the interval read at every step: a slower playback speed chosen between two frames
-    // shortens the wait for the next one (stored at the last frame, the old 0.2 ms could lie
-    // beyond every target the slow playback asked for, and the run froze)
-    if (sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12) record_frame();
+    if (frame_due()) record_frame();
   }
   if (sim_->stopped()) {
     record_frame();
@@ -130,6 +127,13 @@ void SimulationWorker::compute() {
     return;
   }
   if (sim_->time() < target_time_.load() - 1e-12) schedule_compute();
+}
+
+bool SimulationWorker::frame_due() const {
+  // the interval read at every call: a slower playback speed chosen between two frames shortens
+  // the wait for the next one (stored at the last frame, the old 0.2 ms could lie beyond every
+  // target the slow playback asked for, and the run froze)
+  return sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12;
 }
 
 void SimulationWorker::apply_pending() {

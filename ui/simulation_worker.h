@@ -65,6 +65,8 @@ class SimulationWorker : public QObject {
   void schedule_compute();
   void apply_pending();
   void record_frame();
+  /// The run is a frame spacing (at the current playback speed) past its last frame.
+  bool frame_due() const;
 
   std::unique_ptr<Simulator> sim_;
   int run_id_ = 0;

@@ -144,10 +144,11 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
   // 0.00030000000000000003 of 3·1e-4 or of a running sum)
   std::size_t sample_index = 0;
   const double rate = options.sample_interval_s > 0.0 ? 1.0 / options.sample_interval_s : 0.0;
-  const bool whole_rate = rate > 0.0 && std::abs(rate - std::round(rate)) <= 1e-9 * rate;
+  const double whole_rate = std::round(rate);  // samples per second, when a whole number
+  const bool is_whole = rate > 0.0 && std::abs(rate - whole_rate) <= 1e-9 * rate;
   auto sample_time = [&](std::size_t k) {
-    return whole_rate ? static_cast<double>(k) / std::round(rate)
-                      : static_cast<double>(k) * options.sample_interval_s;
+    return is_whole ? static_cast<double>(k) / whole_rate
+                    : static_cast<double>(k) * options.sample_interval_s;
   };
   double next_sample = 0.0;
   if (options.sample_interval_s > 0.0) {
