@@ -1,5 +1,6 @@
 #include "action_view.h"
 
+#include <QHash>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
@@ -16,6 +17,8 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
+// a part named by a label in a close-up lies at least this far inside the view (px)
+constexpr double kNamedPointMarginPx = 4.0;
 /// The time and gap readout's font: the view's, 3 pt larger, bold.
 QFont readout_font(QFont font) {
   font.setPointSizeF(font.pointSizeF() + 3);
@@ -240,6 +243,7 @@ void ActionView::paintEvent(QPaintEvent*) {
 void ActionView::paint_frame(QPainter& painter) {
   const ActionModel& model = *model_;
   drawn_labels_.clear();
+  drawn_label_details_.clear();
   QFont label_font = font();
   // labels grow in a close-up (about 1.5 px/mm when the whole action fits a 770 px view), up to
   // half as large again, so that they stay readable from the back of a classroom
@@ -361,6 +365,7 @@ void ActionView::paint_frame(QPainter& painter) {
     bool keep_clear = false;         // of the drawing (LabelPlacer::place_clear)
     std::optional<QPointF> feature;  // the part the label names: joined by a leader line when
                                      // the label had to move away from it
+    QString key = {};                // names it from frame to frame (default: its text)
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -384,7 +389,8 @@ void ActionView::paint_frame(QPainter& painter) {
     draw_arrow(painter, at, tip, contact_colour());
     if (r.normal_force >= 0.5)
       force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
-                              contact_colour().darker(130), true, false, tip});
+                              contact_colour().darker(130), true, false, tip,
+                              QStringLiteral("force %1").arg(c)});
   }
   // key front: where the finger presses (drag it to play the key)
   const QPointF key_front = to_screen(body_point(model.landmarks.key, model.landmarks.key_front));
@@ -525,31 +531,63 @@ void ActionView::paint_frame(QPainter& painter) {
           {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
            body_colour(model.bodies[hammer].name).darker(250), true, false, part});
   }
+  // in a close-up, a part whose point lies beyond the view is not named, nor in the checking
+  // close-up one outside the region it frames (the escapement's screws in its corner)
+  if (close_up) {
+    QRectF inner = QRectF(rect()).adjusted(kNamedPointMarginPx, band + kNamedPointMarginPx,
+                                           -kNamedPointMarginPx, -kNamedPointMarginPx);
+    const std::optional<ModelBox> region = focus_region(model, focus_);
+    if (focus_ == ViewFocus::checking && region)
+      inner &= QRectF(to_screen(region->low), to_screen(region->high)).normalized();
+    const auto at_edge = [&](const Label& l) { return l.feature && !inner.contains(*l.feature); };
+    std::erase_if(fixture_labels, at_edge);
+    std::erase_if(rail_labels, at_edge);
+  }
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
+  // the points the parts' names point at (not the force arrows' tips): a name placed nearer
+  // another part's point than its own would name the wrong part
+  for (const std::vector<Label>* named : {&fixture_labels, &rail_labels})
+    for (const Label& l : *named)
+      if (l.feature) placer.add_feature(*l.feature);
   QFont small = label_font;
   small.setBold(false);
+  QHash<QString, QPointF> offsets;  // this paint's, for the next one
   for (const Label& l : labels) {
     painter.setFont(l.small ? small : label_font);
     const QFontMetricsF metrics(painter.font());
-    const auto at = l.keep_clear ? placer.place_clear(l.anchor, l.text, metrics)
-                                 : placer.place(l.anchor, l.text, metrics);
-    if (!at) continue;
-    if (l.feature) {  // a thin line from the part to the nearest point of its label
-      const QRectF box(at->x(), at->y() - metrics.ascent(), metrics.horizontalAdvance(l.text),
-                       metrics.height());
-      const QPointF end(std::clamp(l.feature->x(), box.left(), box.right()),
-                        std::clamp(l.feature->y(), box.top(), box.bottom()));
-      const QPointF d = end - *l.feature;
-      if (std::hypot(d.x(), d.y()) > 10.0) {
-        painter.setPen(QPen(QColor(90, 90, 90, 200), 1.0));
-        painter.drawLine(*l.feature, end);
+    const QString key = l.key.isEmpty() ? l.text : l.key;
+    const auto previous_at = label_offsets_.find(key);
+    const std::optional<QPointF> previous =
+        previous_at == label_offsets_.end() ? std::nullopt : std::optional(*previous_at);
+    std::optional<QPointF> at;
+    std::optional<QLineF> leader;
+    if (l.feature) {
+      const auto placed =
+          placer.place_named(l.anchor, *l.feature, l.text, metrics, l.keep_clear, previous);
+      if (placed) {
+        at = placed->baseline;
+        leader = placed->leader;
       }
+    } else {
+      at = l.keep_clear ? placer.place_clear(l.anchor, l.text, metrics, previous)
+                        : placer.place(l.anchor, l.text, metrics, previous);
+    }
+    if (!at) continue;
+    if (leader) {  // a thin line from the part to the nearest point of its label
+      painter.setPen(QPen(QColor(90, 90, 90, 200), 1.0));
+      painter.drawLine(*leader);
     }
     draw_label(painter, *at, l.text, l.colour);
+    offsets.insert(key, *at - l.anchor);
     drawn_labels_.push_back(l.text);
+    drawn_label_details_.push_back({l.text,
+                                    QRectF(at->x(), at->y() - metrics.ascent(),
+                                           metrics.horizontalAdvance(l.text), metrics.height()),
+                                    l.feature, leader, l.key.isEmpty() && l.feature.has_value()});
   }
+  label_offsets_ = offsets;
 }
 
 void ActionView::wheelEvent(QWheelEvent* event) {

@@ -8,12 +8,16 @@
 // Left drag on the key front plays the key (keyPlayed); releasing lets it up.
 #pragma once
 
+#include <QHash>
+#include <QLineF>
 #include <QPointF>
+#include <QRectF>
 #include <QStringList>
 #include <QTransform>
 #include <QWidget>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "dynamics/action_dynamics.h"
 #include "frame.h"
@@ -56,6 +60,15 @@ class ActionView : public QWidget {
   int active_contact_count() const { return active_contacts_; }
   /// The labels the latest paint drew (parts, forces, fixtures, adjusters), for tests.
   const QStringList& drawn_labels() const { return drawn_labels_; }
+  struct DrawnLabel {
+    QString text;
+    QRectF box;                      // where its text is
+    std::optional<QPointF> feature;  // the point it names (a part's, a force arrow's tip)
+    std::optional<QLineF> leader;    // drawn from that point to the text
+    bool names_part = false;         // a part's name (a fixture, an adjuster), not a force
+  };
+  /// The same labels with where they went, for tests.
+  const std::vector<DrawnLabel>& drawn_label_details() const { return drawn_label_details_; }
   const Frame* frame() const { return frame_ ? &*frame_ : nullptr; }
   QSize sizeHint() const override { return {640, 420}; }
 
@@ -98,6 +111,9 @@ class ActionView : public QWidget {
   QPointF offset_;         // widget position of the model origin
   int active_contacts_ = 0;
   QStringList drawn_labels_;
+  std::vector<DrawnLabel> drawn_label_details_;
+  // each label's offset from its anchor at the last paint (kept while it stays good)
+  QHash<QString, QPointF> label_offsets_;
   // panning and key play
   QPointF drag_start_;
   QPointF offset_at_drag_;

@@ -3,9 +3,18 @@
 // important labels first). A label may also keep off the drawing: of its free positions it takes
 // the one that covers least of the shapes marked with avoid() (a rail's name written across the
 // hammer shank hides the part the class is looking at).
+//
+// A label that names a point of the drawing (place_named: a button, a screw, a force arrow) is
+// joined to it by a leader line when it sits away from it. Its position is the free one of least
+// cost, in screen pixels: the leader's length, plus penalties for a leader crossing another
+// leader or label, for a label nearer another named point than its own (the class would read it
+// as that part's name), and for covering the drawing. A label keeps its previous position (the
+// offset from its anchor at the last paint) while that costs little more than the best, so the
+// names do not jump between the frames of a moving action.
 #pragma once
 
 #include <QFontMetricsF>
+#include <QLineF>
 #include <QPointF>
 #include <QPolygonF>
 #include <QRectF>
@@ -17,30 +26,56 @@ namespace pat::ui {
 
 class LabelPlacer {
  public:
+  /// Leaders shorter than this are not drawn: the label is next to its point.
+  static constexpr double kMinLeaderPx = 10.0;
+
+  struct Placement {
+    QPointF baseline;              // the label's left end, baseline
+    QRectF text_box;               // where its text is drawn
+    std::optional<QLineF> leader;  // from the named point to the nearest point of the text
+  };
+
   explicit LabelPlacer(const QRectF& bounds) : bounds_(bounds) {}
 
   /// Baseline position for `text` near `anchor` (the label's left end, baseline), or nothing:
-  /// the first free position in the order tried.
+  /// the first free position in the order tried (`previous`, an offset from the anchor, first).
   std::optional<QPointF> place(const QPointF& anchor, const QString& text,
-                               const QFontMetricsF& metrics) {
-    return place(anchor, text, metrics, false);
+                               const QFontMetricsF& metrics,
+                               std::optional<QPointF> previous = std::nullopt) {
+    return place(anchor, text, metrics, false, previous);
   }
   /// The same, but the free position that covers least of the avoided shapes (the first tried
   /// of those that cover equally little).
   std::optional<QPointF> place_clear(const QPointF& anchor, const QString& text,
-                                     const QFontMetricsF& metrics) {
-    return place(anchor, text, metrics, true);
+                                     const QFontMetricsF& metrics,
+                                     std::optional<QPointF> previous = std::nullopt) {
+    return place(anchor, text, metrics, true, previous);
   }
+  /// A label naming the point `feature`, first tried at `anchor`, then around the feature; the
+  /// free position of least cost (see above), or nothing when no position is free.
+  std::optional<Placement> place_named(const QPointF& anchor, const QPointF& feature,
+                                       const QString& text, const QFontMetricsF& metrics,
+                                       bool keep_clear,
+                                       std::optional<QPointF> previous = std::nullopt);
+
   /// Marks an area as taken (e.g. a readout drawn without placement).
   void reserve(const QRectF& area) { taken_.push_back(area); }
   /// Marks a drawn shape (screen coordinates) that place_clear() keeps off.
   void avoid(const QPolygonF& shape) {
     if (shape.size() >= 3) avoided_.push_back({shape, shape.boundingRect()});
   }
+  /// Marks a point that some label names (all of them, before placing any): a label placed
+  /// nearer another such point than its own pays for it.
+  void add_feature(const QPointF& feature) { features_.push_back(feature); }
 
   /// How much of `box` the avoided shapes cover: the number of points of a 6 × 3 grid over it
   /// that lie in one of them (0 … 18).
   int covered_points(const QRectF& box) const;
+  /// The leaders drawn so far.
+  const std::vector<QLineF>& leaders() const { return leaders_; }
+
+  /// The leader from `feature` to the nearest point of `box` (a point, inside the box).
+  static QLineF leader_to(const QPointF& feature, const QRectF& box);
 
  private:
   struct Shape {
@@ -48,11 +83,18 @@ class LabelPlacer {
     QRectF bounds;
   };
   std::optional<QPointF> place(const QPointF& anchor, const QString& text,
-                               const QFontMetricsF& metrics, bool keep_clear);
+                               const QFontMetricsF& metrics, bool keep_clear,
+                               std::optional<QPointF> previous);
+  bool is_free(const QRectF& box) const;
+  /// The cost of a named label at `box` (text box `text_box`); infinite when not free.
+  double named_cost(const QRectF& box, const QRectF& text_box, const QPointF& feature,
+                    bool keep_clear, double worst_wanted) const;
 
   QRectF bounds_;
   std::vector<QRectF> taken_;
   std::vector<Shape> avoided_;
+  std::vector<QPointF> features_;
+  std::vector<QLineF> leaders_;
 };
 
 }  // namespace pat::ui
