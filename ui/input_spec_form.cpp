@@ -62,12 +62,13 @@ QString number(double x) {
 InputSpecForm::InputSpecForm(QWidget* parent) : QWidget(parent) {
   auto* row = new QHBoxLayout(this);
   row->setContentsMargins(0, 0, 0, 0);
-  row->addWidget(new QLabel(tr("Input:"), this));
+  // the input a run starts with; a blow struck into the run on screen is the run controls' own
+  row->addWidget(new QLabel(tr("Run input:"), this));
   kind_ = new QComboBox(this);
   for (const Kind& k : kKinds) kind_->addItem(tr(k.text));
   kind_->setToolTip(
-      tr("What drives the key: a force at the key front, a mass on it, or a "
-         "prescribed key motion (then the finger force is computed)"));
+      tr("What drives the key in a run started from rest (Start from rest): a force at the key "
+         "front, a mass on it, or a prescribed key motion (then the finger force is computed)"));
   row->addWidget(kind_);
   for (int i = 0; i < 3; ++i) {
     value_label_[i] = new QLabel(this);

@@ -110,6 +110,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(controller_, &PlaybackController::framesPassed, plots_, &PlotStack::append);
   connect(controller_, &PlaybackController::frameShown, this, [this](const Frame& frame) {
     plots_->mark_time(frame.t);
+    // a replay's screw turns in the panel as it turned in the run (not in practice: that would
+    // show the hidden setting)
+    if (controller_->replaying() && !practising_ && frame.model &&
+        frame.model != replay_model_shown_) {
+      replay_model_shown_ = frame.model;
+      regulation_->set_replay(frame.model.get());
+    }
     if (!controller_->playing()) show_run_status();  // paused: a step or seek moves its time
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
@@ -133,6 +140,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
     hide_banner();
     plots_->clear();
+    if (!controller_->replaying()) replay_model_shown_.reset();
+    if (!controller_->replaying() && regulation_->replaying()) {  // the live action again
+      regulation_->set_replay(nullptr);
+      if (model_) regulation_->show_adjusters(*model_);
+    }
   });
   connect(view_, &ActionView::keyPlayed, controller_, &PlaybackController::play_key);
   connect(view_, &ActionView::keyReleased, this, [this] { controller_->play_key(0.0); });

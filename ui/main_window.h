@@ -153,6 +153,8 @@ class MainWindow : public QMainWindow {
   class QDockWidget* practice_dock_ = nullptr;
   PracticePanel* practice_ = nullptr;
   bool practising_ = false;
+  // the model of the replay frame the regulation panel shows (nullptr: the live action)
+  std::shared_ptr<const ActionModel> replay_model_shown_;
   QAction* grand_action_;
   QAction* open_preset_action_ = nullptr;
   QAction* save_preset_action_ = nullptr;

@@ -59,7 +59,9 @@ void RegulationPanel::set_model(const ActionModel& model) {
   static_cast<QVBoxLayout*>(layout())->replaceWidget(old_host, grid_host_);
   old_host->deleteLater();
 
-  title_->setText(tr("Regulation — %1").arg(QString::fromStdString(model.name)));
+  title_text_ = tr("Regulation — %1").arg(QString::fromStdString(model.name));
+  replaying_ = false;
+  title_->setText(title_text_);
   const QStringList headers{tr("setting"), tr("adjuster"), tr("position"), tr("measured"),
                             tr("target")};
   for (int c = 0; c < headers.size(); ++c) {
@@ -91,6 +93,16 @@ void RegulationPanel::show_adjusters(const ActionModel& model) {
     const int a = model.adjuster_index(r->name());
     if (a >= 0) r->set_value_mm(model.adjusters[a].value * 1e3);
   }
+}
+
+void RegulationPanel::set_replay(const ActionModel* replayed) {
+  const bool replaying = replayed != nullptr;
+  if (replaying != replaying_) {
+    replaying_ = replaying;
+    for (const auto& r : rows_) r->set_replayed(replaying);
+    title_->setText(replaying ? tr("%1 (replay)").arg(title_text_) : title_text_);
+  }
+  if (replayed) show_adjusters(*replayed);
 }
 
 RegulationRow* RegulationPanel::row(const std::string& name) const {

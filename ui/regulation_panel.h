@@ -26,6 +26,11 @@ class RegulationPanel : public QWidget {
   void set_model(const ActionModel& model);
   /// Moves the rows to a model's adjuster positions (no signals).
   void show_adjusters(const ActionModel& model);
+  /// A recorded replay on screen (its frame's model: the rows show its adjusters, cannot be
+  /// moved and read "replay"), or nullptr: the live action again (the caller shows its
+  /// adjusters).
+  void set_replay(const ActionModel* replayed);
+  bool replaying() const { return replaying_; }
   const std::vector<std::unique_ptr<RegulationRow>>& rows() const { return rows_; }
   RegulationRow* row(const std::string& name) const;
   /// Adds a line to the log under the rows (regulation steps, messages).
@@ -53,6 +58,8 @@ class RegulationPanel : public QWidget {
   QWidget* grid_host_;
   QVBoxLayout* buttons_;
   QLabel* title_ = nullptr;
+  QString title_text_;  // "Regulation — <action>"
+  bool replaying_ = false;
   QPlainTextEdit* log_;
   std::vector<std::unique_ptr<RegulationRow>> rows_;
 };

@@ -111,27 +111,60 @@ void RegulationRow::set_value_mm(double mm) {
 void RegulationRow::set_measured(double value) {
   measured_ = value;
   failure_.clear();
-  const std::string unit = setting_ ? setting_->unit : std::string("mm");
-  measured_label_->setText(format_value(value, unit));
-  const bool bad = out_of_tolerance();
-  measured_label_->setStyleSheet(
-      setting_ ? (bad ? "color: white; background: #c0392b; padding: 1px 3px;"
-                      : "color: white; background: #1e8449; padding: 1px 3px;")
-               : "");
+  measuring_ = false;
+  show_reading();
 }
 
 bool RegulationRow::set_measurement_failed(const QString& reason) {
   const bool news = failure_ != reason;
   failure_ = reason;
   measured_.reset();
-  measured_label_->setText(tr("no reading"));
-  measured_label_->setStyleSheet("color: #c0392b; padding: 1px 3px;");
-  measured_label_->setToolTip(reason);
+  measuring_ = false;
+  show_reading();
   return news;
 }
 
 void RegulationRow::set_measuring() {
-  measured_label_->setStyleSheet("color: #888888;");
+  measuring_ = true;
+  show_reading();
+}
+
+void RegulationRow::set_replayed(bool replayed) {
+  replayed_ = replayed;
+  slider_->setEnabled(!replayed);
+  spin_->setEnabled(!replayed);
+  show_reading();
+}
+
+void RegulationRow::show_reading() {
+  if (replayed_) {
+    measured_label_->setText(tr("replay"));
+    measured_label_->setStyleSheet("color: #888888; padding: 1px 3px;");
+    measured_label_->setToolTip(
+        tr("A replay is on screen: its adjuster is shown as the replay turned it; the "
+           "deregulation demo's measured value over time is in the Analyses tab. Start from "
+           "rest returns to the live action."));
+    return;
+  }
+  const std::string unit = setting_ ? setting_->unit : std::string("mm");
+  if (measured_) {
+    measured_label_->setText(format_value(*measured_, unit));
+    measured_label_->setToolTip(tr("Measured the way a technician measures it"));
+    const bool bad = out_of_tolerance();
+    measured_label_->setStyleSheet(
+        measuring_ ? "color: #888888; padding: 1px 3px;"
+        : setting_ ? (bad ? "color: white; background: #c0392b; padding: 1px 3px;"
+                          : "color: white; background: #1e8449; padding: 1px 3px;")
+                   : "");
+  } else if (!failure_.isEmpty()) {
+    measured_label_->setText(tr("no reading"));
+    measured_label_->setStyleSheet("color: #c0392b; padding: 1px 3px;");
+    measured_label_->setToolTip(failure_);
+  } else {
+    measured_label_->setText(tr("—"));
+    measured_label_->setStyleSheet(measuring_ ? "color: #888888;" : "");
+    measured_label_->setToolTip(tr("Measured the way a technician measures it"));
+  }
 }
 
 void RegulationRow::fit_to_font() {

@@ -37,6 +37,12 @@ class RegulationRow : public QObject {
   bool set_measurement_failed(const QString& reason);
   /// A new measurement is being taken.
   void set_measuring();
+  /// A recorded replay is on screen (true; the deregulation demo) or the live action again
+  /// (false). In a replay the adjuster cannot be moved (the replay cannot change) and the
+  /// measured column reads "replay": the readings that arrive are the live action's, kept for
+  /// when it returns.
+  void set_replayed(bool replayed);
+  bool replayed() const { return replayed_; }
   /// Refits the measured value's column to the current font (larger text).
   void fit_to_font();
   std::optional<double> measured() const { return measured_; }
@@ -59,6 +65,10 @@ class RegulationRow : public QObject {
   QLabel* target_label_;
   std::optional<double> measured_;
   QString failure_;  ///< why the last reading failed; empty after a reading
+  bool measuring_ = false;
+  bool replayed_ = false;
+  /// Shows the reading kept (or "replay") in the measured column.
+  void show_reading();
 };
 
 }  // namespace pat::ui

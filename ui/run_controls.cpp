@@ -103,15 +103,18 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   });
 
   bottom->addSpacing(12);
-  bottom->addWidget(new QLabel(tr("Blow (space, 1–5):"), this));
+  // a blow struck into the run on screen, whatever input it started with (the row above)
+  bottom->addWidget(new QLabel(tr("Strike now:"), this));
   blow_ = new QComboBox(this);
   for (const BlowLevel& b : kBlows) blow_->addItem(tr("%1  %2 N").arg(b.name).arg(b.force_n));
-  blow_->setToolTip(tr("Strength of the blow struck with the space bar: a %1 ms force pulse "
-                       "at the key front. Keys 1–5 strike pp to ff directly.")
+  blow_->setToolTip(tr("Strength of a blow struck into the run on screen (Strike, or the space "
+                       "bar): from the moment it is struck, a %1 ms force pulse at the key front "
+                       "drives the key instead of the run input. Keys 1–5 strike pp to ff "
+                       "directly.")
                         .arg(kBlowMs));
   bottom->addWidget(blow_);
-  auto* strike = new QPushButton(tr("Strike"), this);
-  strike->setToolTip(tr("Strike the key now with the chosen blow (space)"));
+  auto* strike = new QPushButton(tr("Strike (space)"), this);
+  strike->setToolTip(tr("Strike the key now with the chosen blow; keys 1–5 strike pp to ff"));
   connect(strike, &QPushButton::clicked, this, [this] { controller_->strike(blow_spec()); });
   bottom->addWidget(strike);
   bottom->addStretch(1);

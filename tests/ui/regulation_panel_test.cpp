@@ -7,6 +7,7 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
+#include <QLabel>
 #include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QSignalSpy>
@@ -226,6 +227,22 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
   // points as the run's staircase, not one per reading
   QVERIFY(plots.size() >= 2);
   QCOMPARE(plots[1]->point_count(0), pat::adjuster_steps(result.trace).t_s.size());
+  // during the replay the panel turns the screw as the run turned it, cannot be moved (the
+  // replay cannot change) and reads "replay" instead of the live action's measured value
+  pat::ui::PlaybackController* controller = window.controller();
+  QVERIFY(controller->replaying());
+  controller->pause();
+  const pat::ui::Frame last = controller->history().at(controller->history().size() - 1);
+  controller->seek(last.t);
+  const pat::ui::RegulationRow* row = window.regulation()->row("hammer_blow");
+  const double turned_mm =
+      last.model->adjusters[last.model->adjuster_index("hammer_blow")].value * 1e3;
+  QVERIFY2(turned_mm > 1.0, qPrintable(QString::number(turned_mm)));  // 1 mm/s for seconds
+  QVERIFY2(
+      wait_until([&] { return std::abs(row->value_mm() - turned_mm) < 0.01; }),
+      qPrintable(QString("%1 mm shown, %2 mm in the replay").arg(row->value_mm()).arg(turned_mm)));
+  QVERIFY(!row->slider()->isEnabled() && !row->spin_box()->isEnabled());
+  QCOMPARE(row->measured_label()->text(), QString("replay"));
   // PAT_UI_SHOTS=DIR keeps a picture of the replay with its plot for a person to look at
   const QString shots = qEnvironmentVariable("PAT_UI_SHOTS");
   if (!shots.isEmpty()) {
@@ -233,7 +250,14 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
     window.resize(1280, 800);
     QTest::qWait(1500);
     window.grab().save(shots + "/deregulation_demo.png");
+    window.regulation()->grab().save(shots + "/deregulation_replay_panel.png");
   }
+  // back to the live action: its screw, movable, and its measured value
+  window.start("");
+  QVERIFY(wait_until([&] {
+    return std::abs(row->value_mm()) < 1e-9 && row->slider()->isEnabled() &&
+           row->measured_label()->text().endsWith("mm");
+  }));
 }
 
 void RegulationPanelTest::saved_state_loads_back() {
