@@ -399,27 +399,53 @@ void ActionView::paint_frame(QPainter& painter) {
   painter.drawEllipse(key_front, 9.0, 9.0);
 
   // time and gap readout, in a band of its own along the top (parts framed outside a close-up's
-  // region pass under it); shorter words when the view is too narrow for the full ones
+  // region pass under it). When the view is too narrow for the full words (larger text in a
+  // class): "hammer–string" goes first, then the font shrinks toward the view's own, and only
+  // then do the words go ("580.6 ms  gap 45.05 mm  0.0 N")
   const QFont big = readout_font(font());
   const QFontMetricsF big_metrics(big);
   const double band = readout_band_px(big_metrics);
-  painter.setFont(big);
   painter.setPen(Qt::NoPen);
   painter.setBrush(QColor(250, 250, 246));
   painter.drawRect(QRectF(0, 0, width(), band));
   painter.setPen(QPen(QColor(215, 215, 210), 1.0));
   painter.drawLine(QPointF(0, band), QPointF(width(), band));
   const double t_ms = frame_->t * 1e3;
-  QString readout = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
-                        .arg(t_ms, 0, 'f', 2)
-                        .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
-                        .arg(frame_->finger_force_n, 0, 'f', 1);
-  if (big_metrics.horizontalAdvance(readout) > width() - 20)
-    readout = tr("%1 ms  gap %2 mm  %3 N")
-                  .arg(t_ms, 0, 'f', 1)
-                  .arg(frame_->hammer_string_gap_mm, 0, 'f', 2)
-                  .arg(frame_->finger_force_n, 0, 'f', 1);
-  draw_label(painter, QPointF(10, 7.0 + big_metrics.ascent()), readout, QColor(20, 20, 20));
+  const double gap_mm = frame_->hammer_string_gap_mm, finger_n = frame_->finger_force_n;
+  const QString full = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
+                           .arg(t_ms, 0, 'f', 2)
+                           .arg(gap_mm, 0, 'f', 2)
+                           .arg(finger_n, 0, 'f', 1);
+  const QString shorter = tr("t = %1 ms   gap %2 mm   finger %3 N")
+                              .arg(t_ms, 0, 'f', 1)
+                              .arg(gap_mm, 0, 'f', 2)
+                              .arg(finger_n, 0, 'f', 1);
+  const QString shortest = tr("%1 ms  gap %2 mm  %3 N")
+                               .arg(t_ms, 0, 'f', 1)
+                               .arg(gap_mm, 0, 'f', 2)
+                               .arg(finger_n, 0, 'f', 1);
+  const double room = width() - 20.0;
+  QFont readout_font_used = big;
+  QString readout = full;
+  if (QFontMetricsF(big).horizontalAdvance(full) > room) {
+    readout = shorter;
+    // 0.5 pt steps down to the view's own size, bold
+    QFont smaller = big;
+    while (QFontMetricsF(smaller).horizontalAdvance(shorter) > room &&
+           smaller.pointSizeF() - 0.5 >= font().pointSizeF())
+      smaller.setPointSizeF(smaller.pointSizeF() - 0.5);
+    readout_font_used = smaller;
+    if (QFontMetricsF(smaller).horizontalAdvance(shorter) > room) {
+      readout = shortest;
+      readout_font_used = big;
+    }
+  }
+  readout_ = readout;
+  painter.setFont(readout_font_used);
+  draw_label(painter,
+             QPointF(10, 0.5 * (band + QFontMetricsF(readout_font_used).ascent() -
+                                QFontMetricsF(readout_font_used).descent())),
+             readout, QColor(20, 20, 20));
   if (!labels_) return;
 
   // labels without overlap: parts first, then forces, then fixtures
@@ -539,6 +565,16 @@ void ActionView::paint_frame(QPainter& painter) {
     const std::optional<ModelBox> region = focus_region(model, focus_);
     if (focus_ == ViewFocus::checking && region)
       inner &= QRectF(to_screen(region->low), to_screen(region->high)).normalized();
+    // the string named where the hammer meets it when its end is out of the region
+    const Vec2 struck = model.landmarks.strike_point -
+                        model.landmarks.string_normal.dot(model.landmarks.strike_point -
+                                                          model.landmarks.string_point) *
+                            model.landmarks.string_normal;
+    for (Label& l : fixture_labels)
+      if (l.text == "string" && l.feature && !inner.contains(*l.feature)) {
+        l.feature = to_screen(struck);
+        l.anchor = *l.feature + QPointF(6, -6);
+      }
     const auto at_edge = [&](const Label& l) { return l.feature && !inner.contains(*l.feature); };
     std::erase_if(fixture_labels, at_edge);
     std::erase_if(rail_labels, at_edge);

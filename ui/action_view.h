@@ -67,6 +67,8 @@ class ActionView : public QWidget {
     std::optional<QLineF> leader;    // drawn from that point to the text
     bool names_part = false;         // a part's name (a fixture, an adjuster), not a force
   };
+  /// The time, gap and finger force readout the latest paint drew along the top.
+  const QString& readout() const { return readout_; }
   /// The same labels with where they went, for tests.
   const std::vector<DrawnLabel>& drawn_label_details() const { return drawn_label_details_; }
   const Frame* frame() const { return frame_ ? &*frame_ : nullptr; }
@@ -112,6 +114,7 @@ class ActionView : public QWidget {
   int active_contacts_ = 0;
   QStringList drawn_labels_;
   std::vector<DrawnLabel> drawn_label_details_;
+  QString readout_;
   // each label's offset from its anchor at the last paint (kept while it stays good)
   QHash<QString, QPointF> label_offsets_;
   // panning and key play

@@ -20,7 +20,7 @@ constexpr double kCoveredPointCostClear = 10.0;  // per grid point on the drawin
 constexpr double kCoveredPointCost = 2.0;        // the same for the other labels (forces)
 // a label stays where it was while that costs at most this much more than the best position:
 // about the leader growing by a line's height and a half
-constexpr double kKeepPreviousMarginPx = 25.0;
+constexpr double kKeepPreviousMarginPx = 40.0;
 
 bool segment_meets_rect(const QLineF& segment, const QRectF& rect) {
   if (rect.contains(segment.p1()) || rect.contains(segment.p2())) return true;
@@ -167,7 +167,7 @@ std::optional<LabelPlacer::Placement> LabelPlacer::place_named(
       best = baseline;
     }
   }
-  if (previous) {
+  if (previous && best) {  // (with no free position, neither is the previous one)
     const auto [box, text_box] = boxes(anchor + *previous);
     const double margin = best_cost + kKeepPreviousMarginPx;
     if (named_cost(box, text_box, feature, keep_clear, margin + 1.0) <= margin)

@@ -78,6 +78,13 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   // the legend's headroom and the tick counts depend on the plot area's height in pixels: once a
   // layout gives it a new height (a resize, the first show, an export at its own size), fit again
   connect(plot_, &QCustomPlot::afterLayout, this, [this] {
+    // a legend wider than most of a narrow plot area covers the value axis' ticks and the
+    // traces (the key and hammer legend with larger text): it goes below while that lasts
+    if (place_legend_for_width()) {
+      fit_values();
+      request_replot();
+      return;
+    }
     if (plot_->axisRect()->height() == fitted_height_px_) return;  // the same: no new replot
     fit_values();
     request_replot();
@@ -407,15 +414,53 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
   move_legend_below();
 }
 
-void PlotPanel::move_legend_below() {
+void PlotPanel::move_legend_below(bool for_good) {
+  legend_below_for_good_ = legend_below_for_good_ || for_good;
   if (legend_below_ || !plot_->axisRect()->insetLayout()->take(plot_->legend)) return;
   plot_->axisRect()->insetLayout()->simplify();
+  legend_margins_inside_ = plot_->legend->margins();
   const int row = plot_->plotLayout()->rowCount();
   plot_->plotLayout()->addElement(row, 0, plot_->legend);
   plot_->plotLayout()->setRowStretchFactor(row, 0.001);
-  plot_->legend->setMargins(QMargins(6, 0, 6, 4));
+  plot_->legend->setMargins(QMargins(6, 0, 6, 1));  // a short panel squeezes it first
   plot_->legend->setBorderPen(Qt::NoPen);
   legend_below_ = true;
+}
+
+QRect PlotPanel::legend_rect() const {
+  return plot_->legend->outerRect();
+}
+
+QRect PlotPanel::plot_area_rect() const {
+  return plot_->axisRect()->rect();
+}
+
+void PlotPanel::move_legend_inside() {
+  if (!legend_below_ || legend_below_for_good_ || !plot_->plotLayout()->take(plot_->legend)) return;
+  plot_->plotLayout()->simplify();  // the legend's row goes
+  plot_->axisRect()->insetLayout()->addElement(plot_->legend, Qt::AlignRight | Qt::AlignTop);
+  plot_->legend->setMargins(legend_margins_inside_);
+  plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
+  legend_below_ = false;
+}
+
+bool PlotPanel::place_legend_for_width() {
+  if (legend_below_for_good_) return false;
+  // inside while the legend takes at most this share of the plot area's width; back inside
+  // only below a smaller one, so that a width at the edge does not move it to and fro
+  constexpr double kMostOfTheWidth = 0.7, kBackInside = 0.6;
+  const double legend_px = plot_->legend->minimumOuterSizeHint().width();
+  const double area_px = plot_->axisRect()->width();
+  if (area_px <= 0) return false;
+  if (!legend_below_ && legend_px > kMostOfTheWidth * area_px) {
+    move_legend_below(false);
+    return true;
+  }
+  if (legend_below_ && legend_px < kBackInside * area_px) {
+    move_legend_inside();
+    return !legend_below_;
+  }
+  return false;
 }
 
 void PlotPanel::set_points_only(int series) {

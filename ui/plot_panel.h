@@ -80,6 +80,11 @@ class PlotPanel : public QWidget {
   /// The axes' tick label size (pt): the widget's font's, 9 pt at least; it follows a change of
   /// the font (the View menu's larger text for a class).
   double tick_label_point_size() const;
+  /// Where the legend is (widget pixels) and whether it sits under the plot area, and the plot
+  /// area itself, for tests.
+  QRect legend_rect() const;
+  bool legend_below() const { return legend_below_; }
+  QRect plot_area_rect() const;
 
   void set_cursors_enabled(bool enabled);
   /// Places cursor 0 (A) or 1 (B) at time t.
@@ -114,8 +119,13 @@ class PlotPanel : public QWidget {
   void update_cursor_items(bool for_export = false);
   /// Puts each marker's label on the side of its line with more room in the x range shown.
   void align_marker_labels();
-  /// Takes the legend out of the plot area into a row under it (categories, many series).
-  void move_legend_below();
+  /// Takes the legend out of the plot area into a row under it (categories, many series;
+  /// `for_good`), or for as long as the plot area is too narrow for it inside.
+  void move_legend_below(bool for_good = true);
+  /// Puts a legend moved below for a narrow plot area back inside it, top right.
+  void move_legend_inside();
+  /// Moves the legend below or back inside as the plot area's width asks; true when it moved.
+  bool place_legend_for_width();
 
   QString title_;
   QString y_title_;
@@ -140,6 +150,8 @@ class PlotPanel : public QWidget {
   std::optional<double> time_mark_;
   double minimum_value_span_ = 0.0;
   bool legend_below_ = false;
+  bool legend_below_for_good_ = false;  ///< below whatever the width (categories, many series)
+  QMargins legend_margins_inside_;
   int fitted_height_px_ = -1;  ///< the plot area's height the value axis was last fitted for
   std::optional<double> cursors_[2];
   bool cursors_enabled_ = true;

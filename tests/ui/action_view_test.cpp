@@ -253,7 +253,11 @@ void ActionViewTest::labels_avoid_each_other_and_kept_clear_ones_the_drawing() {
   next.add_feature(own);
   const QPointF previous = best - own + QPointF(0, 8);
   QCOMPARE(next.place_named(own, own, text, metrics, false, previous)->baseline, own + previous);
-  // ... but not when it now names another part
+  // ... and never when no position is free (it would overlap a label placed before it)
+  pat::ui::LabelPlacer full{QRectF(0, 0, 800, 600)};
+  full.reserve(QRectF(0, 0, 800, 600));
+  QVERIFY(!full.place_named(own, own, text, metrics, false, previous).has_value());
+  // ... nor when it now names another part
   pat::ui::LabelPlacer crowded{QRectF(0, 0, 800, 600)};
   crowded.add_feature(own);
   crowded.add_feature(own + previous + QPointF(w / 2, 0));  // a point under its old place
@@ -301,6 +305,8 @@ void ActionViewTest::close_up_labels_name_their_own_part_and_hold_still() {
                 .arg(frame.t * 1e3, 0, 'f', 0);
         for (std::size_t i = 0; i < drawn.size(); ++i) {
           for (std::size_t j = i + 1; j < drawn.size(); ++j) {
+            QVERIFY2(!drawn[i].box.intersects(drawn[j].box),
+                     qPrintable(where + ": " + drawn[i].text + " overlaps " + drawn[j].text));
             if (!drawn[i].leader || !drawn[j].leader) continue;
             QVERIFY2(drawn[i].leader->intersects(*drawn[j].leader, nullptr) !=
                          QLineF::BoundedIntersection,
@@ -338,8 +344,9 @@ void ActionViewTest::close_up_labels_name_their_own_part_and_hold_still() {
       // a name may have to move when a force arrow or another name takes its place: at most
       // one frame in twenty of the names drawn
       QVERIFY2(names > 0, action);
-      QVERIFY2(jumps * 20 <= names, qPrintable(QString("%1: %2 jumps in %3 names drawn (%4)")
+      QVERIFY2(jumps * 20 <= names, qPrintable(QString("%1 %2: %3 jumps in %4 names drawn (%5)")
                                                    .arg(action)
+                                                   .arg(int(focus))
                                                    .arg(jumps)
                                                    .arg(names)
                                                    .arg(jumped.join(", "))));
@@ -368,6 +375,20 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   QVERIFY2(wait_until([&] { return plot->tick_label_point_size() > 1.2 * ticks; }),
            qPrintable(QString("%1 → %2 pt").arg(ticks).arg(plot->tick_label_point_size())));
   QVERIFY(window.view()->font().pointSizeF() > 1.3 * view_text);
+  // the plots' legends cover no value axis: one wider than most of a plot area (the key and
+  // hammer legend at the larger text) goes under it
+  QVERIFY(wait_until([&] {
+    for (const pat::ui::PlotPanel* panel : window.plots()->panels())
+      if (!panel->legend_below() &&
+          panel->legend_rect().width() > 0.7 * panel->plot_area_rect().width())
+        return false;
+    return true;
+  }));
+  // the readout along the top of the narrower view keeps its words (it lost "t =" and "finger")
+  window.view()->grab();
+  QVERIFY2(
+      window.view()->readout().startsWith("t = ") && window.view()->readout().contains("finger"),
+      qPrintable(window.view()->readout()));
   // the regulation panel's measured values (coloured by a style sheet, which kept their old
   // font) grow with the rest, and the dock widens to show every column
   QVERIFY2(wait_until([&] { return measured->font().pointSizeF() > 1.3 * view_text; }),

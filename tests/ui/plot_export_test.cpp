@@ -26,6 +26,7 @@ class PlotExportTest : public QObject {
   void unknown_extension_and_bad_folder_are_refused();
   void analysis_plots_are_written_headless();
   void flat_series_keeps_a_bounded_value_axis();
+  void a_narrow_plot_puts_its_legend_under_it();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -46,6 +47,27 @@ void PlotExportTest::flat_series_keeps_a_bounded_value_axis() {
   for (int i = 0; i < 1000; ++i) flat.fit_values();
   const auto [lo, hi] = flat.value_range();
   QVERIFY2(lo <= 0.0 && hi >= 0.0 && hi - lo < 5.0, qPrintable(QString("%1 %2").arg(lo).arg(hi)));
+}
+
+// A legend wider than most of the plot area (a narrow panel, larger text) would cover the value
+// axis' ticks and the traces: it goes under the plot while the panel is narrow, and back inside,
+// top right, once it is wide again.
+void PlotExportTest::a_narrow_plot_puts_its_legend_under_it() {
+  angles_->resize(700, 260);
+  angles_->grab();  // lays out and replots
+  QVERIFY(!angles_->legend_below());
+  QVERIFY(angles_->plot_area_rect().contains(angles_->legend_rect()));
+  angles_->resize(190, 260);
+  angles_->grab();
+  QVERIFY(angles_->legend_below());
+  QVERIFY2(angles_->legend_rect().top() >= angles_->plot_area_rect().bottom(),
+           qPrintable(QString("legend from y %1, plot area to %2")
+                          .arg(angles_->legend_rect().top())
+                          .arg(angles_->plot_area_rect().bottom())));
+  angles_->resize(700, 260);
+  angles_->grab();
+  QVERIFY(!angles_->legend_below());
+  QVERIFY(angles_->plot_area_rect().contains(angles_->legend_rect()));
 }
 
 void PlotExportTest::init() {
