@@ -62,11 +62,13 @@ std::vector<Frame> frames_from_trace(const ActionModel& model, const std::string
   const int gap_col = trace.column_index("hammer_string_gap_mm");
   const int finger_col = trace.column_index("finger_force_n");
   const int adjuster_col = trace.column_index("adjuster_mm");
-  std::vector<int> angle_cols, contact_cols;
+  std::vector<int> angle_cols, contact_cols, strap_cols;
   for (const Body& b : model.bodies)
     angle_cols.push_back(trace.column_index(column_name(b.name) + "_angle_deg"));
   for (const Contact& c : model.contacts)
     contact_cols.push_back(trace.column_index(column_name(c.name) + "_force_n"));
+  for (const Strap& s : model.straps)
+    strap_cols.push_back(trace.column_index(column_name(s.name) + "_tension_n"));
   std::map<double, std::shared_ptr<const ActionModel>> models;  // by adjuster position, mm
   for (const auto& row : trace.rows) {
     Frame f;
@@ -81,6 +83,7 @@ std::vector<Frame> frames_from_trace(const ActionModel& model, const std::string
     f.hammer_string_gap_mm = gap_col >= 0 ? row[gap_col] : 0.0;
     f.finger_force_n = finger_col >= 0 ? row[finger_col] : 0.0;
     for (int c : contact_cols) f.contact_force_n.push_back(c >= 0 ? row[c] : 0.0);
+    for (int c : strap_cols) f.strap_tension_n.push_back(c >= 0 ? row[c] : 0.0);
     const double mm = adjuster_col >= 0 ? row[adjuster_col] : 0.0;
     auto& m = models[mm];
     if (!m) m = std::make_shared<const ActionModel>(with_adjuster(model, adjuster, mm * 1e-3));

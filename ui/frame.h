@@ -19,6 +19,7 @@ struct Frame {
   double hammer_string_gap_mm = 0.0;
   double finger_force_n = 0.0;
   std::vector<double> contact_force_n;  ///< normal force of every contact
+  std::vector<double> strap_tension_n;  ///< tension of every strap (the upright's bridle)
   /// Events (escapement, impact, check, key_bottom) found in the step that ended here.
   std::vector<std::string> events;
   /// The model this frame was computed with (adjusters change while the action runs).

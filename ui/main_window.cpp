@@ -45,6 +45,7 @@
 #include "regulation_panel.h"
 #include "regulation_runner.h"
 #include "run_controls.h"
+#include "run_trace_export.h"
 #include "setting_names.h"
 
 namespace pat::ui {
@@ -307,6 +308,24 @@ void MainWindow::build_menus() {
         if (p->title() == title) export_from_menu({p}, title, true);
     });
   }
+  exports->addAction(tr("Run &trace, every column (CSV)…"), this, [this] {
+    // the run pauses while the file is chosen, as for the plots
+    const bool was_playing = controller_->playing();
+    if (was_playing) controller_->pause();
+    QSettings settings;
+    const QString path =
+        QFileDialog::getSaveFileName(this, tr("Export the run trace"),
+                                     settings.value("export_folder").toString(), tr("CSV (*.csv)"));
+    if (was_playing) controller_->play();
+    if (path.isEmpty()) return;
+    try {
+      export_run_trace(path.toStdString());
+      settings.setValue("export_folder", QFileInfo(path).absolutePath());
+      statusBar()->showMessage(tr("Exported the run trace to %1").arg(path));
+    } catch (const std::exception& e) {
+      QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
+    }
+  });
   exports->addAction(tr("Export &size…"), this,
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
@@ -772,6 +791,10 @@ std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) c
     metadata["input"] = running_input_.toStdString();
   }
   return metadata;
+}
+
+void MainWindow::export_run_trace(const std::string& path) const {
+  write_csv(path, run_trace_table(controller_->history(), export_metadata(true)));
 }
 
 void MainWindow::restore_settings() {

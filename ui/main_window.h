@@ -92,6 +92,9 @@ class MainWindow : public QMainWindow {
   /// A CSV export's '#' lines: action, preset, settings (hidden during an exercise) and, for the
   /// run's plots, the input.
   std::map<std::string, std::string> export_metadata(bool run_plots) const;
+  /// Writes the run's frames with every trace column (run_trace_export.h) to `path`. Throws
+  /// InputError (no frames, a path that cannot be written).
+  void export_run_trace(const std::string& path) const;
 
  protected:
   void closeEvent(QCloseEvent* event) override;

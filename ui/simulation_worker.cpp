@@ -194,6 +194,7 @@ void SimulationWorker::record_frame() {
   frame.finger_force_n = reading_.finger_force;
   frame.contact_force_n.reserve(reading_.contacts.size());
   for (const ContactReading& c : reading_.contacts) frame.contact_force_n.push_back(c.normal_force);
+  frame.strap_tension_n = reading_.strap_tension;
   frame.events.swap(unreported_events_);
   frame.run = run_id_;
   last_frame_t_ = frame.t;

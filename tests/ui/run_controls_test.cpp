@@ -10,6 +10,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
 #include <algorithm>
@@ -17,12 +18,15 @@
 #include <vector>
 
 #include "action_view.h"
+#include "core/error.h"
 #include "input_spec_form.h"
+#include "io/csv.h"
 #include "main_window.h"
 #include "playback_controller.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
 #include "regulation_panel.h"
+#include "sim/simulation.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
@@ -42,6 +46,7 @@ class RunControlsTest : public QObject {
   void switching_to_the_slowest_speed_keeps_playing();
   void the_regulation_dock_shows_every_column();
   void switching_actions_rebuilds_panel_and_view();
+  void the_run_trace_export_holds_every_column();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -298,6 +303,54 @@ void RunControlsTest::switching_actions_rebuilds_panel_and_view() {
   for (int s = 0; s < contacts->series_count(); ++s)
     butt = butt || contacts->series_label(s).contains("butt");
   QVERIFY(butt);
+}
+
+// Export > Run trace: the window's run with the columns `simulate --out` writes (every body,
+// every contact and the upright's bridle strap, where the plots' CSV holds six contact forces),
+// one row per frame kept, with the run's action, settings and input.
+void RunControlsTest::the_run_trace_export_holds_every_column() {
+  QTemporaryDir dir;
+  MainWindow window;
+  window.show();
+  for (const char* action : {"grand", "upright"}) {
+    window.open_action(action);
+    window.start("force:pulse:20:40");
+    PlaybackController* c = window.controller();
+    QVERIFY(wait_until([&] { return c->history().last_time() > 0.03; }, 60000));
+    c->pause();
+    const QString path = dir.filePath(QString("%1.csv").arg(action));
+    window.export_run_trace(path.toStdString());
+    const pat::CsvTable table = pat::read_csv(path.toStdString());
+    QVERIFY(table.columns == pat::trace_columns(*window.model()));
+    QCOMPARE(table.rows.size(), c->history().size());
+    QCOMPARE(table.metadata.at("action"), std::string(action));
+    QVERIFY(table.metadata.at("input").find("force:pulse:20:40") != std::string::npos);
+    QVERIFY(table.metadata.count("settings") && table.metadata.count("frames"));
+    // the values are the frames': a contact the plots do not show, the strap's tension
+    const std::size_t last = c->history().size() - 1;
+    const pat::ui::Frame& frame = c->history().at(last);
+    const int gap = table.column_index("hammer_string_gap_mm");
+    QCOMPARE(table.rows[last][0], frame.t);
+    QVERIFY(std::abs(table.rows[last][gap] - frame.hammer_string_gap_mm) < 1e-9);
+    const int first_contact = table.column_index("hammer_string_gap_mm") + 2;
+    double any_force = 0.0;
+    for (std::size_t k = 0; k < frame.contact_force_n.size(); ++k) {
+      QVERIFY(std::abs(table.rows[last][first_contact + k] - frame.contact_force_n[k]) < 1e-9);
+      any_force += frame.contact_force_n[k];
+    }
+    QVERIFY(any_force > 0.0);
+    if (std::string(action) == "upright") {
+      const int strap = table.column_index("bridle_tension_n");
+      QVERIFY2(strap >= 0, "no bridle column");
+      QCOMPARE(frame.strap_tension_n.size(), std::size_t(1));
+      QVERIFY(std::abs(table.rows[last][strap] - frame.strap_tension_n[0]) < 1e-9);
+    }
+  }
+  // nothing to export is said so, and no file is written
+  MainWindow empty;
+  const QString none = dir.filePath("none.csv");
+  QVERIFY_THROWS_EXCEPTION(pat::InputError, empty.export_run_trace(none.toStdString()));
+  QVERIFY(!QFile::exists(none));
 }
 
 QTEST_MAIN(RunControlsTest)
