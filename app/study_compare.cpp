@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "analysis/action_comparison.h"
+#include "analysis/paper_repetition.h"
 #include "command_line.h"
 #include "commands.h"
 #include "core/format.h"
@@ -112,8 +113,14 @@ int run_study_compare(const std::vector<std::string>& args) {
         std::cout << "no impact within " << options.duration_s << " s";
       if (a.run.status != "ok") std::cout << " (run stopped: " << a.run.stop_cause << ")";
       std::cout << "\n";
-      if (a.full_stroke) std::cout << "    full stroke: " << sweep_summary(*a.full_stroke) << "\n";
-      if (a.half_stroke) std::cout << "    half stroke: " << sweep_summary(*a.half_stroke) << "\n";
+      // each limit beside the paper's figures (said when it disagrees)
+      const auto limit = [&](const char* stroke, const SweepResult& sweep, double f_max_hz) {
+        std::cout << "    " << stroke << " stroke: " << sweep_summary(sweep) << "\n";
+        const std::string paper = compare_with_paper(sweep, a.action, f_max_hz);
+        if (!paper.empty()) std::cout << "      " << paper << "\n";
+      };
+      if (a.full_stroke) limit("full", *a.full_stroke, options.f_max_full_hz);
+      if (a.half_stroke) limit("half", *a.half_stroke, options.f_max_half_hz);
     }
     if (!out_path.empty()) std::cout << "  overlay written to " << out_path << "\n";
   }

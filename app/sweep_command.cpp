@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "action_setup.h"
+#include "analysis/paper_repetition.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/csv.h"
@@ -49,6 +50,8 @@ int run_sweep(const std::vector<std::string>& args) {
   } else {
     std::cout << model.name << ", " << stroke_name(result.stroke) << " stroke, "
               << sweep_mode_name(result.mode) << ": " << sweep_summary(result) << "\n";
+    const std::string paper = compare_with_paper(result, model.kind, options.f_max_hz);
+    if (!paper.empty()) std::cout << "  " << paper << "\n";
     std::cout << "  " << result.simulated_s << " s simulated in " << result.wall_s << " s\n";
     if (!out_path.empty()) std::cout << "  cycles written to " << out_path << "\n";
     if (plot.given()) std::cout << "  plot written to " << plot.path() << "\n";

@@ -17,6 +17,49 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
+// room kept free of labels around the knuckle or butt and the jack top (px)
+constexpr double kEscapementRoomPx = 4.0;
+// the named points of the bodies are a group of their own (LabelPlacer::NamedStyle::group)
+constexpr int kBodyGroup = 1;
+
+// A point well inside a polygon (screen): of a 20 × 20 grid over its bounds, the one inside it
+// and inside `within` that lies farthest from its edges (depth counted up to kDeepEnoughPx: of
+// equally deep points in a long bar, the one nearest its middle); empty when none does.
+std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& within) {
+  if (polygon.size() < 3) return std::nullopt;
+  const QRectF bounds = polygon.boundingRect();
+  constexpr int kGrid = 20;
+  constexpr double kDeepEnoughPx = 8.0, kPerPxFromMiddle = 0.02;
+  QPointF middle(0, 0);
+  for (const QPointF& p : polygon) middle += p;
+  middle /= static_cast<double>(polygon.size());
+  std::optional<QPointF> best;
+  double best_depth = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      const QPointF p(bounds.left() + bounds.width() * (i + 0.5) / kGrid,
+                      bounds.top() + bounds.height() * (j + 0.5) / kGrid);
+      if (!within.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill)) continue;
+      double depth = std::numeric_limits<double>::infinity();
+      for (qsizetype k = 0; k < polygon.size(); ++k) {
+        const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
+        const QPointF ab = b - a;
+        const double length2 = QPointF::dotProduct(ab, ab);
+        const double u =
+            length2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+        depth = std::min(depth, QLineF(p, a + u * ab).length());
+      }
+      const double score =
+          std::min(depth, kDeepEnoughPx) - kPerPxFromMiddle * QLineF(p, middle).length();
+      if (score > best_depth) {
+        best_depth = score;
+        best = p;
+      }
+    }
+  }
+  return best;
+}
+
 // a part named by a label in a close-up lies at least this far inside the view (px)
 constexpr double kNamedPointMarginPx = 4.0;
 /// The time and gap readout's font: the view's, 3 pt larger, bold.
@@ -254,6 +297,7 @@ void ActionView::paint_frame(QPainter& painter) {
 
   // the drawn fixtures and bodies, which the rails' and fixtures' labels keep off
   std::vector<QPolygonF> drawn_shapes;
+  std::vector<QPolygonF> body_shapes(model.dofs());  // each body's, for its name
   // fixtures
   for (const Fixture& f : model.fixtures) {
     QPolygonF polygon;
@@ -269,7 +313,7 @@ void ActionView::paint_frame(QPainter& painter) {
     const Body& body = model.bodies[b];
     QPolygonF polygon;
     for (const Vec2& p : body.outline) polygon << to_screen(body_point(b, p));
-    drawn_shapes.push_back(polygon);
+    body_shapes[b] = polygon;
     // a pivot away from the drawn part (the grand's damper lever turns on a flange behind the
     // string): the arm that joins them, so that the pivot does not float on its own
     QPolygonF rest_outline;
@@ -366,6 +410,7 @@ void ActionView::paint_frame(QPainter& painter) {
     std::optional<QPointF> feature;  // the part the label names: joined by a leader line when
                                      // the label had to move away from it
     QString key = {};                // names it from frame to frame (default: its text)
+    int body = -1;                   // the body it names (a part's name over its shape)
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -452,34 +497,44 @@ void ActionView::paint_frame(QPainter& painter) {
   LabelPlacer placer{QRectF(rect())};
   placer.reserve(QRectF(0, 0, width(), band));  // the readout's band, all of it
   for (const QPolygonF& shape : drawn_shapes) placer.avoid(shape);
+  for (int b = 0; b < model.dofs(); ++b) placer.avoid(body_shapes[b], b);
+  // where escapement happens stays in sight: the knuckle or butt and the jack top, a few
+  // pixels around them, take no label
+  if (const int e = model.landmarks.escapement_contact; e >= 0) {
+    const Contact& c = model.contacts[e];
+    const auto keep_free = [&](int body, const Vec2& point, double radius_m) {
+      const QPointF at = to_screen(body_point(body, point));
+      const double r = radius_m * scale_ + kEscapementRoomPx;
+      placer.reserve(QRectF(at - QPointF(r, r), at + QPointF(r, r)));
+    };
+    keep_free(c.body_a, c.center_a, c.radius_a);
+    if (c.shape == ContactShape::CircleCircle) {
+      keep_free(c.body_b, c.center_b, c.radius_b);
+    } else {
+      const QPointF a = to_screen(body_point(c.body_b, c.segment_start));
+      const QPointF b = to_screen(body_point(c.body_b, c.segment_end));
+      placer.reserve(QRectF(a, b).normalized().adjusted(-kEscapementRoomPx, -kEscapementRoomPx,
+                                                        kEscapementRoomPx, kEscapementRoomPx));
+    }
+  }
+  // each part's name over a point well inside its own outline (as seen), moved off with a
+  // leader when other names or parts are in the way; never nearer another part's point
+  const QRectF shown = QRectF(rect()).adjusted(20, band + 20, -20, -20);
+  QFont body_font = label_font;
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
-    Vec2 centre = Vec2::Zero();
-    for (const Vec2& p : body.outline) centre += p;
-    centre /= std::max<std::size_t>(1, body.outline.size());
     // the joint is called "lever" (DESIGN.md); a technician calls the part the repetition lever
     const QString name =
         body.name == "lever" ? tr("repetition lever") : QString::fromStdString(body.name);
-    // at its middle; in a close-up that leaves the middle out of view (the grand's hammer in the
-    // escapement), at the midpoint of the outline's edge nearest to it within the view
-    const QPointF centre_px = to_screen(body_point(b, centre));
-    QPointF anchor = centre_px;
-    const QRectF shown = QRectF(rect()).adjusted(20, band + 20, -20, -20);
-    if (!shown.contains(centre_px)) {
-      double best = std::numeric_limits<double>::infinity();
-      for (std::size_t i = 0; i < body.outline.size(); ++i) {
-        const QPointF a = to_screen(body_point(b, body.outline[i]));
-        const QPointF c = to_screen(body_point(b, body.outline[(i + 1) % body.outline.size()]));
-        const QPointF middle = 0.5 * (a + c);
-        const QPointF d = middle - centre_px;
-        const double distance = std::hypot(d.x(), d.y());
-        if (shown.contains(middle) && distance < best) {
-          best = distance;
-          anchor = middle;
-        }
-      }
-    }
-    labels.push_back({anchor + QPointF(-16, 5), name, body_colour(body.name).darker(250), false});
+    const std::optional<QPointF> inside = deepest_point(body_shapes[b], shown);
+    if (!inside) continue;  // out of the view
+    const QFontMetricsF metrics(body_font);
+    const QPointF centred(inside->x() - 0.5 * metrics.horizontalAdvance(name),
+                          inside->y() + 0.5 * (metrics.ascent() - metrics.descent()));
+    Label label{centred, name, body_colour(body.name).darker(250), false, true, inside};
+    label.body = b;
+    labels.push_back(label);
+    placer.add_feature(*inside, kBodyGroup);
   }
   labels.push_back({key_front + QPointF(-24, 28), tr("finger"), QColor(0, 90, 170), false});
   // the adjustable fixtures (buttons, screws) and the string before the forces, rails last
@@ -552,10 +607,10 @@ void ActionView::paint_frame(QPainter& painter) {
       at = *part + QPointF(6, -6);
     }
     if (at)
-      fixture_labels.insert(
-          fixture_labels.begin(),
-          {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
-           body_colour(model.bodies[hammer].name).darker(250), true, false, part});
+      // first of all: the escapement is what the close-up is for
+      labels.insert(labels.begin(),
+                    {*at, model.kind == "grand" ? tr("knuckle") : tr("butt"),
+                     body_colour(model.bodies[hammer].name).darker(250), true, false, part});
   }
   // in a close-up, a part whose point lies beyond the view is not named, nor in the checking
   // close-up one outside the region it frames (the escapement's screws in its corner)
@@ -584,9 +639,8 @@ void ActionView::paint_frame(QPainter& painter) {
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
   // the points the parts' names point at (not the force arrows' tips): a name placed nearer
   // another part's point than its own would name the wrong part
-  for (const std::vector<Label>* named : {&fixture_labels, &rail_labels})
-    for (const Label& l : *named)
-      if (l.feature) placer.add_feature(*l.feature);
+  for (const Label& l : labels)  // the parts' names (not the bodies' nor the forces')
+    if (l.feature && l.body < 0 && l.key.isEmpty()) placer.add_feature(*l.feature);
   QFont small = label_font;
   small.setBold(false);
   QHash<QString, QPointF> offsets;  // this paint's, for the next one
@@ -600,8 +654,15 @@ void ActionView::paint_frame(QPainter& painter) {
     std::optional<QPointF> at;
     std::optional<QLineF> leader;
     if (l.feature) {
+      LabelPlacer::NamedStyle style;
+      style.keep_clear = l.keep_clear;
+      if (l.body >= 0) {  // a part's name: over its own shape, among the parts' names
+        style.may_cover_point = true;
+        style.own_shape = l.body;
+        style.group = kBodyGroup;
+      }
       const auto placed =
-          placer.place_named(l.anchor, *l.feature, l.text, metrics, l.keep_clear, previous);
+          placer.place_named(l.anchor, *l.feature, l.text, metrics, style, previous);
       if (placed) {
         at = placed->baseline;
         leader = placed->leader;
@@ -618,10 +679,11 @@ void ActionView::paint_frame(QPainter& painter) {
     draw_label(painter, *at, l.text, l.colour);
     offsets.insert(key, *at - l.anchor);
     drawn_labels_.push_back(l.text);
-    drawn_label_details_.push_back({l.text,
-                                    QRectF(at->x(), at->y() - metrics.ascent(),
-                                           metrics.horizontalAdvance(l.text), metrics.height()),
-                                    l.feature, leader, l.key.isEmpty() && l.feature.has_value()});
+    drawn_label_details_.push_back(
+        {l.text,
+         QRectF(at->x(), at->y() - metrics.ascent(), metrics.horizontalAdvance(l.text),
+                metrics.height()),
+         l.feature, leader, l.body < 0 && l.key.isEmpty() && l.feature.has_value(), l.body});
   }
   label_offsets_ = offsets;
 }

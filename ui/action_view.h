@@ -66,6 +66,7 @@ class ActionView : public QWidget {
     std::optional<QPointF> feature;  // the point it names (a part's, a force arrow's tip)
     std::optional<QLineF> leader;    // drawn from that point to the text
     bool names_part = false;         // a part's name (a fixture, an adjuster), not a force
+    int body = -1;                   // a body's name: its index (its point is inside it)
   };
   /// The time, gap and finger force readout the latest paint drew along the top.
   const QString& readout() const { return readout_; }

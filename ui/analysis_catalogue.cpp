@@ -164,8 +164,8 @@ AnalysisEntry impact_velocity_range() {
       result.summary = v.x.empty()
                            ? QObject::tr("The hammer never reached the string.")
                            : QObject::tr(
-                                 "from %1 m/s (softest) to %2 m/s (loudest); fact F2: about "
-                                 "1 to 6 m/s.")
+                                 "from %1 m/s (softest) to %2 m/s (loudest); a piano's hammers "
+                                 "reach about 1 m/s (pianissimo) to 6 m/s (fortissimo).")
                                  .arg(number(lo))
                                  .arg(number(hi));
       return result;
@@ -300,7 +300,9 @@ AnalysisEntry swing() {
     return [model](const ProgressCallback& progress) {
       const SwingResult r = swing_test(*model, SwingOptions{}, progress);
       AnalysisResult result;
-      result.summary = QObject::tr("%1 round trips before it stops (fact F5: 2–3.5).")
+      result.summary = QObject::tr(
+                           "%1 round trips before it stops (technicians expect about 2 to 3.5 "
+                           "for a well-fitted centre pin).")
                            .arg(number(r.round_trips));
       result.table = {{QObject::tr("round trips"), number(r.round_trips), ""},
                       {QObject::tr("half swings"), QString::number(r.half_swings), ""},
@@ -365,8 +367,8 @@ AnalysisEntry touchweight() {
       const TouchweightResult r = measure_touchweight(*model, TouchweightOptions{}, progress);
       AnalysisResult result;
       result.summary = QObject::tr(
-                           "downweight %1 g, upweight %2 g (fact F9, grand: about "
-                           "45–55 g and 20–30 g).")
+                           "downweight %1 g, upweight %2 g (a regulated grand: about "
+                           "45–55 g down and 20–30 g up).")
                            .arg(number(r.downweight_g))
                            .arg(number(r.upweight_g));
       result.table = {{QObject::tr("downweight"), number(r.downweight_g), "g"},

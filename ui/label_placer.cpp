@@ -10,7 +10,6 @@ namespace pat::ui {
 namespace {
 
 // Costs of a named label's position, in pixels of leader (see the header)
-constexpr double kCrossedLeaderCost = 300.0;     // its leader crosses another leader
 constexpr double kLeaderThroughLabelCost = 200;  // a leader passes through a label
 constexpr double kNearerOtherCost = 100.0;       // nearer another named point than its own ...
 constexpr double kNearerOtherPerPx = 2.0;        // ... plus this per pixel it is nearer
@@ -19,8 +18,8 @@ constexpr double kCoversOwnPointCost = 40.0;     // the text lies over the point
 constexpr double kCoveredPointCostClear = 10.0;  // per grid point on the drawing (keep_clear)
 constexpr double kCoveredPointCost = 2.0;        // the same for the other labels (forces)
 // a label stays where it was while that costs at most this much more than the best position:
-// about the leader growing by a line's height and a half
-constexpr double kKeepPreviousMarginPx = 40.0;
+// about the leader growing by three lines' height, or six covered grid points
+constexpr double kKeepPreviousMarginPx = 60.0;
 
 bool segment_meets_rect(const QLineF& segment, const QRectF& rect) {
   if (rect.contains(segment.p1()) || rect.contains(segment.p2())) return true;
@@ -41,7 +40,7 @@ double distance_to_rect(const QPointF& point, const QRectF& rect) {
 
 }  // namespace
 
-int LabelPlacer::covered_points(const QRectF& box) const {
+int LabelPlacer::covered_points(const QRectF& box, int own_shape) const {
   constexpr int kColumns = 6, kRows = 3;
   int covered = 0;
   for (int i = 0; i < kColumns; ++i) {
@@ -49,6 +48,7 @@ int LabelPlacer::covered_points(const QRectF& box) const {
       const QPointF point(box.left() + box.width() * (i + 0.5) / kColumns,
                           box.top() + box.height() * (j + 0.5) / kRows);
       for (const Shape& shape : avoided_) {
+        if (own_shape >= 0 && shape.id == own_shape) continue;
         if (shape.bounds.contains(point) && shape.polygon.containsPoint(point, Qt::OddEvenFill)) {
           ++covered;
           break;
@@ -107,39 +107,42 @@ std::optional<QPointF> LabelPlacer::place(const QPointF& anchor, const QString& 
 }
 
 double LabelPlacer::named_cost(const QRectF& box, const QRectF& text_box, const QPointF& feature,
-                               bool keep_clear, double worst_wanted) const {
+                               const NamedStyle& style, double worst_wanted) const {
   constexpr double kInfinite = std::numeric_limits<double>::infinity();
   if (!is_free(box)) return kInfinite;
   const QLineF leader = leader_to(feature, text_box);
   const bool drawn = leader.length() > kMinLeaderPx;
   double cost = leader.length();
-  if (leader.length() == 0.0) cost += kCoversOwnPointCost;
+  if (leader.length() == 0.0 && !style.may_cover_point) cost += kCoversOwnPointCost;
   // a label that sits nearer another named point than its own names the wrong part
   const double own = distance_to_rect(feature, text_box);
   double nearest_other = kInfinite;
-  for (const QPointF& other : features_) {
-    if (QLineF(other, feature).length() < 1.0) continue;  // its own point
-    nearest_other = std::min(nearest_other, distance_to_rect(other, text_box));
+  for (const Feature& other : features_) {
+    if (other.group != style.group || QLineF(other.point, feature).length() < 1.0)
+      continue;  // another group's, or its own point
+    nearest_other = std::min(nearest_other, distance_to_rect(other.point, text_box));
   }
   if (nearest_other < own) return kInfinite;  // it would name that part: better left out
   if (nearest_other < own + kNearerMarginPx)
     cost += kNearerOtherCost + kNearerOtherPerPx * (own + kNearerMarginPx - nearest_other);
   for (const QLineF& other : leaders_) {
+    // crossed leaders point each name at the other's part: refused
     if (drawn && leader.intersects(other, nullptr) == QLineF::BoundedIntersection &&
         QLineF(other.p1(), feature).length() >= 1.0)
-      cost += kCrossedLeaderCost;
+      return kInfinite;
     if (segment_meets_rect(other, box)) cost += kLeaderThroughLabelCost;
   }
   if (drawn)
     for (const QRectF& other : taken_)
       if (segment_meets_rect(leader, other)) cost += kLeaderThroughLabelCost;
   if (cost >= worst_wanted) return cost;  // the grid count below cannot make it cheaper
-  return cost + covered_points(box) * (keep_clear ? kCoveredPointCostClear : kCoveredPointCost);
+  return cost + covered_points(box, style.own_shape) *
+                    (style.keep_clear ? kCoveredPointCostClear : kCoveredPointCost);
 }
 
 std::optional<LabelPlacer::Placement> LabelPlacer::place_named(
     const QPointF& anchor, const QPointF& feature, const QString& text,
-    const QFontMetricsF& metrics, bool keep_clear, std::optional<QPointF> previous) {
+    const QFontMetricsF& metrics, const NamedStyle& style, std::optional<QPointF> previous) {
   const double w = metrics.horizontalAdvance(text), h = metrics.height();
   const auto boxes = [&](const QPointF& baseline) {
     return std::pair{QRectF(baseline.x() - 2, baseline.y() - metrics.ascent() - 1, w + 4, h + 2),
@@ -161,7 +164,7 @@ std::optional<LabelPlacer::Placement> LabelPlacer::place_named(
   double best_cost = std::numeric_limits<double>::infinity();
   for (const QPointF& baseline : candidates) {
     const auto [box, text_box] = boxes(baseline);
-    const double cost = named_cost(box, text_box, feature, keep_clear, best_cost);
+    const double cost = named_cost(box, text_box, feature, style, best_cost);
     if (cost < best_cost) {
       best_cost = cost;
       best = baseline;
@@ -170,7 +173,7 @@ std::optional<LabelPlacer::Placement> LabelPlacer::place_named(
   if (previous && best) {  // (with no free position, neither is the previous one)
     const auto [box, text_box] = boxes(anchor + *previous);
     const double margin = best_cost + kKeepPreviousMarginPx;
-    if (named_cost(box, text_box, feature, keep_clear, margin + 1.0) <= margin)
+    if (named_cost(box, text_box, feature, style, margin + 1.0) <= margin)
       best = anchor + *previous;
   }
   if (!best) return std::nullopt;

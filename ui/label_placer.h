@@ -35,6 +35,17 @@ class LabelPlacer {
     std::optional<QLineF> leader;  // from the named point to the nearest point of the text
   };
 
+  /// How a named label may sit: `keep_clear` weighs covering the drawing as rails' names do
+  /// (else lightly, as force values); a part's name (`may_cover_point`) may be written over its
+  /// own point and its own shape (`own_shape`, the id given to avoid()); `group`: the named
+  /// points it must not sit nearer to than its own (those added with the same group).
+  struct NamedStyle {
+    bool keep_clear = true;
+    bool may_cover_point = false;
+    int own_shape = -1;
+    int group = 0;
+  };
+
   explicit LabelPlacer(const QRectF& bounds) : bounds_(bounds) {}
 
   /// Baseline position for `text` near `anchor` (the label's left end, baseline), or nothing:
@@ -55,22 +66,23 @@ class LabelPlacer {
   /// free position of least cost (see above), or nothing when no position is free.
   std::optional<Placement> place_named(const QPointF& anchor, const QPointF& feature,
                                        const QString& text, const QFontMetricsF& metrics,
-                                       bool keep_clear,
+                                       const NamedStyle& style,
                                        std::optional<QPointF> previous = std::nullopt);
 
   /// Marks an area as taken (e.g. a readout drawn without placement).
   void reserve(const QRectF& area) { taken_.push_back(area); }
-  /// Marks a drawn shape (screen coordinates) that place_clear() keeps off.
-  void avoid(const QPolygonF& shape) {
-    if (shape.size() >= 3) avoided_.push_back({shape, shape.boundingRect()});
+  /// Marks a drawn shape (screen coordinates) that place_clear() keeps off; `id` names it for
+  /// NamedStyle::own_shape.
+  void avoid(const QPolygonF& shape, int id = -1) {
+    if (shape.size() >= 3) avoided_.push_back({shape, shape.boundingRect(), id});
   }
   /// Marks a point that some label names (all of them, before placing any): a label placed
-  /// nearer another such point than its own pays for it.
-  void add_feature(const QPointF& feature) { features_.push_back(feature); }
+  /// nearer another such point of its group than its own is refused.
+  void add_feature(const QPointF& feature, int group = 0) { features_.push_back({feature, group}); }
 
-  /// How much of `box` the avoided shapes cover: the number of points of a 6 × 3 grid over it
-  /// that lie in one of them (0 … 18).
-  int covered_points(const QRectF& box) const;
+  /// How much of `box` the avoided shapes cover (but the shape `own_shape`): the number of
+  /// points of a 6 × 3 grid over it that lie in one of them (0 … 18).
+  int covered_points(const QRectF& box, int own_shape = -1) const;
   /// The leaders drawn so far.
   const std::vector<QLineF>& leaders() const { return leaders_; }
 
@@ -81,6 +93,11 @@ class LabelPlacer {
   struct Shape {
     QPolygonF polygon;
     QRectF bounds;
+    int id = -1;
+  };
+  struct Feature {
+    QPointF point;
+    int group = 0;
   };
   std::optional<QPointF> place(const QPointF& anchor, const QString& text,
                                const QFontMetricsF& metrics, bool keep_clear,
@@ -88,12 +105,12 @@ class LabelPlacer {
   bool is_free(const QRectF& box) const;
   /// The cost of a named label at `box` (text box `text_box`); infinite when not free.
   double named_cost(const QRectF& box, const QRectF& text_box, const QPointF& feature,
-                    bool keep_clear, double worst_wanted) const;
+                    const NamedStyle& style, double worst_wanted) const;
 
   QRectF bounds_;
   std::vector<QRectF> taken_;
   std::vector<Shape> avoided_;
-  std::vector<QPointF> features_;
+  std::vector<Feature> features_;
   std::vector<QLineF> leaders_;
 };
 

@@ -122,8 +122,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
     show_run_status();
-    show_banner(tr("Run paused at t = %1 ms: %2. Move the setting back and press \"Start from "
-                   "rest\".")
+    // what made it diverge may be a moved setting or the input itself (a file's huge force)
+    const bool moved = model_ && adjuster_settings_text(*model_) != "regulated";
+    show_banner((moved ? tr("Run paused at t = %1 ms: %2. Move a setting back, or choose a "
+                            "gentler input, and press \"Start from rest\".")
+                       : tr("Run paused at t = %1 ms: %2. Choose a gentler input and press "
+                            "\"Start from rest\"."))
                     .arg(controller_->display_time() * 1e3, 0, 'f', 2)
                     .arg(cause));
   });
@@ -533,6 +537,10 @@ void MainWindow::open_action(const std::string& name_or_path) {
     deregulation_setting_->setCurrentIndex(std::max(0, keep));
   }
   fit_regulation_dock(false);
+  // and again once the new rows have their fonts and sizes (their size requests are events of
+  // their own: fitted now alone, a grand opened after the upright with larger text turned off
+  // kept the upright's narrower dock and a clipped target column)
+  QTimer::singleShot(0, this, [this] { fit_regulation_dock(isVisible()); });
   plots_->set_model(*model);
   fit_split_to_action(*model);
   view_->reset_view();
@@ -554,8 +562,8 @@ void MainWindow::start(const std::string& spec) {
     const QString why = QString::fromStdString(e.what());
     if (controller_->model() == model_) {  // the same action: its run goes on
       show_banner(
-          tr("Not started: %1. Fix the file or choose another input; the run shown before goes "
-             "on.")
+          tr("Not started: %1. Fix the file or choose another input; the run shown before is "
+             "kept as it was.")
               .arg(why));
       return;
     }

@@ -3,12 +3,15 @@
 #include <qcustomplot.h>
 
 #include <QEvent>
+#include <QFontMetricsF>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
 namespace pat::ui {
 namespace {
+
+constexpr int kMinimumHeightPx = 120;  // a panel at the normal text size
 
 const QColor kCursorColours[2] = {QColor(0, 120, 0), QColor(160, 0, 160)};
 const char* kCursorNames[2] = {"A", "B"};
@@ -29,7 +32,7 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(plot_);
-  setMinimumHeight(120);
+  setMinimumHeight(kMinimumHeightPx);
 
   // title above; the legend inside the plot, top right, over headroom left by fit_values()
   plot_->plotLayout()->insertRow(0);
@@ -174,6 +177,11 @@ void PlotPanel::apply_fonts() {
   legend_font.setPointSizeF(axis_font.pointSizeF() - 0.5);
   title_element_->setFont(label_font);
   plot_->legend->setFont(legend_font);
+  // room for the data between the title, the ticks, the axis title and a legend below: about
+  // eight lines of the text (120 px at 9 pt), so that larger text does not squeeze the traces
+  // into a strip (the window's splitter keeps the plots this tall)
+  setMinimumHeight(std::max(kMinimumHeightPx,
+                            static_cast<int>(std::ceil(8.0 * QFontMetricsF(axis_font).height()))));
   for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) {
     axis->setLabelFont(label_font);
     axis->setTickLabelFont(axis_font);

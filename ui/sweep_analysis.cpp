@@ -5,6 +5,7 @@
 #include <QObject>
 #include <utility>
 
+#include "analysis/paper_repetition.h"
 #include "analysis/repetition_sweep.h"
 #include "analysis_entries.h"
 #include "core/error.h"
@@ -43,7 +44,7 @@ SweepOptions sweep_options(const AnalysisSettings& settings) {
   return o;
 }
 
-AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
+AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const std::string& kind) {
   AnalysisResult result;
   const QString stroke = QString::fromStdString(stroke_name(r.stroke));
   const QString mode = QString::fromStdString(sweep_mode_name(r.mode));
@@ -80,6 +81,10 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o) {
             "got there (compare the %2 mode).")
             .arg(number(*r.alternating_from_hz))
             .arg(r.mode == SweepMode::chirp ? QObject::tr("steps") : QObject::tr("chirp"));
+
+  // beside the paper's figures, and said when it disagrees (not only quoting the fact)
+  const std::string paper = compare_with_paper(r, kind, o.f_max_hz);
+  if (!paper.empty()) result.summary += " " + QString::fromStdString(paper);
 
   result.table = {{QObject::tr("maximum repetition frequency"),
                    r.max_frequency_hz ? number(*r.max_frequency_hz) : QObject::tr("none"), "Hz"},
@@ -210,8 +215,9 @@ AnalysisEntry repetition_sweep_entry() {
   e.name = QObject::tr("Repetition-frequency sweep");
   e.description = QObject::tr(
       "The key played faster and faster (a chirp at 1 Hz/s, or steady sines in steps): the "
-      "highest frequency at which every cycle still gives exactly one strike (fact F4: the "
-      "grand repeats faster than the upright, above all with a half stroke)");
+      "highest frequency at which every cycle still gives exactly one strike (the paper: the "
+      "grand repeats faster than the upright, above all with a half stroke; its figures are "
+      "set beside the result)");
   const AnalysisParameter stroke = AnalysisParameter::choice(
       "stroke", QObject::tr("Stroke"),
       QObject::tr("full: the key comes back to rest every cycle; half: it comes up only halfway, "
@@ -242,7 +248,7 @@ AnalysisEntry repetition_sweep_entry() {
               const AnalysisSettings& settings) -> AnalysisTask {
     const SweepOptions options = sweep_options(settings);  // bad settings fail before the run
     return [model, options](const ProgressCallback& progress) {
-      return sweep_result(run_repetition_sweep(*model, options, progress), options);
+      return sweep_result(run_repetition_sweep(*model, options, progress), options, model->kind);
     };
   };
   return e;

@@ -1,0 +1,46 @@
+#include "analysis/paper_repetition.h"
+
+#include <algorithm>
+
+#include "core/format.h"
+
+namespace pat {
+
+std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& kind,
+                                                             Stroke stroke) {
+  // reference paper, Table 2 "Maximum playing frequencies": simulation and experiments
+  if (kind == "upright" && stroke == Stroke::full) return PaperRepetitionLimits{11.0, 13.0, false};
+  if (kind == "grand" && stroke == Stroke::full) return PaperRepetitionLimits{13.0, 14.0, false};
+  if (kind == "grand" && stroke == Stroke::half) return PaperRepetitionLimits{19.0, 20.0, true};
+  return std::nullopt;
+}
+
+std::string compare_with_paper(const SweepResult& result, const std::string& kind,
+                               double f_max_hz) {
+  const auto paper = paper_repetition_limits(kind, result.stroke);
+  if (!paper || !result.max_frequency_hz) return {};
+  const double low = std::min(paper->model_hz, paper->experiment_hz);
+  const double high = std::max(paper->model_hz, paper->experiment_hz);
+  std::string text = "The paper (Table 2): model " + format_number(paper->model_hz) +
+                     " Hz, experiment " + (paper->experiment_at_least ? "at least " : "") +
+                     format_number(paper->experiment_hz) + " Hz; ";
+  const double found = *result.max_frequency_hz;
+  const std::string known = ", a known limit of this model (README, Limits).";
+  if (!result.limit_found) {
+    // no failure up to the band's end: only a lower bound
+    text += "this sweep found no failure up to " + format_number(f_max_hz) + " Hz";
+    if (f_max_hz > high + kPaperAgreementHz && !paper->experiment_at_least)
+      return text + ", above both" + known;
+    return text + (f_max_hz < low - kPaperAgreementHz ? ": raise the maximum frequency to compare."
+                                                      : ", which agrees so far.");
+  }
+  text += "this sweep's " + format_number(found) + " Hz ";
+  if (found < low - kPaperAgreementHz) return text + "is below both" + known;
+  if (found > high + kPaperAgreementHz && !paper->experiment_at_least)
+    return text + "is above both" + known;
+  if (found >= low && (found <= high || paper->experiment_at_least))
+    return text + "agrees (between them).";
+  return text + "agrees (within " + format_number(kPaperAgreementHz) + " Hz).";
+}
+
+}  // namespace pat
