@@ -211,6 +211,12 @@ std::optional<ModelBox> ActionView::focus_region(const ActionModel& model, ViewF
       include(contact.segment_end, 0.0);
     }
   }
+  if (focus == ViewFocus::escapement && marks.hammer >= 0 &&
+      marks.hammer < static_cast<int>(model.bodies.size())) {
+    // the hammer's centre pin: the whole butt (the upright's) or knuckle and flange (the grand's)
+    // in sight, not only the face the jack pushes
+    include(model.bodies[marks.hammer].pivot, 0.0);
+  }
   if (focus == ViewFocus::checking) {
     // the hammer head at rest and where it meets the string (the string in sight: the catch is
     // judged by its distance from it)

@@ -117,6 +117,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         frame.model != replay_model_shown_) {
       replay_model_shown_ = frame.model;
       regulation_->set_replay(frame.model.get());
+      // and the status line says where the screw is now
+      running_input_ = tr("a recorded replay, settings %1")
+                           .arg(QString::fromStdString(adjuster_settings_text(*frame.model)));
+      show_run_status();
     }
     if (!controller_->playing()) show_run_status();  // paused: a step or seek moves its time
   });

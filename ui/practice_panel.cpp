@@ -82,7 +82,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   level_->setRange(1, 2);
   level_->setToolTip(tr("Level 1 hides one setting, level 2 two"));
   start_form->addRow(tr("Action"), action_);
-  start_form->addRow(tr("Seed"), seed_);
+  // the seed chooses the hidden fault: the same number gives every student the same exercise
+  seed_->setToolTip(
+      tr("Each number hides a different fault; give a class the same number for "
+         "the same exercise"));
+  start_form->addRow(tr("Exercise number"), seed_);
   start_form->addRow(tr("Level"), level_);
   auto* start_row = new QHBoxLayout;
   auto* start_button = new QPushButton(tr("Start"), start_box);
@@ -232,13 +236,17 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
             if (!session_) return;
             const SessionScore s = session_->score(readings, elapsed_s());
             append_history();
-            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4, hints −%5). "
+            // the hints' share only when some were taken ("hints −0.0" read as a penalty)
+            const QString hints = s.hint_penalty > 0.0
+                                      ? tr(", hints −%1").arg(s.hint_penalty, 0, 'f', 1)
+                                      : tr(", no hints taken");
+            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4%5). "
                            "The hidden %6: %7.")
                             .arg(s.total, 0, 'f', 1)
                             .arg(s.diagnosis, 0, 'f', 1)
                             .arg(s.regulation, 0, 'f', 1)
                             .arg(s.economy, 0, 'f', 1)
-                            .arg(s.hint_penalty, 0, 'f', 1)
+                            .arg(hints)
                             .arg(QString::fromStdString(session_->answer_heading()),
                                  QString::fromStdString(session_->answer_text())));
             export_button_->setEnabled(true);

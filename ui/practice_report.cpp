@@ -24,7 +24,8 @@ QString session_report_html(const PracticeSession& session) {
   const Exercise& e = session.exercise();
   QString html = "<h2>" + QObject::tr("Practice session report") + "</h2>";
   html += "<p><b>" + cell(e.title) + "</b><br>" + QObject::tr("Action: %1").arg(cell(e.kind));
-  if (e.seed) html += "<br>" + QObject::tr("Seed: %1, level %2").arg(*e.seed).arg(e.level);
+  if (e.seed)
+    html += "<br>" + QObject::tr("Exercise number %1, level %2").arg(*e.seed).arg(e.level);
   if (!e.source_file.empty())
     html += "<br>" + QObject::tr("Exercise file: %1").arg(cell(e.source_file));
   if (!e.notes.empty()) html += "<br>" + cell(e.notes);

@@ -12,6 +12,7 @@
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
@@ -243,6 +244,9 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
       qPrintable(QString("%1 mm shown, %2 mm in the replay").arg(row->value_mm()).arg(turned_mm)));
   QVERIFY(!row->slider()->isEnabled() && !row->spin_box()->isEnabled());
   QCOMPARE(row->measured_label()->text(), QString("replay"));
+  // and the status line says where the screw is in the frame shown
+  QVERIFY2(window.statusBar()->currentMessage().contains("settings hammer_blow="),
+           qPrintable(window.statusBar()->currentMessage()));
   // PAT_UI_SHOTS=DIR keeps a picture of the replay with its plot for a person to look at
   const QString shots = qEnvironmentVariable("PAT_UI_SHOTS");
   if (!shots.isEmpty()) {
