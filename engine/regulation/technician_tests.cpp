@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -92,6 +93,8 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   // point where the hammer stops rising and falls back (what the technician sees as let-off;
   // the contact itself opens a little later, once the knuckle has slid off the jack's corner)
   double closest_carried_gap = std::numeric_limits<double>::infinity();
+  // and by whatever carries it (the jack or, too high, the repetition lever), for the message
+  double closest_gap = std::numeric_limits<double>::infinity();
   double previous_gap = sim.hammer_string_gap(sim.q());
   double previous_damper = damper_contact >= 0 ? gap_of(damper_contact) : 0.0;
   if (!damper_lifted && previous_damper <= 0.0)
@@ -103,6 +106,7 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
                                " s: " + sim.stop_cause());
     const double gap = sim.hammer_string_gap(sim.q());
     const double escapement = gap_of(marks.escapement_contact);
+    closest_gap = std::min(closest_gap, gap);
     if (gap_of(marks.letoff_contact) <= 0.0) letoff_touched = true;
     if (!letoff_touched && marks.check_contact >= 0 && gap_of(marks.check_contact) <= 0.0)
       throw BackcheckStopsTheRisingHammer(
@@ -163,12 +167,24 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
     reading.let_off_gap = closest_carried_gap;
     reading.aftertouch = aftertouch_after(key_at_let_off);
   }
-  if (!escaped && !jack_carried)
+  if (!escaped && !jack_carried) {
+    // what the technician sees, with its distance first: the hammer rising to a point and
+    // staying there, with no let-off to read
+    char seen[160];
+    std::snprintf(seen, sizeof seen, "up to %.1f mm from the string and holds it at %.1f mm",
+                  closest_gap * 1e3, held_gap * 1e3);
     throw HammerCarriedElsewhere(
-        "in a slow key press the jack never lifts the hammer (it is carried by another part, "
-        "e.g. the repetition lever all the way up: its drop screw stops it only after the "
-        "let-off button has tripped the jack, so the drop screw is too high or the let-off "
-        "button too low)");
+        model.setting_index("drop") >= 0
+            ? std::string("in a slow key press the jack never lifts the hammer: the repetition "
+                          "lever carries it ") +
+                  seen +
+                  ", so no let-off is seen (the drop screw stops the lever only after the "
+                  "let-off button has tripped the jack: the drop screw is too high or the "
+                  "let-off button too low)"
+            : std::string("in a slow key press the jack never lifts the hammer: another part "
+                          "carries it ") +
+                  seen + ", so no let-off is seen");
+  }
   if (!escaped)
     throw JackNeverEscapes(
         "in a slow key press the jack never escapes (the jack toe does not trip on the let-off "

@@ -44,6 +44,11 @@ assert checking["measured"] < checking["target"] - 1.0, checking  # 14.3 against
 for name in ("let_off", "drop"):
     s = by_name[name]
     assert s["measured"] is None and "never lifts the hammer" in s["problem"], s
+    # what a technician sees instead, with its distance: the lever holds the hammer near the
+    # string (about where the drop screw stops it, 3 mm)
+    import re
+    held = re.search(r"holds it at ([0-9.]+) mm", s["problem"])
+    assert held and 1.0 < float(held.group(1)) < 5.0, s["problem"]
 assert by_name["hammer_blow"]["within_tolerance"], "the rest geometry is still read"
 assert moved["within_tolerance"] is False
 # the aftertouch, the settings' result: about a millimetre on the regulated grand; not readable
