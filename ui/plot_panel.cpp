@@ -366,12 +366,13 @@ void PlotPanel::align_marker_labels() {
         (line->point1->coords().x() > middle ? Qt::AlignRight : Qt::AlignLeft) | Qt::AlignTop);
 }
 
-void PlotPanel::render(QPaintDevice& device,
-                       const std::vector<std::pair<PlotPanel*, QRect>>& plots) {
+void PlotPanel::render(QPaintDevice& device, const std::vector<std::pair<PlotPanel*, QRect>>& plots,
+                       double scale) {
   QCPPainter painter(&device);
   painter.setRenderHint(QPainter::Antialiasing);
   painter.setMode(QCPPainter::pmNoCaching);  // full polylines (not the screen's fast segments)
   painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
+  painter.scale(scale, scale);
   for (const auto& [panel, rect] : plots) {
     panel->update_cursor_items(true);
     panel->align_marker_labels();  // drawing to a file replots nothing: its range as it is now

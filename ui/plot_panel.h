@@ -95,9 +95,11 @@ class PlotPanel : public QWidget {
   /// "Δt = … ms, Δ<series> = … <unit>" for the two cursors (empty without both).
   QString cursor_readout() const;
 
-  /// Draws plots into `device`, each in its rectangle (pixels), with one painter (a PDF or
-  /// SVG device takes a single painter session).
-  static void render(QPaintDevice& device, const std::vector<std::pair<PlotPanel*, QRect>>& plots);
+  /// Draws plots into `device`, each in its rectangle (pixels before `scale`), with one painter
+  /// (a PDF or SVG device takes a single painter session); `scale` enlarges everything drawn,
+  /// text and lines with the rest, as a high-resolution picture does.
+  static void render(QPaintDevice& device, const std::vector<std::pair<PlotPanel*, QRect>>& plots,
+                     double scale = 1.0);
   /// The series within the time range shown: time_s and one column per series (values taken
   /// at each series' own sample times; series of one plot share them in this program).
   CsvTable visible_table() const;
