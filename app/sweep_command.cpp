@@ -8,6 +8,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "io/csv.h"
+#include "model/model_edits.h"
 #include "plot_output.h"
 #include "sweep_report.h"
 
@@ -50,7 +51,8 @@ int run_sweep(const std::vector<std::string>& args) {
   } else {
     std::cout << model.name << ", " << stroke_name(result.stroke) << " stroke, "
               << sweep_mode_name(result.mode) << ": " << sweep_summary(result) << "\n";
-    const std::string paper = compare_with_paper(result, model.kind, options.f_max_hz);
+    const std::string paper =
+        compare_with_paper(result, model.kind, options.f_max_hz, adjuster_settings_text(model));
     if (!paper.empty()) std::cout << "  " << paper << "\n";
     std::cout << "  " << result.simulated_s << " s simulated in " << result.wall_s << " s\n";
     if (!out_path.empty()) std::cout << "  cycles written to " << out_path << "\n";

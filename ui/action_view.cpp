@@ -17,15 +17,19 @@ namespace pat::ui {
 namespace {
 
 constexpr double kKeyGrabRadiusPx = 24.0;
+// how far beyond the checking close-up's region (a share of the view's width) parts are named
+constexpr double kCheckingNamesReach = 0.125;
 // room kept free of labels around the knuckle or butt and the jack top (px)
 constexpr double kEscapementRoomPx = 4.0;
 // the named points of the bodies are a group of their own (LabelPlacer::NamedStyle::group)
 constexpr int kBodyGroup = 1;
 
 // A point well inside a polygon (screen): of a 20 × 20 grid over its bounds, the one inside it
-// and inside `within` that lies farthest from its edges (depth counted up to kDeepEnoughPx: of
+// and inside `within` (not in `outside`) that lies farthest from its edges (depth counted up to
+// kDeepEnoughPx: of
 // equally deep points in a long bar, the one nearest its middle); empty when none does.
-std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& within) {
+std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& within,
+                                     const QRectF& outside = QRectF()) {
   if (polygon.size() < 3) return std::nullopt;
   const QRectF bounds = polygon.boundingRect();
   constexpr int kGrid = 20;
@@ -39,7 +43,8 @@ std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& wit
     for (int j = 0; j < kGrid; ++j) {
       const QPointF p(bounds.left() + bounds.width() * (i + 0.5) / kGrid,
                       bounds.top() + bounds.height() * (j + 0.5) / kGrid);
-      if (!within.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill)) continue;
+      if (!within.contains(p) || outside.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill))
+        continue;
       double depth = std::numeric_limits<double>::infinity();
       for (qsizetype k = 0; k < polygon.size(); ++k) {
         const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
@@ -143,6 +148,7 @@ void ActionView::show_frame(const Frame& frame) {
 
 void ActionView::reset_view() {
   fitted_ = false;
+  label_offsets_.clear();  // another action's places
   frame_.reset();
   model_.reset();
   dynamics_.reset();
@@ -168,6 +174,23 @@ Vec2 ActionView::to_model(const QPointF& p) const {
 
 Vec2 ActionView::body_point(int body, const Vec2& rest_point) {
   return dynamics_->point_position(body, rest_point, frame_->q);
+}
+
+const std::optional<Vec2>& ActionView::inner_point(int body) {
+  if (inner_points_model_ != model_) {  // a new model (an adjuster moved, another action)
+    inner_points_model_ = model_;
+    inner_points_.assign(model_->bodies.size(), std::nullopt);
+    // found in the rest outline drawn at the whole action's scale (px), where the depth and
+    // the pull to the middle are weighed
+    for (std::size_t b = 0; b < model_->bodies.size(); ++b) {
+      QPolygonF outline;
+      for (const Vec2& p : model_->bodies[b].outline)
+        outline << QPointF(p.x(), -p.y()) * kWholeActionScale;
+      if (const auto at = deepest_point(outline, outline.boundingRect()))
+        inner_points_[b] = Vec2(at->x(), -at->y()) / kWholeActionScale;
+    }
+  }
+  return inner_points_[body];
 }
 
 std::optional<QPointF> ActionView::key_front_on_screen() const {
@@ -236,6 +259,7 @@ std::optional<ModelBox> ActionView::focus_region(const ActionModel& model, ViewF
 
 void ActionView::set_focus(ViewFocus focus) {
   focus_ = focus;
+  label_offsets_.clear();  // places found at another scale
   fitted_ = false;
   if (frame_) fit();
   update();
@@ -525,14 +549,36 @@ void ActionView::paint_frame(QPainter& painter) {
   }
   // each part's name over a point well inside its own outline (as seen), moved off with a
   // leader when other names or parts are in the way; never nearer another part's point
-  const QRectF shown = QRectF(rect()).adjusted(20, band + 20, -20, -20);
+  const bool close_up = focus_ != ViewFocus::whole || scale_ >= 2.0 * kWholeActionScale;
+  // where a part may be named: in the view, and in the checking close-up near the region it
+  // frames (within an eighth of the view's width: the hammer head, backcheck and string, not
+  // the escapement's parts in its corner)
+  QRectF named_area = QRectF(rect()).adjusted(kNamedPointMarginPx, band + kNamedPointMarginPx,
+                                              -kNamedPointMarginPx, -kNamedPointMarginPx);
+  if (const std::optional<ModelBox> region = focus_region(model, focus_);
+      close_up && focus_ == ViewFocus::checking && region) {
+    const double near_px = kCheckingNamesReach * width();
+    named_area &= QRectF(to_screen(region->low), to_screen(region->high))
+                      .normalized()
+                      .adjusted(-near_px, -near_px, near_px, near_px);
+  }
+  const auto nameable = [&](const QPointF& p) { return named_area.contains(p); };
+
+  // a body's name a little further in, so that it is read whole
+  const QRectF shown = named_area.adjusted(16, 16, -16, -16);
   QFont body_font = label_font;
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
     // the joint is called "lever" (DESIGN.md); a technician calls the part the repetition lever
     const QString name =
         body.name == "lever" ? tr("repetition lever") : QString::fromStdString(body.name);
-    const std::optional<QPointF> inside = deepest_point(body_shapes[b], shown);
+    // the body's own inner point (found once per model, so the name moves with its part); in
+    // a close-up that leaves it out of view, the deepest point of what is in view
+    std::optional<QPointF> inside;
+    if (const std::optional<Vec2>& own = inner_point(b))
+      if (const QPointF at = to_screen(body_point(b, *own)); shown.contains(at) && nameable(at))
+        inside = at;
+    if (!inside) inside = deepest_point(body_shapes[b], shown);
     if (!inside) continue;  // out of the view
     const QFontMetricsF metrics(body_font);
     const QPointF centred(inside->x() - 0.5 * metrics.horizontalAdvance(name),
@@ -571,7 +617,6 @@ void ActionView::paint_frame(QPainter& painter) {
   // what each regulation adjuster turns, named as in its description ("capstan (key pilot)",
   // "jack regulating screw"), where it acts, in the close-ups (the whole action has no room for
   // them); those drawn as fixtures or as the backcheck are named already
-  const bool close_up = focus_ != ViewFocus::whole || scale_ >= 2.0 * kWholeActionScale;
   for (const Adjuster& adjuster : model.adjusters) {
     if (!close_up) break;
     bool named = false;  // a fixture it moves (a button, a screw) or the backcheck
@@ -621,24 +666,20 @@ void ActionView::paint_frame(QPainter& painter) {
   // in a close-up, a part whose point lies beyond the view is not named, nor in the checking
   // close-up one outside the region it frames (the escapement's screws in its corner)
   if (close_up) {
-    QRectF inner = QRectF(rect()).adjusted(kNamedPointMarginPx, band + kNamedPointMarginPx,
-                                           -kNamedPointMarginPx, -kNamedPointMarginPx);
-    const std::optional<ModelBox> region = focus_region(model, focus_);
-    if (focus_ == ViewFocus::checking && region)
-      inner &= QRectF(to_screen(region->low), to_screen(region->high)).normalized();
     // the string named where the hammer meets it when its end is out of the region
     const Vec2 struck = model.landmarks.strike_point -
                         model.landmarks.string_normal.dot(model.landmarks.strike_point -
                                                           model.landmarks.string_point) *
                             model.landmarks.string_normal;
     for (Label& l : fixture_labels)
-      if (l.text == "string" && l.feature && !inner.contains(*l.feature)) {
+      if (l.text == "string" && l.feature && !nameable(*l.feature)) {
         l.feature = to_screen(struck);
         l.anchor = *l.feature + QPointF(6, -6);
       }
-    const auto at_edge = [&](const Label& l) { return l.feature && !inner.contains(*l.feature); };
+    const auto at_edge = [&](const Label& l) { return l.feature && !nameable(*l.feature); };
     std::erase_if(fixture_labels, at_edge);
     std::erase_if(rail_labels, at_edge);
+    std::erase_if(labels, at_edge);  // the bodies' names and the knuckle's or butt's
   }
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());

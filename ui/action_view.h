@@ -102,6 +102,9 @@ class ActionView : public QWidget {
   QPointF to_screen(const Vec2& p) const;
   Vec2 to_model(const QPointF& p) const;
   Vec2 body_point(int body, const Vec2& rest_point);
+  /// A point well inside a body's rest outline (body frame, m), where its name goes; computed
+  /// once per model.
+  const std::optional<Vec2>& inner_point(int body);
 
   std::optional<Frame> frame_;
   std::shared_ptr<const ActionModel> model_;
@@ -118,6 +121,8 @@ class ActionView : public QWidget {
   QString readout_;
   // each label's offset from its anchor at the last paint (kept while it stays good)
   QHash<QString, QPointF> label_offsets_;
+  std::vector<std::optional<Vec2>> inner_points_;
+  std::shared_ptr<const ActionModel> inner_points_model_;  // the model they were found for
   // panning and key play
   QPointF drag_start_;
   QPointF offset_at_drag_;

@@ -83,7 +83,9 @@ std::optional<QPointF> LabelPlacer::place(const QPointF& anchor, const QString& 
   const QPointF wider[] = {{-w - 6, 0}, {-w - 6, -h}, {-w - 6, h}, {w * 0.6, -h}, {-w * 0.6, -h}};
   std::vector<QPointF> offsets;
   offsets.reserve(1 + std::size(near) + std::size(wider));
-  if (previous) offsets.push_back(*previous);  // where it was: wins a tie
+  // where it was, when its own place (the anchor) is taken: it goes back there once free
+  const QRectF at_anchor(anchor.x() - 2, anchor.y() - metrics.ascent() - 1, w + 4, h + 2);
+  if (previous && !is_free(at_anchor)) offsets.push_back(*previous);
   for (const QPointF& offset : near) offsets.push_back(offset);
   if (keep_clear)
     for (const QPointF& offset : wider) offsets.push_back(offset);

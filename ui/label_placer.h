@@ -49,7 +49,8 @@ class LabelPlacer {
   explicit LabelPlacer(const QRectF& bounds) : bounds_(bounds) {}
 
   /// Baseline position for `text` near `anchor` (the label's left end, baseline), or nothing:
-  /// the first free position in the order tried (`previous`, an offset from the anchor, first).
+  /// the first free position in the order tried (`previous`, an offset from the anchor, first
+  /// when the anchor itself is taken).
   std::optional<QPointF> place(const QPointF& anchor, const QString& text,
                                const QFontMetricsF& metrics,
                                std::optional<QPointF> previous = std::nullopt) {

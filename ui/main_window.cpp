@@ -161,6 +161,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(regulation_, &RegulationPanel::adjusterChanged, this, &MainWindow::set_adjuster);
   connect(regulation_, &RegulationPanel::resetRequested, this, [this] {
     if (!model_) return;
+    if (regulation_->replaying()) {  // the rows show the replay's screws; the live action waits
+      statusBar()->showMessage(tr("A replay is on screen: Start from rest first, then reset."));
+      return;
+    }
     auto regulated = std::make_shared<ActionModel>(*model_);
     for (const Adjuster& a : model_->adjusters) *regulated = with_adjuster(*regulated, a.name, 0.0);
     regulation_->show_adjusters(*regulated);
@@ -626,6 +630,10 @@ void MainWindow::measure_current_model() {
 
 void MainWindow::regulate_automatically() {
   if (!model_ || regulation_runner_->running()) return;
+  if (regulation_->replaying()) {
+    statusBar()->showMessage(tr("A replay is on screen: Start from rest first, then regulate."));
+    return;
+  }
   regulation_->log(tr("Regulating %1 from the current adjuster positions…")
                        .arg(QString::fromStdString(model_->name)));
   regulate_button_->setText(tr("Cancel regulation"));

@@ -83,7 +83,9 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
   connect(plot_, &QCustomPlot::afterLayout, this, [this] {
     // a legend wider than most of a narrow plot area covers the value axis' ticks and the
     // traces (the key and hammer legend with larger text): it goes below while that lasts
-    if (place_legend_for_width()) {
+    // (not while a picture is drawn: its layout at the picture's size would move the legend of
+    // the plot on screen)
+    if (!rendering_ && place_legend_for_width()) {
       fit_values();
       request_replot();
       return;
@@ -379,7 +381,9 @@ void PlotPanel::render(QPaintDevice& device, const std::vector<std::pair<PlotPan
     panel->time_mark_line_->setVisible(false);
     painter.save();
     painter.translate(rect.topLeft());
+    panel->rendering_ = true;
     panel->plot_->toPainter(&painter, rect.width(), rect.height());
+    panel->rendering_ = false;
     painter.restore();
     panel->time_mark_line_->setVisible(panel->time_mark_.has_value());
     panel->update_cursor_items();  // the screen's readout again

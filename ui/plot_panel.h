@@ -154,6 +154,7 @@ class PlotPanel : public QWidget {
   bool legend_below_ = false;
   bool legend_below_for_good_ = false;  ///< below whatever the width (categories, many series)
   QMargins legend_margins_inside_;
+  bool rendering_ = false;     ///< drawn into a picture (render()): the legend stays where it is
   int fitted_height_px_ = -1;  ///< the plot area's height the value axis was last fitted for
   std::optional<double> cursors_[2];
   bool cursors_enabled_ = true;

@@ -10,6 +10,7 @@
 #include "analysis_entries.h"
 #include "core/error.h"
 #include "core/format.h"
+#include "model/model_edits.h"
 
 namespace pat::ui {
 namespace {
@@ -44,7 +45,8 @@ SweepOptions sweep_options(const AnalysisSettings& settings) {
   return o;
 }
 
-AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const std::string& kind) {
+AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const std::string& kind,
+                            const std::string& settings) {
   AnalysisResult result;
   const QString stroke = QString::fromStdString(stroke_name(r.stroke));
   const QString mode = QString::fromStdString(sweep_mode_name(r.mode));
@@ -83,7 +85,7 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const s
             .arg(r.mode == SweepMode::chirp ? QObject::tr("steps") : QObject::tr("chirp"));
 
   // beside the paper's figures, and said when it disagrees (not only quoting the fact)
-  const std::string paper = compare_with_paper(r, kind, o.f_max_hz);
+  const std::string paper = compare_with_paper(r, kind, o.f_max_hz, settings);
   if (!paper.empty()) result.summary += " " + QString::fromStdString(paper);
 
   result.table = {{QObject::tr("maximum repetition frequency"),
@@ -248,7 +250,8 @@ AnalysisEntry repetition_sweep_entry() {
               const AnalysisSettings& settings) -> AnalysisTask {
     const SweepOptions options = sweep_options(settings);  // bad settings fail before the run
     return [model, options](const ProgressCallback& progress) {
-      return sweep_result(run_repetition_sweep(*model, options, progress), options, model->kind);
+      return sweep_result(run_repetition_sweep(*model, options, progress), options, model->kind,
+                          adjuster_settings_text(*model));
     };
   };
   return e;

@@ -15,8 +15,8 @@ std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& 
   return std::nullopt;
 }
 
-std::string compare_with_paper(const SweepResult& result, const std::string& kind,
-                               double f_max_hz) {
+std::string compare_with_paper(const SweepResult& result, const std::string& kind, double f_max_hz,
+                               const std::string& settings) {
   const auto paper = paper_repetition_limits(kind, result.stroke);
   if (!paper || !result.max_frequency_hz) return {};
   const double low = std::min(paper->model_hz, paper->experiment_hz);
@@ -24,22 +24,29 @@ std::string compare_with_paper(const SweepResult& result, const std::string& kin
   std::string text = "The paper (Table 2): model " + format_number(paper->model_hz) +
                      " Hz, experiment " + (paper->experiment_at_least ? "at least " : "") +
                      format_number(paper->experiment_hz) + " Hz; ";
+  // why a sweep may differ: the action's own settings, or (regulated) the model; the grand's
+  // repetition limits are the model's known limit, and the README says why
+  const bool regulated = settings.empty() || settings == "regulated";
+  const std::string why = !regulated
+                              ? "; the action is not regulated (" + settings + "), the paper's was."
+                          : kind == "grand" ? ", a known limit of this model (README, Limits)."
+                                            : " (README, Limits).";
   const double found = *result.max_frequency_hz;
-  const std::string known = ", a known limit of this model (README, Limits).";
   if (!result.limit_found) {
     // no failure up to the band's end: only a lower bound
     text += "this sweep found no failure up to " + format_number(f_max_hz) + " Hz";
     if (f_max_hz > high + kPaperAgreementHz && !paper->experiment_at_least)
-      return text + ", above both" + known;
+      return text + ", above both" + why;
     return text + (f_max_hz < low - kPaperAgreementHz ? ": raise the maximum frequency to compare."
                                                       : ", which agrees so far.");
   }
   text += "this sweep's " + format_number(found) + " Hz ";
-  if (found < low - kPaperAgreementHz) return text + "is below both" + known;
-  if (found > high + kPaperAgreementHz && !paper->experiment_at_least)
-    return text + "is above both" + known;
-  if (found >= low && (found <= high || paper->experiment_at_least))
-    return text + "agrees (between them).";
+  if (found < low - kPaperAgreementHz) return text + "is below both" + why;
+  if (found > high + kPaperAgreementHz)
+    return paper->experiment_at_least ? text + "agrees with the experiment's bound (at least " +
+                                            format_number(paper->experiment_hz) + " Hz)."
+                                      : text + "is above both" + why;
+  if (found >= low && found <= high) return text + "agrees (between them).";
   return text + "agrees (within " + format_number(kPaperAgreementHz) + " Hz).";
 }
 

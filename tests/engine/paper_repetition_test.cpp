@@ -46,8 +46,23 @@ TEST(PaperRepetition, SaysWhetherASweepAgrees) {
   const std::string below = compare_with_paper(sweep(Stroke::half, 12.5, true), "grand", 25);
   EXPECT_TRUE(has(below, "experiment at least 20 Hz")) << below;
   EXPECT_TRUE(has(below, "below both")) << below;
-  // above an "at least" experiment is not a disagreement
-  EXPECT_TRUE(has(compare_with_paper(sweep(Stroke::half, 23, true), "grand", 25), "agrees"));
+  // above an "at least" experiment agrees with that bound (it is not "between them")
+  const std::string bound = compare_with_paper(sweep(Stroke::half, 23, true), "grand", 25);
+  EXPECT_TRUE(has(bound, "agrees with the experiment's bound (at least 20 Hz)")) << bound;
+  // inside the span: between them
+  EXPECT_TRUE(has(compare_with_paper(sweep(Stroke::full, 13.5, true), "grand", 20),
+                  "agrees (between them)"));
+}
+
+TEST(PaperRepetition, ADeregulatedActionsDifferenceIsPutDownToItsSettings) {
+  // let-off 3 mm down: the user's deregulation, not the model's limit
+  const std::string moved =
+      compare_with_paper(sweep(Stroke::full, 9.1, true), "grand", 20, "let_off=3mm");
+  EXPECT_TRUE(has(moved, "is below both; the action is not regulated (let_off=3mm)")) << moved;
+  EXPECT_FALSE(has(moved, "known limit")) << moved;
+  // a regulated upright's difference points to the README without calling it the grand's limit
+  const std::string upright = compare_with_paper(sweep(Stroke::full, 14.3, true), "upright", 15);
+  EXPECT_TRUE(has(upright, "is above both (README, Limits).")) << upright;
 }
 
 TEST(PaperRepetition, ASweepWithoutAFailureIsALowerBound) {

@@ -136,13 +136,16 @@ void AnalysisStudiesTest::short_sweep_shows_its_maximum() {
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
   QVERIFY2(panel->summary().contains("maximum repetition frequency"), qPrintable(panel->summary()));
   // set beside the paper's figures, with a verdict (not only quoted)
-  QVERIFY2(panel->summary().contains("The paper (Table 2): model 11 Hz, experiment 13 Hz") &&
-               (panel->summary().contains("agrees") || panel->summary().contains("both")),
+  QVERIFY2(panel->summary().contains("The paper (Table 2): model 11 Hz, experiment 13 Hz"),
            qPrintable(panel->summary()));
   bool ok = false;
   const double maximum = table_value(panel, "maximum repetition frequency").toDouble(&ok);
   QVERIFY(ok);
   QVERIFY2(maximum > 8.0 && maximum < 15.0, qPrintable(QString::number(maximum)));
+  // the verdict the figures call for: within 1 Hz of 11–13 Hz agrees, above 14 Hz is above both
+  const QString verdict = maximum <= 14.0 ? "agrees" : "is above both (README, Limits)";
+  QVERIFY2(panel->summary().contains(verdict), qPrintable(panel->summary()));
+
   // the maximum is marked on the per-cycle plot and on the traces
   pat::ui::PlotPanel* strikes = plot_titled(panel, "Strikes per cycle");
   QVERIFY(strikes);

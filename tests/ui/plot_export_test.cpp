@@ -69,6 +69,14 @@ void PlotExportTest::a_narrow_plot_puts_its_legend_under_it() {
   angles_->grab();
   QVERIFY(!angles_->legend_below());
   QVERIFY(angles_->plot_area_rect().contains(angles_->legend_rect()));
+  // a picture of another size leaves the legend on screen where it was
+  pat::ui::export_plots({angles_.get()}, dir_.filePath("narrow.png"), QSize(200, 300));
+  QVERIFY(!angles_->legend_below());
+  angles_->resize(190, 260);
+  angles_->grab();
+  QVERIFY(angles_->legend_below());
+  pat::ui::export_plots({angles_.get()}, dir_.filePath("wide.png"), QSize(900, 300));
+  QVERIFY(angles_->legend_below());
 }
 
 // A 1600x1000 picture is the 800x500 one drawn twice as large (text and lines included), not

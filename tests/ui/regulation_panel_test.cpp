@@ -20,6 +20,7 @@
 #include "analyses_panel.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
+#include "io/csv.h"
 #include "main_window.h"
 #include "measurement_service.h"
 #include "model/preset_loader.h"
@@ -256,6 +257,17 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
     window.grab().save(shots + "/deregulation_demo.png");
     window.regulation()->grab().save(shots + "/deregulation_replay_panel.png");
   }
+  // the replay exported with every column: the screw's position frame by frame, not the live
+  // action's "regulated"
+  QTemporaryDir trace_dir;
+  const QString trace_path = trace_dir.filePath("replay.csv");
+  window.export_run_trace(trace_path.toStdString());
+  const pat::CsvTable trace = pat::read_csv(trace_path.toStdString());
+  const int screw = trace.column_index("hammer_blow_mm");
+  QVERIFY2(screw >= 0, "no hammer_blow_mm column");
+  QVERIFY(std::abs(trace.rows.back()[screw] - turned_mm) < 1e-6);
+  QCOMPARE(trace.rows.front()[screw], 0.0);
+  QVERIFY(trace.metadata.at("settings").rfind("changed during the run", 0) == 0);
   // back to the live action: its screw, movable, and its measured value
   window.start("");
   QVERIFY(wait_until([&] {
