@@ -566,7 +566,7 @@ void ActionView::paint_frame(QPainter& painter) {
 
   // a body's name a little further in, so that it is read whole
   const QRectF shown = named_area.adjusted(16, 16, -16, -16);
-  QFont body_font = label_font;
+  const QFontMetricsF body_metrics(label_font);
   for (int b = 0; b < model.dofs(); ++b) {
     const Body& body = model.bodies[b];
     // the joint is called "lever" (DESIGN.md); a technician calls the part the repetition lever
@@ -576,13 +576,11 @@ void ActionView::paint_frame(QPainter& painter) {
     // a close-up that leaves it out of view, the deepest point of what is in view
     std::optional<QPointF> inside;
     if (const std::optional<Vec2>& own = inner_point(b))
-      if (const QPointF at = to_screen(body_point(b, *own)); shown.contains(at) && nameable(at))
-        inside = at;
+      if (const QPointF at = to_screen(body_point(b, *own)); shown.contains(at)) inside = at;
     if (!inside) inside = deepest_point(body_shapes[b], shown);
     if (!inside) continue;  // out of the view
-    const QFontMetricsF metrics(body_font);
-    const QPointF centred(inside->x() - 0.5 * metrics.horizontalAdvance(name),
-                          inside->y() + 0.5 * (metrics.ascent() - metrics.descent()));
+    const QPointF centred(inside->x() - 0.5 * body_metrics.horizontalAdvance(name),
+                          inside->y() + 0.5 * (body_metrics.ascent() - body_metrics.descent()));
     Label label{centred, name, body_colour(body.name).darker(250), false, true, inside};
     label.body = b;
     labels.push_back(label);
