@@ -25,11 +25,9 @@ constexpr double kEscapementRoomPx = 4.0;
 constexpr int kBodyGroup = 1;
 
 // A point well inside a polygon (screen): of a 20 × 20 grid over its bounds, the one inside it
-// and inside `within` (not in `outside`) that lies farthest from its edges (depth counted up to
-// kDeepEnoughPx: of
+// and inside `within` that lies farthest from its edges (depth counted up to kDeepEnoughPx: of
 // equally deep points in a long bar, the one nearest its middle); empty when none does.
-std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& within,
-                                     const QRectF& outside = QRectF()) {
+std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& within) {
   if (polygon.size() < 3) return std::nullopt;
   const QRectF bounds = polygon.boundingRect();
   constexpr int kGrid = 20;
@@ -43,8 +41,7 @@ std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& wit
     for (int j = 0; j < kGrid; ++j) {
       const QPointF p(bounds.left() + bounds.width() * (i + 0.5) / kGrid,
                       bounds.top() + bounds.height() * (j + 0.5) / kGrid);
-      if (!within.contains(p) || outside.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill))
-        continue;
+      if (!within.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill)) continue;
       double depth = std::numeric_limits<double>::infinity();
       for (qsizetype k = 0; k < polygon.size(); ++k) {
         const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
@@ -65,6 +62,12 @@ std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& wit
   return best;
 }
 
+// Where the hammer meets the string: the strike point at rest carried to the string plane (m).
+Vec2 string_point_struck(const ActionLandmarks& marks) {
+  return marks.strike_point -
+         marks.string_normal.dot(marks.strike_point - marks.string_point) * marks.string_normal;
+}
+
 // a part named by a label in a close-up lies at least this far inside the view (px)
 constexpr double kNamedPointMarginPx = 4.0;
 /// The time and gap readout's font: the view's, 3 pt larger, bold.
@@ -82,8 +85,7 @@ double readout_band_px(const QFontMetricsF& readout_metrics) {
 // text on a translucent white box, readable over any part (cheaper than a stroked text path)
 void draw_label(QPainter& painter, const QPointF& at, const QString& text, const QColor& colour) {
   const QFontMetricsF metrics(painter.font());
-  const QRectF box(at.x() - 2, at.y() - metrics.ascent() - 1, metrics.horizontalAdvance(text) + 4,
-                   metrics.height() + 2);
+  const QRectF box = LabelPlacer::padded_box(at, metrics.horizontalAdvance(text), metrics);
   painter.setPen(Qt::NoPen);
   painter.setBrush(QColor(255, 255, 255, 190));
   painter.drawRoundedRect(box, 3, 3);
@@ -243,9 +245,8 @@ std::optional<ModelBox> ActionView::focus_region(const ActionModel& model, ViewF
   if (focus == ViewFocus::checking) {
     // the hammer head at rest and where it meets the string (the string in sight: the catch is
     // judged by its distance from it)
-    const double rest_gap = marks.string_normal.dot(marks.strike_point - marks.string_point);
     include(marks.strike_point, 0.0);
-    include(marks.strike_point - rest_gap * marks.string_normal, 0.0);
+    include(string_point_struck(marks), 0.0);
   }
   // room for the parts' motion during a blow: the jack and the knuckle or butt rise several mm
   // (the region is their size at rest); the checking region already spans the hammer's travel
@@ -523,7 +524,8 @@ void ActionView::paint_frame(QPainter& painter) {
              readout, QColor(20, 20, 20));
   if (!labels_) return;
 
-  // labels without overlap: parts first, then forces, then fixtures
+  // labels without overlap, in this order: the knuckle or butt, the bodies, the finger, the
+  // fixtures and adjusters, the forces, the rails
   LabelPlacer placer{QRectF(rect())};
   placer.reserve(QRectF(0, 0, width(), band));  // the readout's band, all of it
   for (const QPolygonF& shape : drawn_shapes) placer.avoid(shape);
@@ -665,13 +667,9 @@ void ActionView::paint_frame(QPainter& painter) {
   // close-up one outside the region it frames (the escapement's screws in its corner)
   if (close_up) {
     // the string named where the hammer meets it when its end is out of the region
-    const Vec2 struck = model.landmarks.strike_point -
-                        model.landmarks.string_normal.dot(model.landmarks.strike_point -
-                                                          model.landmarks.string_point) *
-                            model.landmarks.string_normal;
     for (Label& l : fixture_labels)
       if (l.text == "string" && l.feature && !nameable(*l.feature)) {
-        l.feature = to_screen(struck);
+        l.feature = to_screen(string_point_struck(model.landmarks));
         l.anchor = *l.feature + QPointF(6, -6);
       }
     const auto at_edge = [&](const Label& l) { return l.feature && !nameable(*l.feature); };
@@ -682,9 +680,9 @@ void ActionView::paint_frame(QPainter& painter) {
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());
   labels.insert(labels.end(), rail_labels.begin(), rail_labels.end());
-  // the points the parts' names point at (not the force arrows' tips): a name placed nearer
-  // another part's point than its own would name the wrong part
-  for (const Label& l : labels)  // the parts' names (not the bodies' nor the forces')
+  // the points the parts' names point at (not the bodies', added above, nor the force arrows'
+  // tips): a name placed nearer another part's point than its own would name the wrong part
+  for (const Label& l : labels)
     if (l.feature && l.body < 0 && l.key.isEmpty()) placer.add_feature(*l.feature);
   QFont small = label_font;
   small.setBold(false);
@@ -725,10 +723,8 @@ void ActionView::paint_frame(QPainter& painter) {
     offsets.insert(key, *at - l.anchor);
     drawn_labels_.push_back(l.text);
     drawn_label_details_.push_back(
-        {l.text,
-         QRectF(at->x(), at->y() - metrics.ascent(), metrics.horizontalAdvance(l.text),
-                metrics.height()),
-         l.feature, leader, l.body < 0 && l.key.isEmpty() && l.feature.has_value(), l.body});
+        {l.text, LabelPlacer::text_box(*at, metrics.horizontalAdvance(l.text), metrics), l.feature,
+         leader, l.body < 0 && l.key.isEmpty() && l.feature.has_value(), l.body});
   }
   label_offsets_ = offsets;
 }

@@ -84,8 +84,7 @@ std::optional<QPointF> LabelPlacer::place(const QPointF& anchor, const QString& 
   std::vector<QPointF> offsets;
   offsets.reserve(1 + std::size(near) + std::size(wider));
   // where it was, when its own place (the anchor) is taken: it goes back there once free
-  const QRectF at_anchor(anchor.x() - 2, anchor.y() - metrics.ascent() - 1, w + 4, h + 2);
-  if (previous && !is_free(at_anchor)) offsets.push_back(*previous);
+  if (previous && !is_free(padded_box(anchor, w, metrics))) offsets.push_back(*previous);
   for (const QPointF& offset : near) offsets.push_back(offset);
   if (keep_clear)
     for (const QPointF& offset : wider) offsets.push_back(offset);
@@ -94,7 +93,7 @@ std::optional<QPointF> LabelPlacer::place(const QPointF& anchor, const QString& 
   int best_covered = 0;
   for (const QPointF& offset : offsets) {
     const QPointF baseline = anchor + offset;
-    const QRectF box(baseline.x() - 2, baseline.y() - metrics.ascent() - 1, w + 4, h + 2);
+    const QRectF box = padded_box(baseline, w, metrics);
     if (!is_free(box)) continue;
     const int covered = keep_clear ? covered_points(box) : 0;
     if (!best || covered < best_covered) {
@@ -113,11 +112,11 @@ double LabelPlacer::named_cost(const QRectF& box, const QRectF& text_box, const 
   constexpr double kInfinite = std::numeric_limits<double>::infinity();
   if (!is_free(box)) return kInfinite;
   const QLineF leader = leader_to(feature, text_box);
-  const bool drawn = leader.length() > kMinLeaderPx;
-  double cost = leader.length();
-  if (leader.length() == 0.0 && !style.may_cover_point) cost += kCoversOwnPointCost;
+  const double own = leader.length();  // the text's distance from its point
+  const bool drawn = own > kMinLeaderPx;
+  double cost = own;
+  if (own == 0.0 && !style.may_cover_point) cost += kCoversOwnPointCost;
   // a label that sits nearer another named point than its own names the wrong part
-  const double own = distance_to_rect(feature, text_box);
   double nearest_other = kInfinite;
   for (const Feature& other : features_) {
     if (other.group != style.group || QLineF(other.point, feature).length() < 1.0)
@@ -147,8 +146,7 @@ std::optional<LabelPlacer::Placement> LabelPlacer::place_named(
     const QFontMetricsF& metrics, const NamedStyle& style, std::optional<QPointF> previous) {
   const double w = metrics.horizontalAdvance(text), h = metrics.height();
   const auto boxes = [&](const QPointF& baseline) {
-    return std::pair{QRectF(baseline.x() - 2, baseline.y() - metrics.ascent() - 1, w + 4, h + 2),
-                     QRectF(baseline.x(), baseline.y() - metrics.ascent(), w, h)};
+    return std::pair{padded_box(baseline, w, metrics), text_box(baseline, w, metrics)};
   };
   // the anchor first, then rings around the point: 16 directions, the text's nearest edge at
   // growing gaps from it

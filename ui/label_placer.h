@@ -7,10 +7,10 @@
 // A label that names a point of the drawing (place_named: a button, a screw, a force arrow) is
 // joined to it by a leader line when it sits away from it. Its position is the free one of least
 // cost, in screen pixels: the leader's length, plus penalties for a leader crossing another
-// leader or label, for a label nearer another named point than its own (the class would read it
-// as that part's name), and for covering the drawing. A label keeps its previous position (the
-// offset from its anchor at the last paint) while that costs little more than the best, so the
-// names do not jump between the frames of a moving action.
+// label, and for covering the drawing; crossed leaders and a label nearer another named point
+// than its own (the class would read it as that part's name) are refused. A label keeps its
+// previous position (the offset from its anchor at the last paint) while that costs little more
+// than the best, so the names do not jump between the frames of a moving action.
 #pragma once
 
 #include <QFontMetricsF>
@@ -89,6 +89,14 @@ class LabelPlacer {
 
   /// The leader from `feature` to the nearest point of `box` (a point, inside the box).
   static QLineF leader_to(const QPointF& feature, const QRectF& box);
+  /// Where a label's text lies (its left end, baseline, at `baseline`), and the same with the
+  /// margin of the white box drawn under it, which other labels keep off.
+  static QRectF text_box(const QPointF& baseline, double width, const QFontMetricsF& metrics) {
+    return {baseline.x(), baseline.y() - metrics.ascent(), width, metrics.height()};
+  }
+  static QRectF padded_box(const QPointF& baseline, double width, const QFontMetricsF& metrics) {
+    return text_box(baseline, width, metrics).adjusted(-2, -1, 2, 1);
+  }
 
  private:
   struct Shape {

@@ -149,10 +149,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
     hide_banner();
     plots_->clear();
-    if (!controller_->replaying()) replay_model_shown_.reset();
-    if (!controller_->replaying() && regulation_->replaying()) {  // the live action again
-      regulation_->set_replay(nullptr);
-      if (model_) regulation_->show_adjusters(*model_);
+    if (!controller_->replaying()) {
+      replay_model_shown_.reset();
+      if (regulation_->replaying()) {  // the live action again
+        regulation_->set_replay(nullptr);
+        if (model_) regulation_->show_adjusters(*model_);
+      }
     }
   });
   connect(view_, &ActionView::keyPlayed, controller_, &PlaybackController::play_key);
@@ -321,22 +323,8 @@ void MainWindow::build_menus() {
     });
   }
   exports->addAction(tr("Run &trace, every column (CSV)…"), this, [this] {
-    // the run pauses while the file is chosen, as for the plots
-    const bool was_playing = controller_->playing();
-    if (was_playing) controller_->pause();
-    QSettings settings;
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export the run trace"),
-                                     settings.value("export_folder").toString(), tr("CSV (*.csv)"));
-    if (was_playing) controller_->play();
-    if (path.isEmpty()) return;
-    try {
-      export_run_trace(path.toStdString());
-      settings.setValue("export_folder", QFileInfo(path).absolutePath());
-      statusBar()->showMessage(tr("Exported the run trace to %1").arg(path));
-    } catch (const std::exception& e) {
-      QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
-    }
+    export_to_chosen_file(tr("the run trace"), tr("CSV (*.csv)"), true,
+                          [this](const QString& path) { export_run_trace(path.toStdString()); });
   });
   exports->addAction(tr("Export &size…"), this,
                      [this] { export_size_ = ask_export_size(this, export_size_); });
@@ -777,19 +765,26 @@ void MainWindow::open_preset_from_menu() {
 
 void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QString& what,
                                   bool run_plots) {
+  export_to_chosen_file(
+      what, tr("PNG image (*.png);;PDF (*.pdf);;SVG (*.svg);;CSV of the visible range (*.csv)"),
+      run_plots, [&](const QString& path) {
+        export_plots(plots, path, export_size_, export_metadata(run_plots));
+      });
+}
+
+void MainWindow::export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
+                                       const std::function<void(const QString&)>& write) {
   // the run pauses while the file is chosen: what is written is what was on screen when Export
   // was chosen, not where the run had got to when the dialog closed
-  const bool was_playing = run_plots && controller_->playing();
+  const bool was_playing = pause_run && controller_->playing();
   if (was_playing) controller_->pause();
   QSettings settings;
-  const QString folder = settings.value("export_folder").toString();
   const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export %1").arg(what), folder,
-      tr("PNG image (*.png);;PDF (*.pdf);;SVG (*.svg);;CSV of the visible range (*.csv)"));
+      this, tr("Export %1").arg(what), settings.value("export_folder").toString(), filter);
   if (was_playing) controller_->play();
   if (path.isEmpty()) return;
   try {
-    export_plots(plots, path, export_size_, export_metadata(run_plots));
+    write(path);
     settings.setValue("export_folder", QFileInfo(path).absolutePath());
     statusBar()->showMessage(tr("Exported %1 to %2").arg(what, path));
   } catch (const std::exception& e) {

@@ -6,6 +6,7 @@
 
 #include <QMainWindow>
 #include <QSize>
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -113,6 +114,10 @@ class MainWindow : public QMainWindow {
   /// while the file is chosen, and a CSV names the input), not an analysis result's.
   void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
                         bool run_plots);
+  /// Asks for a file (filter `filter`; the run paused meanwhile when `pause_run`), writes it
+  /// with `write`, and says where, or in a dialog why not; `what` names it in both.
+  void export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
+                             const std::function<void(const QString&)>& write);
   void restore_settings();
   /// The regulation dock as wide as its panel's smallest layout (after an action or text size);
   /// `within_screen`: no wider than leaves the window on its screen.
