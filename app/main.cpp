@@ -66,9 +66,11 @@ usage:
 
 input SPEC:
   mass:1kg  force:const:N  force:pulse:N:MS  force:double:N:MS:GAP_MS
-  motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  csv:PATH
+  motion:sine:HZ[:full|half]  motion:chirp:F0:F1:SECONDS[:full|half]  motion:press:SECONDS
+  csv:PATH
   (N newtons down at the key front; MS held, with 1 ms ramps; GAP_MS from the end of the first
   pulse to the start of the second; full: rest to full dip, half: full dip to half release;
+  press: the technician's slow press, rest to full dip in SECONDS along a half cosine, then held;
   csv: time_s with key_force_n or key_angle_deg; a file starting after 0 s starts at rest)
 --set ADJUSTER=MM turns an adjuster MM mm from its regulated position (the sign as the preset's
   description of it says). grand: key_dip jack_position lever_height hammer_blow let_off drop

@@ -49,6 +49,11 @@ const Kind kKinds[] = {
       {"over (s)", 0.1, 120, 10, 1, 1}},
      3,
      true},
+    {"motion:press",
+     "slow press (to the bottom, held)",
+     {{"press (s)", 0.05, 10, 1, 0.1, 2}},
+     1,
+     false},
     {"csv", "force or motion from CSV", {}, 0, false},
 };
 constexpr int kKindCount = sizeof(kKinds) / sizeof(kKinds[0]);

@@ -444,6 +444,7 @@ void MainWindow::build_practice() {
   practice_dock_->hide();
   regulation_dock_->raise();  // the regulation tab in front, as before the practice tab joined
   connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
+  connect(practice_, &PracticePanel::testShown, this, &MainWindow::show_practice_test);
   // the regulation panel shows true adjuster positions and measured values, the analyses
   // measure every setting against its target: both hidden while an exercise runs; closing the
   // practice dock returns to the regulated action
@@ -546,6 +547,20 @@ void MainWindow::open_action(const std::string& name_or_path) {
   measure_current_model();
 }
 
+void MainWindow::show_practice_test(const QString& input, double duration_s) {
+  // a test watched as a class watches it: a forte blow's 0.3 s at 1/10 takes 3 s, the slow
+  // press's 1.4 s at 1/2 takes 2.8 s (at 1/10 it would drag on for 14 s)
+  constexpr double kShownTestWallSeconds = 4.0;
+  if (duration_s > 0.0) {
+    const auto& speeds = RunControls::speeds();  // fastest first
+    int chosen = 0;
+    for (int i = 0; i < static_cast<int>(speeds.size()); ++i)
+      if (duration_s / speeds[i] <= kShownTestWallSeconds) chosen = i;
+    run_controls_->set_speed_index(chosen);
+  }
+  start(input.toStdString());
+}
+
 void MainWindow::start(const std::string& spec) {
   if (!model_) return;
   // a CSV that cannot drive any run (missing, malformed, times running back) is refused here,
@@ -579,21 +594,25 @@ void MainWindow::start(const std::string& spec) {
 void MainWindow::show_run_status() {
   if (!model_) return;
   const QString name = QString::fromStdString(model_->name);
-  if (controller_->playing())
+  if (controller_->playing()) {
     statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_));
-  else if (controller_->run_stopped())
+    return;
+  }
+  // paused or stopped: what drove the frame shown (after a rewind, not the last blow struck);
+  // a replay's own words carry the settings of the frame shown
+  const double t =
+      controller_->has_frame() ? controller_->current_frame().t : controller_->display_time();
+  const QString input = controller_->replaying() ? running_input_ : controller_->input_at(t);
+  if (controller_->run_stopped())
     statusBar()->showMessage(tr("Stopped at t = %1 ms (%2 with %3): see the message above the "
                                 "action; Start from rest runs again")
                                  .arg(controller_->display_time() * 1e3, 0, 'f', 2)
-                                 .arg(name, running_input_));
+                                 .arg(name, input));
   else
     statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
                                 "Step back move one frame")
-                                 .arg((controller_->has_frame() ? controller_->current_frame().t
-                                                                : controller_->display_time()) *
-                                          1e3,
-                                      0, 'f', 2)
-                                 .arg(name, running_input_));
+                                 .arg(t * 1e3, 0, 'f', 2)
+                                 .arg(name, input));
 }
 
 void MainWindow::set_adjuster(const std::string& name, double mm) {
@@ -803,7 +822,9 @@ std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) c
   if (run_plots) {
     metadata["settings"] =
         practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
-    metadata["input"] = running_input_.toStdString();
+    // every input of the run the plots hold: a blow struck into it is part of its record
+    metadata["input"] =
+        (controller_->replaying() ? running_input_ : controller_->inputs_text()).toStdString();
   }
   return metadata;
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace pat::ui {
 namespace {
@@ -51,7 +52,8 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   worker_->take_frames();
   worker_->set_sample_interval(sample_interval());
   key_played_ = false;
-  emit inputChanged(input_spec.empty() ? tr("no finger") : QString::fromStdString(input_spec));
+  inputs_.clear();
+  note_input(0.0, input_spec.empty() ? tr("no finger") : QString::fromStdString(input_spec));
   const RunSetup setup{model_, input_spec, run_id_};
   QMetaObject::invokeMethod(
       worker_, [w = worker_, setup] { w->start_run(setup); }, Qt::QueuedConnection);
@@ -72,11 +74,32 @@ void PlaybackController::replay(std::vector<Frame> frames) {
   has_frame_ = false;
   emit runRestarted();
   key_played_ = false;
-  emit inputChanged(tr("a recorded replay"));
+  inputs_.clear();
+  note_input(-std::numeric_limits<double>::infinity(), tr("a recorded replay"));
   if (history_.empty()) return;
   model_ = history_.at(0).model;
   show_time(history_.first_time());
   play();
+}
+
+void PlaybackController::note_input(double from_t, const QString& what) {
+  inputs_.push_back({from_t, what});
+  emit inputChanged(what);
+}
+
+QString PlaybackController::input_at(double t) const {
+  // the last input that had started by t (the first, if t lies before every one)
+  QString what = inputs_.empty() ? QString() : inputs_.front().second;
+  for (const auto& [from_t, text] : inputs_)
+    if (from_t <= t) what = text;
+  return what;
+}
+
+QString PlaybackController::inputs_text() const {
+  QStringList parts;
+  for (const auto& [from_t, text] : inputs_)
+    parts << (parts.isEmpty() ? text : tr("from t = %1 s %2").arg(from_t, 0, 'f', 4).arg(text));
+  return parts.join("; ");
 }
 
 void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) {
@@ -92,13 +115,14 @@ void PlaybackController::strike(const std::string& force_spec) {
   seek(history_.last_time());
   worker_->request_blow(force_spec);
   key_played_ = false;
-  emit inputChanged(tr("a blow struck (%1)").arg(QString::fromStdString(force_spec)));
+  note_input(history_.last_time(),
+             tr("a blow struck (%1)").arg(QString::fromStdString(force_spec)));
   play();
 }
 
 void PlaybackController::play_key(double angle_rad) {
   if (stopped_ || replay_) return;
-  if (!key_played_) emit inputChanged(tr("the key played with the mouse"));
+  if (!key_played_) note_input(history_.last_time(), tr("the key played with the mouse"));
   key_played_ = true;
   if (!playing_) {
     seek(history_.last_time());

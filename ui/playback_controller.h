@@ -10,6 +10,8 @@
 #include <QThread>
 #include <QTimer>
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include "frame_history.h"
 #include "simulation_worker.h"
@@ -60,6 +62,11 @@ class PlaybackController : public QObject {
   const Frame& current_frame() const { return current_; }
   bool has_frame() const { return has_frame_; }
   bool run_stopped() const { return stopped_; }
+  /// What drove the key at simulated time `t` of this run, in inputChanged's words: the run's
+  /// input, or a blow struck or the mouse's play from the time it began.
+  QString input_at(double t) const;
+  /// Every input of this run in order: "force:pulse:20:40; from t = 1.2345 s a blow struck (…)".
+  QString inputs_text() const;
   /// Redraw timer ticks that showed a new frame, and their count per wall second (measured).
   double redraw_rate_hz() const { return redraw_rate_hz_; }
 
@@ -87,6 +94,8 @@ class PlaybackController : public QObject {
 
  private:
   void drain();
+  /// Records what drives the key from simulated time `from_t` on, and says so (inputChanged).
+  void note_input(double from_t, const QString& what);
   void show_time(double t);
   double sample_interval() const;
 
@@ -104,6 +113,7 @@ class PlaybackController : public QObject {
   bool stopped_ = false;
   bool replay_ = false;      // frames from an analysis: no worker behind them
   bool key_played_ = false;  // the mouse drives the key since the last run start or blow
+  std::vector<std::pair<double, QString>> inputs_;  // (from simulated time, what), in order
   double speed_ = 0.1;
   double display_time_ = 0.0;
   double passed_time_ = -1.0;  // frames up to here went to framesPassed

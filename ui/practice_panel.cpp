@@ -68,7 +68,8 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   // or the score shows wherever the trainee has scrolled to
   auto* outer = new QVBoxLayout(this);
   outer->setContentsMargins(0, 0, 0, 0);
-  auto* scroll = new QScrollArea(this);
+  auto* scroll = scroll_ = new QScrollArea(this);
+  scroll->setObjectName("practice_scroll");
   auto* content = new QWidget;
   auto* column = new QVBoxLayout(content);
 
@@ -169,6 +170,8 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   connect(reveal_button_, &QPushButton::clicked, this, &PracticePanel::reveal_answer);
 
   auto* correct_box = new QGroupBox(tr("Correction (relative moves; true positions hidden)"), this);
+  correct_box->setObjectName("correction_box");
+  correction_box_ = correct_box;
   auto* correct_layout = new QVBoxLayout(correct_box);
   adjusters_box_ = new QWidget(correct_box);
   adjusters_box_->setLayout(new QFormLayout);
@@ -228,7 +231,9 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
               symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
             symptoms_->scrollToBottom();
             append_history();
-            show_status(tr("%1 done (%2 tests used).").arg(name).arg(session_->tests_used()));
+            const int used = session_->tests_used();
+            show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
+                                  : tr("%1 done (%2 tests used).").arg(name).arg(used));
           });
   connect(runner_, &PracticeRunner::measured, this,
           [this](const std::vector<CorrectionReading>& readings) {
@@ -378,6 +383,13 @@ void PracticePanel::run_test(PracticeTest test) {
   if (!session_ || runner_->running()) return;
   set_busy(true);
   progress_->setValue(0);
+  const ShownTest shown = shown_test(test);
+  emit testShown(QString::fromStdString(shown.input), shown.duration_s);
+  show_status(test == PracticeTest::Rest
+                  ? tr("%1: the action rests on screen while it is measured.").arg(test_title(test))
+                  : tr("%1: the action on screen plays it from rest while its readings are "
+                       "taken.")
+                        .arg(test_title(test)));
   runner_->observe(std::make_shared<const ActionModel>(session_->current_model()), regulated_,
                    test);
 }
@@ -389,6 +401,8 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
   for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
   show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
               " " + remarks.join("; "));
+  // the sliders lie below the answer: brought into view for the instruction just given
+  if (j.correct) scroll_->ensureWidgetVisible(correction_box_, 0, 0);
   append_history();
   return j;
 }

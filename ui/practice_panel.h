@@ -18,6 +18,7 @@ class QLabel;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 class QSlider;
 class QSpinBox;
 
@@ -67,6 +68,9 @@ class PracticePanel : public QWidget {
   /// panel, whose values would give the answer away.
   void practiceActive(bool active);
   void scored(double total);
+  /// A test started: the window plays it on the action from rest, under `input` (an input SPEC,
+  /// "" = no finger), in which the test takes `duration_s` of simulated time.
+  void testShown(const QString& input, double duration_s);
 
  private:
   void begin(Exercise exercise, ActionModel regulated);
@@ -106,6 +110,8 @@ class PracticePanel : public QWidget {
   QPushButton* reveal_button_;
   QPushButton* finish_button_;
   QPushButton* export_button_;
+  QScrollArea* scroll_ = nullptr;
+  QWidget* correction_box_ = nullptr;  ///< the sliders and the finish button
   QWidget* adjusters_box_;
   std::map<std::string, QSlider*> sliders_;
   std::map<std::string, QLabel*> moved_labels_;

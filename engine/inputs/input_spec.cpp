@@ -33,8 +33,8 @@ namespace {
 constexpr double kRampS = 1e-3;  // force pulse ramps up and down in 1 ms
 
 constexpr const char* kKnownSpecs =
-    "expected mass:, force:const:, force:pulse:, force:double:, motion:sine:, motion:chirp: or "
-    "csv:";
+    "expected mass:, force:const:, force:pulse:, force:double:, motion:sine:, motion:chirp:, "
+    "motion:press: or csv:";
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -127,6 +127,29 @@ class MotionInput : public InputBase {
   using InputBase::InputBase;
   bool is_motion() const override { return true; }
   double force_n(double) const override { return 0.0; }
+};
+
+// The key pressed from rest to full dip along a half cosine in duration_s, then held there (the
+// technician's slow press).
+class PressMotion final : public MotionInput {
+ public:
+  PressMotion(std::string spec, double depth, double duration_s)
+      : MotionInput(std::move(spec)),
+        depth_(depth),
+        omega_(kPi / duration_s),
+        duration_s_(duration_s) {}
+
+  KeyMotionSample motion(double t) const override {
+    if (t < 0.0) return {};
+    if (t >= duration_s_) return {depth_, 0.0, 0.0};
+    const double half_depth = 0.5 * depth_, c = std::cos(omega_ * t), s = std::sin(omega_ * t);
+    return {half_depth * (1.0 - c), half_depth * omega_ * s, half_depth * omega_ * omega_ * c};
+  }
+
+ private:
+  double depth_;       // rad from rest: full dip
+  double omega_;       // rad/s: half a cosine period in the press
+  double duration_s_;  // s
 };
 
 // A point mass resting on the key front; no applied force.
@@ -512,6 +535,15 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
     const bool half = f.size() == 6 && parse_stroke(spec, f[5]);
     require_full_dip(spec, context);
     return std::make_unique<StrokeMotion>(spec, context.full_dip_angle_rad, f0, f1, seconds, half);
+  }
+
+  if (kind == "motion" && sub == "press") {
+    const std::string form = "expected motion:press:SECONDS (seconds to full dip)";
+    if (f.size() != 3) spec_error(spec, form);
+    const double seconds = parse_field(spec, f[2], form);
+    require_positive(spec, seconds, "the press duration SECONDS", "s");
+    require_full_dip(spec, context);
+    return std::make_unique<PressMotion>(spec, context.full_dip_angle_rad, seconds);
   }
 
   throw InputError("unknown input SPEC '" + spec + "' (" + kKnownSpecs + ")");

@@ -70,6 +70,9 @@ struct InputContext {
 ///                                the same with the phase φ(t) = 2π(F0 t + (F1−F0) t²/(2 SECONDS)),
 ///                                frequency held at F1 after SECONDS; half mode: the first descent
 ///                                is a half period at F0, then φ counts from t0 = 1/(2 F0)
+///   motion:press:SECONDS         the technician's slow press: the key goes from rest to full dip
+///                                along a half cosine in SECONDS, angle = A/2 (1 − cos πt/SECONDS),
+///                                and is held at full dip after it
 ///   csv:PATH                     a CSV (io/csv.h) with time_s and either key_force_n (force) or
 ///                                key_angle_deg (motion); force is interpolated linearly, the angle
 ///                                with a natural cubic spline (which gives rate and acceleration);

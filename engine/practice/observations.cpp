@@ -1,11 +1,13 @@
 #include "practice/observations.h"
 
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <sstream>
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "inputs/key_input.h"
 #include "regulation/measurements.h"
 #include "regulation/technician_tests.h"
@@ -131,8 +133,8 @@ std::vector<Observation> forte_blow_test(const ActionModel& model, const RestSta
                                          ProgressReporter* progress) {
   // the technician's forte blow (technician_tests.h): the same steps read the same catch
   const SimulationOptions options = forte_blow_options();
-  std::shared_ptr<const KeyInput> input = parse_input_spec(
-      "force:const:" + std::to_string(kForteBlowNewtons), input_context(model, rest));
+  std::shared_ptr<const KeyInput> input =
+      parse_input_spec(forte_blow_spec(), input_context(model, rest));
   Simulator sim(borrow(model), input, options, &rest);
   int strikes = 0;
   double impact_velocity = 0.0, caught_gap = NAN;
@@ -191,11 +193,15 @@ std::string repetition_id(double hz) {
   return id.str();
 }
 
+std::string repetition_spec(double hz) {
+  return "motion:sine:" + format_number(hz, 12) + ":full";
+}
+
 Observation repetition_at(const ActionModel& model, const RestState& rest, double hz) {
-  std::ostringstream label, spec;
+  std::ostringstream label;
   label << "strikes per key cycle, repeated notes at " << hz << " Hz";
-  spec << "motion:sine:" << hz << ":full";
-  const std::unique_ptr<KeyInput> input = parse_input_spec(spec.str(), input_context(model, rest));
+  const std::unique_ptr<KeyInput> input =
+      parse_input_spec(repetition_spec(hz), input_context(model, rest));
   SimulationOptions options;
   options.sample_interval_s = 0.0;
   options.duration_s = kRepetitionCycles / hz;
@@ -232,6 +238,22 @@ PracticeTest parse_test(const std::string& name) {
     if (test_name(t) == name) return t;
   throw InputError("unknown test '" + name +
                    "' (expected rest, slow_press, forte_blow or repetition)");
+}
+
+ShownTest shown_test(PracticeTest test) {
+  switch (test) {
+    case PracticeTest::Rest:
+      return {};
+    case PracticeTest::SlowPress:
+      return {slow_press_spec(), kSlowPressSeconds + kSlowPressHoldSeconds};
+    case PracticeTest::ForteBlow:
+      return {forte_blow_spec(), kForteHoldSeconds};
+    case PracticeTest::Repetition: {
+      const double hz = std::end(kRepetitionFrequencies)[-1];
+      return {repetition_spec(hz), kRepetitionCycles / hz};
+    }
+  }
+  return {};
 }
 
 std::vector<PracticeTest> all_tests() {

@@ -34,6 +34,15 @@ enum class PracticeTest { Rest, SlowPress, ForteBlow, Repetition };
 std::string test_name(PracticeTest test);
 /// Parses a test identifier; throws InputError naming the tests.
 PracticeTest parse_test(const std::string& name);
+/// How the window shows a test on the action while it is read: a run from rest under `input`
+/// (an input SPEC, "" = no finger) in which the test takes `duration_s`.
+struct ShownTest {
+  std::string input;
+  double duration_s = 0.0;
+};
+/// rest: the action at rest; slow_press and forte_blow: their own inputs and durations;
+/// repetition: its fastest note (kRepetitionFrequencies' last, where a fault shows first).
+ShownTest shown_test(PracticeTest test);
 /// Every test, in the order a technician runs them.
 std::vector<PracticeTest> all_tests();
 

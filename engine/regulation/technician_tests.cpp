@@ -16,26 +16,6 @@
 namespace pat {
 namespace {
 
-/// The key pressed from rest to `depth` (rad) along a half cosine in `duration`, then held.
-class SlowPressMotion final : public KeyInput {
- public:
-  SlowPressMotion(double depth, double duration)
-      : depth_(depth), duration_(duration), spec_("slow press") {}
-  bool is_motion() const override { return true; }
-  double force_n(double) const override { return 0.0; }
-  KeyMotionSample motion(double t) const override {
-    if (t >= duration_) return {depth_, 0.0, 0.0};
-    const double w = M_PI / duration_;
-    return {0.5 * depth_ * (1.0 - std::cos(w * t)), 0.5 * depth_ * w * std::sin(w * t),
-            0.5 * depth_ * w * w * std::cos(w * t)};
-  }
-  const std::string& spec() const override { return spec_; }
-
- private:
-  double depth_, duration_;
-  std::string spec_;
-};
-
 /// The value of a quantity (before → after over a step) where a gap (gap_before → gap_after)
 /// closed or opened: linear in the step.
 double at_crossing(double before, double after, double gap_before, double gap_after) {
@@ -57,6 +37,14 @@ constexpr double kClearFall = 1.0e-3;
 
 }  // namespace
 
+std::string slow_press_spec() {
+  return "motion:press:" + format_number(kSlowPressSeconds, 12);
+}
+
+std::string forte_blow_spec() {
+  return "force:const:" + format_number(kForteBlowNewtons, 12);
+}
+
 double contact_gap(const ActionModel& model, int contact_index, const DofVector& q) {
   ActionDynamics dynamics(model, nullptr);
   std::vector<double> penetration;
@@ -76,7 +64,7 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
   options.integrator_options.absolute_tolerance = 1e-9;
   options.integrator_options.max_step_s = 2e-3;
   options.sample_interval_s = 0.0;
-  auto input = std::make_shared<SlowPressMotion>(depth, kSlowPressSeconds);
+  std::shared_ptr<const KeyInput> input = parse_input_spec(slow_press_spec(), {depth});
   Simulator sim(borrow(model), input, options, &rest);
   auto gap_of = [&sim](int contact) { return -sim.contact_penetrations()[contact]; };
 
@@ -284,8 +272,7 @@ SimulationOptions forte_blow_options() {
 ForteBlowReading forte_blow(const ActionModel& model, const RestState& rest) {
   const SimulationOptions options = forte_blow_options();
   const InputContext context = input_context(model, rest);
-  std::shared_ptr<const KeyInput> input =
-      parse_input_spec("force:const:" + std::to_string(kForteBlowNewtons), context);
+  std::shared_ptr<const KeyInput> input = parse_input_spec(forte_blow_spec(), context);
   Simulator sim(borrow(model), input, options, &rest);
   ForteBlowReading reading;
   bool struck = false;

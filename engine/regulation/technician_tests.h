@@ -73,6 +73,8 @@ struct SlowPressReading {
 /// this time, then is held while the hammer settles.
 inline constexpr double kSlowPressSeconds = 1.0;
 inline constexpr double kSlowPressHoldSeconds = 0.4;
+/// The slow press as an input SPEC (motion:press:SECONDS, inputs/key_input.h).
+std::string slow_press_spec();
 
 /// Presses the key slowly (quasi-static: the hammer's speed stays below ~0.05 m/s) to full dip
 /// and holds it. `damper_contact` (-1: none) is the contact whose first touch marks the damper
@@ -91,6 +93,8 @@ struct ForteBlowReading {
 
 /// Force of the forte blow (N at the key front, held so that the key stays down).
 inline constexpr double kForteBlowNewtons = 40.0;
+/// The forte blow as an input SPEC (force:const:N).
+std::string forte_blow_spec();
 /// How long the forte blow is followed, key held (s): strike, rebound and check settle in it.
 inline constexpr double kForteHoldSeconds = 0.3;
 

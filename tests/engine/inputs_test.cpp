@@ -255,6 +255,30 @@ TEST(MotionInput, HalfChirpStartsWithAHalfPeriodAtF0) {
   }
 }
 
+TEST(MotionInput, SlowPressReachesFullDipAlongAHalfCosineAndHolds) {
+  const double seconds = 0.8, w = kPi / seconds;
+  const auto input = parse("motion:press:0.8");
+  EXPECT_TRUE(input->is_motion());
+  EXPECT_EQ(input->spec(), "motion:press:0.8");
+  EXPECT_EQ(input->motion(0.0).angle, 0.0);
+  EXPECT_EQ(input->motion(0.0).rate, 0.0);  // starts from rest: no jerk of the key
+  EXPECT_NEAR(input->motion(0.5 * seconds).angle, 0.5 * kFullDip, 1e-15);
+  EXPECT_NEAR(input->motion(0.5 * seconds).rate, 0.5 * kFullDip * w, 1e-15);  // fastest here
+  EXPECT_NEAR(input->motion(seconds * (1 - 1e-9)).angle, kFullDip, 1e-15);
+  for (double t : {seconds, seconds + 0.1, 5.0}) {  // held at full dip
+    EXPECT_EQ(input->motion(t).angle, kFullDip);
+    EXPECT_EQ(input->motion(t).rate, 0.0);
+    EXPECT_EQ(input->motion(t).acceleration, 0.0);
+  }
+  for (double t = 0.0013; t < seconds - 1e-3; t += 0.0237)
+    expect_consistent_derivatives(*input, t, third_bound(w, 0), fourth_bound(w, 0));
+  double previous = -1.0;
+  for (double t = 0.0; t < 1.2; t += 1e-3) {
+    EXPECT_GE(input->motion(t).angle, previous) << "the press never lifts the key, t = " << t;
+    previous = input->motion(t).angle;
+  }
+}
+
 TEST(CubicSpline, ReproducesACubicsDerivativesAwayFromTheEnds) {
   // p(x) = 1 + 2x − 3x² + x³/2 on [0, 4]. The natural end condition (p'' = 0) is wrong by
   // |p''| = 6 at both ends; that error decays by a factor 2 − √3 ≈ 0.27 per knot, so 20 knots
@@ -450,7 +474,7 @@ TEST(InputSpec, BadSpecsSayWhatIsExpected) {
        "input SPEC 'force:pulse:20': expected force:pulse:N:MS (newtons, milliseconds)"},
       {"foo:1",
        "unknown input SPEC 'foo:1' (expected mass:, force:const:, force:pulse:, force:double:, "
-       "motion:sine:, motion:chirp: or csv:)"},
+       "motion:sine:, motion:chirp:, motion:press: or csv:)"},
       {"", "unknown input SPEC ''"},
       {"force:push:3", "unknown input SPEC 'force:push:3'"},
       {"force:const", "expected force:const:N (newtons)"},
@@ -475,6 +499,10 @@ TEST(InputSpec, BadSpecsSayWhatIsExpected) {
       {"motion:chirp:1:-10:1", "the end frequency F1 must be positive"},
       {"motion:chirp:1:10:0", "the sweep duration SECONDS must be positive (got 0 s)"},
       {"motion:chirp:1:10:1:up", "unknown stroke 'up'"},
+      {"motion:press", "expected motion:press:SECONDS (seconds to full dip)"},
+      {"motion:press:1:2", "expected motion:press:SECONDS"},
+      {"motion:press:0", "the press duration SECONDS must be positive (got 0 s)"},
+      {"motion:press:x", "expected motion:press:SECONDS"},
       {"csv:", "expected csv:PATH"},
   };
   for (const Case& c : cases) {
@@ -483,6 +511,8 @@ TEST(InputSpec, BadSpecsSayWhatIsExpected) {
   }
   const std::string no_dip = spec_error("motion:sine:5", InputContext{});
   EXPECT_TRUE(contains(no_dip, "full-dip angle")) << no_dip;
+  const std::string press_no_dip = spec_error("motion:press:1", InputContext{});
+  EXPECT_TRUE(contains(press_no_dip, "full-dip angle")) << press_no_dip;
 }
 
 TEST(InputSpec, NumbersAreLocaleIndependentAndSpacesAreIgnored) {

@@ -5,6 +5,7 @@
 // (domain.md section 3) where the table gives one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <map>
@@ -18,6 +19,7 @@
 #include "practice/observations.h"
 #include "practice/symptoms.h"
 #include "regulation/measurements.h"
+#include "regulation/technician_tests.h"
 #include "test_support.h"
 
 namespace pat {
@@ -228,6 +230,53 @@ TEST(PracticeObservations, AgreeWithTheTechniciansMeasurements) {
   // the regulated action has no symptom compared with itself
   EXPECT_TRUE(describe_symptoms(seen, seen).empty());
   EXPECT_FALSE(differ_measurably(seen, seen));
+}
+
+// The window plays each test while its readings are computed (shown_test): what the
+// trainee watches must be the test that was read. The slow press and the forte blow played with
+// the window's W-method give the readings of the technician's own CVODE runs: 0.05 mm is the
+// regulation tolerance (the W-method's hammer wanders by a few hundredths of a millimetre, F8),
+// 2 % of the strike speed the W-method's error on a blow (F8 aims at 0.5 % of the range).
+TEST(PracticeObservations, TheInputShownForEachTestIsTheTestThatWasRead) {
+  EXPECT_EQ(shown_test(PracticeTest::Rest).input, "");
+  EXPECT_EQ(shown_test(PracticeTest::SlowPress).input, "motion:press:1");
+  EXPECT_EQ(shown_test(PracticeTest::ForteBlow).input, "force:const:40");
+  EXPECT_EQ(shown_test(PracticeTest::Repetition).input, "motion:sine:12:full");
+  EXPECT_DOUBLE_EQ(shown_test(PracticeTest::Repetition).duration_s, 4.0 / 12.0);  // four cycles
+  for (const std::string action : {"grand", "upright"}) {
+    SCOPED_TRACE(action);
+    const ActionModel model = test::shipped(action);
+    const RestState rest = find_rest_state(model);
+    std::vector<Observation> seen = run_test(model, rest, PracticeTest::SlowPress);
+    const std::vector<Observation> blow = run_test(model, rest, PracticeTest::ForteBlow);
+    seen.insert(seen.end(), blow.begin(), blow.end());
+
+    const ShownTest shown_press = shown_test(PracticeTest::SlowPress);
+    const SimulationResult press = test::run(model, shown_press.input, shown_press.duration_s);
+    ASSERT_EQ(press.status, "ok") << press.stop_cause;
+    // let-off is the closest approach while the jack carries the hammer: up to the escapement
+    // (the upright's hammer, thrown free at 0.2 m/s, flies on 1 mm nearer)
+    const auto escapes = test::events_of(press, "escapement");
+    ASSERT_FALSE(escapes.empty());
+    const std::vector<double> t_s = press.trace.column("time_s");
+    const std::vector<double> gap_mm = press.trace.column("hammer_string_gap_mm");
+    double closest_mm = gap_mm.front();
+    for (std::size_t i = 0; i < t_s.size() && t_s[i] <= escapes[0]->t; ++i)
+      closest_mm = std::min(closest_mm, gap_mm[i]);
+    EXPECT_NEAR(closest_mm, *find_observation(seen, "slow_press.escapement_distance_mm")->value,
+                0.05);
+    if (action == "grand")
+      EXPECT_NEAR(gap_mm.back(), *find_observation(seen, "slow_press.held_distance_mm")->value,
+                  0.05);
+
+    const ShownTest shown_blow = shown_test(PracticeTest::ForteBlow);
+    const SimulationResult forte = test::run(model, shown_blow.input, shown_blow.duration_s);
+    ASSERT_EQ(forte.status, "ok") << forte.stop_cause;
+    const auto impacts = test::events_of(forte, "impact");
+    ASSERT_EQ(impacts.size(), 1u);
+    const double read_mps = *find_observation(seen, "forte_blow.impact_speed_mps")->value;
+    EXPECT_NEAR(impacts[0]->hammer_velocity, read_mps, 0.02 * read_mps);
+  }
 }
 
 // A jack that never escapes in a slow press is seen for what it is: the escapement cannot be

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QShortcut>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -17,17 +18,21 @@
 #include <QWheelEvent>
 
 #include "core/error.h"
+#include "input_spec_form.h"
 #include "main_window.h"
 #include "measurement_service.h"
+#include "playback_controller.h"
 #include "practice/exercise.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
+#include "run_controls.h"
 #include "setting_names.h"
 #include "step_slider.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
 using pat::ui::PracticePanel;
+using pat::ui::RunControls;
 using pat::ui::test::wait_until;
 
 class PracticePanelTest : public QObject {
@@ -98,9 +103,34 @@ void PracticePanelTest::walk_through_an_exercise() {
   // a frozen window would show one long gap the length of the test (hundreds of ms or more);
   // 250 ms leaves room for a loaded CI machine
   QVERIFY2(longest_gap_ms < 250, qPrintable(QString::number(longest_gap_ms)));
-  panel->run_test(pat::PracticeTest::Rest);
+  // the action on screen plays the test from rest (the trainee watches what was read), slowed
+  // so that its 0.3 s take 3 s
+  auto* input_form = window.run_controls()->input_form();
+  auto shown_speed = [&] { return RunControls::speeds()[window.run_controls()->speed_index()]; };
+  QCOMPARE(input_form->spec(), std::string("force:const:40"));
+  QCOMPARE(shown_speed(), 0.1);
+  auto key_moves = [&] {
+    return wait_until(
+        [&] {
+          const auto& frame = window.controller()->current_frame();
+          return window.controller()->has_frame() && frame.q[0] > 1e-3;  // key down (rad)
+        },
+        20000);
+  };
+  QVERIFY(key_moves());
+  // the slow press at 1/2: its 1.4 s in 2.8 s, not 14 s
+  panel->run_test(pat::PracticeTest::SlowPress);
+  QCOMPARE(input_form->spec(), std::string("motion:press:1"));
+  QCOMPARE(shown_speed(), 0.5);
+  QVERIFY(key_moves());
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
-  QCOMPARE(panel->session()->tests_used(), 2);
+  // the rest geometry: the action at rest, no finger, at the speed the class chose
+  window.run_controls()->set_speed_index(4);
+  panel->run_test(pat::PracticeTest::Rest);
+  QCOMPARE(input_form->spec(), std::string());
+  QCOMPARE(window.run_controls()->speed_index(), 4);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  QCOMPARE(panel->session()->tests_used(), 3);
   const QString symptoms = panel->symptom_lines().join("\n");
   QVERIFY2(!panel->symptom_lines().isEmpty(), qPrintable(panel->status_text()));
   // key dip +1 mm of punching (shallower) and the backcheck bent toward the hammer
@@ -125,6 +155,17 @@ void PracticePanelTest::walk_through_an_exercise() {
   choose("second_direction", QString::fromStdString(answers[1].direction));
   QTest::mouseClick(panel->findChild<QPushButton*>("answer_button"), Qt::LeftButton);
   QVERIFY2(panel->status_text().startsWith("Correct"), qPrintable(panel->status_text()));
+  // "now correct it with the sliders": the sliders, below the answer, are scrolled into view
+  {
+    auto* scroll = panel->findChild<QScrollArea*>("practice_scroll");
+    auto* sliders = panel->findChild<QWidget*>("correction_box");
+    QVERIFY(scroll && sliders);
+    const QRect viewport = scroll->viewport()->rect();
+    const QRect box(sliders->mapTo(scroll->viewport(), QPoint(0, 0)), sliders->size());
+    QVERIFY2(viewport.contains(box.topLeft()) && box.top() < viewport.bottom() - 100,
+             qPrintable(
+                 QString("box top %1, viewport height %2").arg(box.top()).arg(viewport.height())));
+  }
   QVERIFY(!panel->request_hint().isEmpty());
 
   // closed and reopened mid-exercise, the exercise goes on with its answer hidden again (the

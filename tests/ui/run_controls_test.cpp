@@ -114,6 +114,22 @@ void RunControlsTest::pause_step_and_rewind() {
   for (const PlotPanel* panel : window.plots()->panels())
     QCOMPARE(panel->time_mark().value_or(-1.0), c->current_frame().t);
 
+  // a blow struck later: paused on its frames the status names the blow; rewound to the start,
+  // it names the input that drove the frames shown there
+  const double struck_at = c->history().last_time();
+  c->strike("force:pulse:10:20");
+  QVERIFY(wait_until([&] { return c->display_time() > struck_at + 0.002; }));
+  c->pause();
+  QVERIFY2(window.statusBar()->currentMessage().contains("with a blow struck (force:pulse:10:20)"),
+           qPrintable(window.statusBar()->currentMessage()));
+  // an exported plot's record names both inputs of its run, the blow with its start
+  const std::string inputs = window.export_metadata(true).at("input");
+  QVERIFY2(inputs.rfind("force:pulse:20:40; from t = ", 0) == 0 &&
+               inputs.find(" s a blow struck (force:pulse:10:20)") != std::string::npos,
+           inputs.c_str());
+  c->rewind();
+  QVERIFY2(window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
+           qPrintable(window.statusBar()->currentMessage()));
   c->rewind();
   QCOMPARE(c->current_frame().t, c->history().first_time());
   QCOMPARE(c->current_frame().t, 0.0);
