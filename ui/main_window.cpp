@@ -483,6 +483,7 @@ void MainWindow::show_practice(bool on) {
   practice_dock_->setVisible(on);
   if (on) {
     practice_dock_->raise();
+    if (model_) practice_->offer_action(model_->kind);  // the form starts on the action shown
     practice_->resume();  // an exercise left running goes on: its answer stays hidden
   } else {
     end_practice();

@@ -76,6 +76,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   auto* start_box = new QGroupBox(tr("Exercise"), this);
   auto* start_form = new QFormLayout(start_box);
   action_ = new QComboBox(start_box);
+  action_->setObjectName("practice_action");
   action_->addItems({"grand", "upright"});
   seed_ = new QSpinBox(start_box);
   seed_->setRange(0, 1000000);
@@ -439,6 +440,12 @@ void PracticePanel::resume() {
   if (!session_ || session_->final_score()) return;
   emit practiceActive(true);
   emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
+}
+
+void PracticePanel::offer_action(const std::string& kind) {
+  if (session_ && !session_->final_score()) return;
+  const int index = action_->findText(QString::fromStdString(kind));
+  if (index >= 0) action_->setCurrentIndex(index);
 }
 
 void PracticePanel::move_adjuster(const std::string& setting, double delta_mm) {

@@ -46,6 +46,9 @@ class PracticePanel : public QWidget {
   /// Shows a running exercise again (the practice mode reopened): practiceActive(true) and the
   /// hidden action as corrected so far; nothing when none was started.
   void resume();
+  /// Offers `kind` ("grand" or "upright", the action on screen) in the exercise form's action
+  /// list, while no exercise runs (a running one keeps its own).
+  void offer_action(const std::string& kind);
   /// Moves an adjuster relative to where it is (as the slider does). Throws InputError.
   void move_adjuster(const std::string& setting, double delta_mm);
   /// Measures the correction in the background and scores the session (scored() follows).

@@ -42,6 +42,7 @@ class PracticePanelTest : public QObject {
   void broken_exercise_file_is_refused_with_its_field();
   void giving_up_shows_the_answer();
   void adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel();
+  void the_exercise_form_offers_the_action_on_screen();
 };
 
 void PracticePanelTest::walk_through_an_exercise() {
@@ -270,6 +271,20 @@ void PracticePanelTest::adjuster_sliders_keep_their_keys_and_ignore_a_passing_wh
   QTest::keyClick(slider, Qt::Key_Right);
   QCOMPARE(slider->value(), 1);
   QCOMPARE(steps, 1);
+}
+
+void PracticePanelTest::the_exercise_form_offers_the_action_on_screen() {
+  MainWindow window;
+  window.open_action("upright");
+  window.show_practice(true);
+  auto* action = window.practice()->findChild<QComboBox*>("practice_action");
+  QVERIFY(action);
+  QCOMPARE(action->currentText(), QString("upright"));
+  window.show_practice(false);
+  window.open_action("grand");
+  window.show_practice(true);
+  QCOMPARE(action->currentText(), QString("grand"));
+  window.show_practice(false);
 }
 
 void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
