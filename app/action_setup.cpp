@@ -1,14 +1,34 @@
 #include "action_setup.h"
 
+#include <map>
 #include <set>
 
+#include "core/error.h"
 #include "model/effects.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
 
 namespace pat::app {
+namespace {
+
+/// Refuses a NAME given twice among an option's NAME=VALUE assignments: one of the two values
+/// would be dropped without a word (the edits' own parsers name any other problem).
+void refuse_repeated_names(const std::string& option, const std::vector<std::string>& assignments) {
+  std::map<std::string, std::string> seen;  // name → its first assignment
+  for (const std::string& assignment : assignments) {
+    const std::string name = assignment.substr(0, assignment.find('='));
+    const auto [first, fresh] = seen.emplace(name, assignment);
+    if (!fresh)
+      throw InputError(option + ": " + name + " is given twice ('" + first->second + "' and '" +
+                       assignment + "'); give it once");
+  }
+}
+
+}  // namespace
 
 ActionModel load_configured_action(const CommandLine& cl) {
+  refuse_repeated_names("--set", cl.values("--set"));
+  refuse_repeated_names("--effect", cl.values("--effect"));
   ActionModel model = load_action(cl.value("--action"));
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
   std::set<std::string> removed;

@@ -22,7 +22,7 @@ usage:
   pianoaction [--action grand|upright|FILE] [--view whole|escapement|checking]
                         [--size WIDTHxHEIGHT] [--screenshot PNG]      the trainer window
   pianoaction simulate  --action grand|upright|FILE --input SPEC --duration S
-                        [--integrator w2|rodas|cvode] [--step S] [--set ADJUSTER=MM]...
+                        [--integrator w2|rodas|cvode] [--step S | --rtol X] [--set ADJUSTER=MM]...
                         [--without PART]... [--effect NAME=VALUE]... [--out CSV] [--plot FILE]
                         [--sample-interval S] [--json]
   pianoaction regulate  --action A [--set ADJUSTER=MM]... [--out PRESET.json] [--plot FILE]
@@ -78,7 +78,10 @@ input SPEC:
 --without PART takes a spring or strap out. grand: repetition_spring jack_spring damper_spring;
   upright: jack_spring butt_spring damper_spring bridle
 --window CYCLES (sweep): judged cycles in a steady window (8); the maximum is the top of the
-  longest run of successful cycles at least that long
+  longest run of successful cycles at least that long. Sweep defaults: --fstart 2 Hz, --fmax 20 Hz
+  (full stroke) or 25 Hz (half), chirp --rate 1 Hz/s, steps --step-hz 0.5 Hz
+--step S (simulate) is w2's fixed step (1e-5 s); --rtol X the tolerance of rodas and cvode
+  (1e-6; absolute tolerance a hundredth of it)
 
 effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
   joint_friction.JOINT=FACTOR  repetition_spring=FACTOR (grand)  butt_spring=FACTOR (upright)
@@ -87,7 +90,8 @@ effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
 --plot FILE writes the command's plots, stacked (simulate: key and hammer angles, hammer-string
 gap, finger force; the others: what they computed, e.g. the measured setting over time, strikes
 per cycle against frequency, each setting's effect); the format comes from the extension:
-.png .pdf .svg, or .csv for the plotted columns (plots over one x axis).
+.png .pdf .svg, or .csv for the plotted columns (the plots over the first plot's x axis; those
+over another x go to FILE's stem + _<x column>.csv beside it).
 --key-column N (import-raw) turns the key's own sensor, column N of the same recording, into
 key angles with its rows of the --calibration points (their 'sensor' names the columns in order);
 diagnose then drives the model with that key motion instead of an estimated finger force.
@@ -207,6 +211,13 @@ int run_window(int argc, char** argv, const std::vector<std::string>& args) {
 #endif
 }
 
+/// `message` without a leading "COMMAND: " (engine messages name their analysis, and the line
+/// already starts with "pianoaction COMMAND: ").
+std::string without_prefix(const std::string& command, const std::string& message) {
+  const std::string prefix = command + ": ";
+  return message.rfind(prefix, 0) == 0 ? message.substr(prefix.size()) : message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -254,10 +265,10 @@ int main(int argc, char** argv) {
     std::cerr << "pianoaction: unknown subcommand '" << command << "'\n\n" << kUsage;
     return 2;
   } catch (const pat::InputError& e) {
-    std::cerr << "pianoaction " << command << ": " << e.what() << "\n";
+    std::cerr << "pianoaction " << command << ": " << without_prefix(command, e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "pianoaction " << command << ": " << e.what() << "\n";
+    std::cerr << "pianoaction " << command << ": " << without_prefix(command, e.what()) << "\n";
     return 1;
   }
 }

@@ -1,5 +1,7 @@
 #include "plot_output.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <utility>
 
@@ -56,9 +58,37 @@ bool is_csv_plot_path(const std::string& path) {
 
 void write_plots(const std::string& path, const std::vector<PlotSpec>& plots) {
   if (plots.empty()) throw InputError("--plot " + path + ": the run gave nothing to plot");
-  std::vector<ui::AnalysisPlot> converted;
-  for (const PlotSpec& spec : plots) converted.push_back(to_analysis_plot(spec));
-  ui::write_analysis_plots(converted, text(path));
+  auto write_group = [](const std::string& file, const std::vector<const PlotSpec*>& group) {
+    std::vector<ui::AnalysisPlot> converted;
+    for (const PlotSpec* spec : group) converted.push_back(to_analysis_plot(*spec));
+    ui::write_analysis_plots(converted, text(file));
+  };
+  std::vector<const PlotSpec*> all;
+  for (const PlotSpec& spec : plots) all.push_back(&spec);
+  if (!is_csv_plot_path(path)) {  // a picture stacks every plot
+    write_group(path, all);
+    return;
+  }
+  // a CSV holds one x axis: the plots over the first plot's x go to PATH, those over each other
+  // x to STEM_<x column>.csv beside it (said on stderr, which --json leaves to notes)
+  std::vector<std::string> x_columns;  // in the order the plots first use them
+  for (const PlotSpec& spec : plots)
+    if (std::find(x_columns.begin(), x_columns.end(), spec.x_column) == x_columns.end())
+      x_columns.push_back(spec.x_column);
+  const std::filesystem::path file(path);
+  for (std::size_t g = 0; g < x_columns.size(); ++g) {
+    std::vector<const PlotSpec*> group;
+    for (const PlotSpec* spec : all)
+      if (spec->x_column == x_columns[g]) group.push_back(spec);
+    const std::string group_path =
+        g == 0
+            ? path
+            : (file.parent_path() / (file.stem().string() + "_" + x_columns[g] + ".csv")).string();
+    write_group(group_path, group);
+    if (g > 0)
+      std::cerr << "note: the plots over " << x_columns[g] << " went to " << group_path
+                << " (a CSV holds one x axis)\n";
+  }
 }
 #else
 void check_plot_path(const std::string& path) {

@@ -25,6 +25,12 @@ int run_sweep(const std::vector<std::string>& args) {
   options.mode = parse_sweep_mode(cl.value_or("--mode", "chirp"), "--mode");
   options.f_start_hz = cl.positive_number_or("--fstart", options.f_start_hz);
   options.f_max_hz = cl.positive_number_or("--fmax", options.stroke == Stroke::half ? 25.0 : 20.0);
+  // each mode's own pace: one of the other mode would be ignored without a word
+  if (options.mode == SweepMode::chirp && cl.has("--step-hz"))
+    throw InputError(
+        "--step-hz sets the steps mode's frequency increment; a chirp's pace is --rate");
+  if (options.mode == SweepMode::steps && cl.has("--rate"))
+    throw InputError("--rate sets the chirp's pace; the steps mode's increment is --step-hz");
   options.chirp_rate_hz_per_s = cl.positive_number_or("--rate", options.chirp_rate_hz_per_s);
   options.step_hz = cl.positive_number_or("--step-hz", options.step_hz);
   if (cl.has("--window")) {

@@ -135,7 +135,10 @@ std::string sweep_summary(const SweepResult& r) {
     text = r.max_frequency_hz
                ? "no limit in the band: every cycle succeeds up to " +
                      format_number(*r.max_frequency_hz) + " Hz (the maximum is at least that)"
-               : text + " (no failure up to the last frequency)";
+               // nothing failed, yet no steady window: too few judged cycles in the band
+               : "no maximum: the band's " + std::to_string(judged_cycle_points(r).size()) +
+                     " judged cycles all strike once, but a maximum needs a steady window of "
+                     "them (--window); widen the band or slow the chirp (--rate)";
   } else if (!r.first_failure) {
     text += " (a run stopped while settling)";
   } else {

@@ -83,6 +83,8 @@ ExportFormat export_format(const QString& path) {
   if (suffix == "pdf") return ExportFormat::Pdf;
   if (suffix == "svg") return ExportFormat::Svg;
   if (suffix == "csv") return ExportFormat::Csv;
+  if (suffix.isEmpty())
+    fail(path, "no file extension to tell the plot format (use .png, .pdf, .svg or .csv)");
   fail(path, "unknown plot format '." + suffix.toStdString() + "' (use .png, .pdf, .svg or .csv)");
 }
 

@@ -186,6 +186,10 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
     }
   }
   const auto wall_end = std::chrono::steady_clock::now();
+  if (options.trace_final_state && options.sample_interval_s > 0.0 &&
+      sim.time() > result.trace.rows.back()[0] + 1e-12 && sim.q().allFinite() &&
+      sim.v().allFinite())
+    record(sim.time(), sim.q(), sim.v());
   sim.finish_events();
   result.status = sim.stopped() ? "stopped" : "ok";
   result.stop_cause = sim.stop_cause();

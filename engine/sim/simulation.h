@@ -29,6 +29,10 @@ struct SimulationOptions {
   IntegratorOptions integrator_options;
   double duration_s = 0.5;
   double sample_interval_s = 1e-4;  ///< trace row spacing (0: no trace)
+  /// The trace also ends with the state the run ended in, when that falls between samples (a
+  /// run stopped between two rows, a duration that is no multiple of the spacing): one row off
+  /// the grid, so only for traces read row by row (simulate --out), not resampled ones.
+  bool trace_final_state = false;
   /// Called after every accepted step with the time; return false to cancel the run.
   std::function<bool(double t)> on_step;
 };

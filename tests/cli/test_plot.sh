@@ -72,6 +72,16 @@ expect bench_window 1 bench --window --duration 0.3 --trials 2
 expect practice 2 practice new --action grand --seed 3
 
 # the CSV export of a plot over another x axis: the touchweight against the key dip
+# plots over two x axes as CSV: those over the first plot's x in the file named, the others beside
+# it (a sweep: strikes per cycle over frequency, the chirp run over time)
+"$exe" sweep --action grand --stroke full --fstart 6 --fmax 7 --plot two_axes.csv --json \
+  >two_axes.json 2>two_axes.err || fail "sweep --plot csv over two axes: $(cat two_axes.err)"
+grep -q "^frequency_hz," two_axes.csv || fail "two_axes.csv: $(grep -v '^#' two_axes.csv | head -1)"
+grep -q "^time_s,key_angle_deg" two_axes_time_s.csv \
+  || fail "two_axes_time_s.csv: $(grep -v '^#' two_axes_time_s.csv 2>&1 | head -1)"
+grep -qF "went to two_axes_time_s.csv" two_axes.err || fail "the second file is not named"
+python3 -c 'import json,sys; json.load(open(sys.argv[1]))' two_axes.json \
+  || fail "the note broke --json's stdout"
 "$exe" touchweight --action grand --plot weights.csv >/dev/null || fail "touchweight --plot csv"
 grep -q "^dip_mm,down_weight_g,up_weight_g" weights.csv \
   || fail "weights.csv header: $(grep -v '^#' weights.csv | head -1)"

@@ -201,6 +201,34 @@ if grep -q "old content" replace.csv; then
 fi
 echo "ok: --out replaces an existing file"
 
+# --- how the trace was made, and where the run ended ----------------------------------------------
+# the trace names the accuracy asked for and the effects added; a run ending between two samples
+# (0.0505 s at 0.01 s spacing) ends the trace with its last state, as does an adaptive run
+"$exe" simulate --action grand --input force:const:20 --duration 0.0505 --sample-interval 0.01 \
+  --effect shank_flex=180 --out made.csv >/dev/null
+"$exe" simulate --action grand --input force:const:20 --duration 0.01 --integrator cvode \
+  --rtol 1e-4 --out made_cvode.csv >/dev/null
+python3 - made.csv made_cvode.csv <<'PY'
+import sys
+def read(path):
+    meta, rows = {}, []
+    for line in open(path):
+        if line.startswith("#"):
+            key, _, value = line[1:].partition(":")
+            meta[key.strip()] = value.strip()
+        elif line[0].isdigit():
+            rows.append([float(x) for x in line.split(",")])
+    return meta, rows
+meta, rows = read(sys.argv[1])
+assert meta.get("effects") == "shank_flex=180", meta
+assert meta.get("step_s") == "1e-05", meta
+times = [r[0] for r in rows]
+assert times[-2:] == [0.05, 0.0505], times
+meta, rows = read(sys.argv[2])
+assert meta.get("rtol") == "0.0001" and "step_s" not in meta, meta
+print("ok: the trace records step, tolerance and effects, and ends where the run ended")
+PY
+
 # --- help -----------------------------------------------------------------------------------------
 "$exe" --help >help.txt
 grep -q "simulate" help.txt || { echo "FAIL: --help does not mention simulate" >&2; exit 1; }

@@ -503,6 +503,7 @@ TEST(InputSpec, BadSpecsSayWhatIsExpected) {
       {"motion:press:1:2", "expected motion:press:SECONDS"},
       {"motion:press:0", "the press duration SECONDS must be positive (got 0 s)"},
       {"motion:press:x", "expected motion:press:SECONDS"},
+      {"motion:press:1e-9", "the press must take at least 0.005 s (got 1e-09 s)"},
       {"csv:", "expected csv:PATH"},
   };
   for (const Case& c : cases) {
