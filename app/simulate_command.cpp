@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/format.h"
+#include "core/types.h"
 #include "io/csv.h"
 #include "plot_output.h"
 #include "sim/key_travel.h"
@@ -56,6 +57,20 @@ int run_simulate(const std::vector<std::string>& args) {
   const std::string out_path = cl.output_path("--out");
   const PlotOption plot(cl.output_path("--plot"));
 
+  // a recording shorter than the run: its last value goes on, which the user should know
+  std::string held_note;
+  if (input->given_until_s() < options.duration_s) {
+    const double t_end = input->given_until_s();
+    held_note =
+        "the input ends at " + format_number(t_end, 6) + " s; its last " +
+        (input->is_motion()
+             ? "key angle, " + format_number(input->motion(t_end).angle * 180.0 / kPi, 4) + " deg,"
+             : "force, " + format_number(input->force_n(t_end), 4) + " N,") +
+        " is held to the run's end at " + format_number(options.duration_s, 6) + " s";
+  }
+  std::string notes = input->note();
+  if (!held_note.empty()) notes += (notes.empty() ? "" : "; ") + held_note;
+
   SimulationResult result = simulate(model, input.get(), options, &rest);
   // how the trace was made, beyond what the engine records: the accuracy asked for and the
   // effects added to the model
@@ -84,14 +99,14 @@ int run_simulate(const std::vector<std::string>& args) {
                        {"integrator", options.integrator},
                        {"rest_hammer_string_gap_mm", rest.hammer_string_gap * 1e3}};
     std::cout << out.dump(1) << "\n";
-    if (!input->note().empty()) std::cerr << "note: " << input->note() << "\n";
+    if (!notes.empty()) std::cerr << "note: " << notes << "\n";
   } else {
     std::cout << model.name << ", input " << input->spec() << ", " << options.integrator << ": "
               << result.status;
     if (result.status != "ok")
       std::cout << " at t = " << result.end_time << " s (" << result.stop_cause << ")";
     std::cout << "\n";
-    if (!input->note().empty()) std::cout << "  note: " << input->note() << "\n";
+    if (!notes.empty()) std::cout << "  note: " << notes << "\n";
     for (const SimEvent& e : result.events) {
       std::cout << "  " << e.t * 1e3 << " ms  " << e.type << "  hammer-string gap "
                 << e.hammer_string_gap * 1e3 << " mm";

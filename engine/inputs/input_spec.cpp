@@ -273,6 +273,7 @@ class CsvForce final : public ForceInput {
         static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
     return f_[i] + slope_[i] * (t - t_[i]);
   }
+  double given_until_s() const override { return t_.back(); }
 
  private:
   std::vector<double> t_, f_, slope_;
@@ -288,6 +289,7 @@ class CsvMotion final : public MotionInput {
     const CubicSpline::Sample s = spline_.evaluate(t);
     return {s.value, s.first, s.second};
   }
+  double given_until_s() const override { return spline_.x_max(); }
 
  private:
   CubicSpline spline_;

@@ -4,6 +4,7 @@
 // from the rest position, positive when the key front goes down.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -37,6 +38,9 @@ class KeyInput {
   virtual double added_mass_kg() const { return 0.0; }
   /// The SPEC the input was made from, for metadata and messages.
   virtual const std::string& spec() const = 0;
+  /// The time the input is given up to (s): a recorded file's last row; infinity for a SPEC
+  /// defined for all time. Later the input holds its last value.
+  virtual double given_until_s() const { return std::numeric_limits<double>::infinity(); }
   /// What the user should know about how the input was read, in words (empty: nothing), e.g.
   /// that a CSV with both a force and a key angle column drives the key by its angle.
   virtual std::string note() const { return {}; }

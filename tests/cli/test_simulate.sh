@@ -229,6 +229,18 @@ assert meta.get("rtol") == "0.0001" and "step_s" not in meta, meta
 print("ok: the trace records step, tolerance and effects, and ends where the run ended")
 PY
 
+# a recording shorter than the run: its last value is held, and the run says so
+printf 'time_s,key_force_n\n0,0\n0.002,20\n0.05,20\n' >short_input.csv
+"$exe" simulate --action grand --input csv:short_input.csv --duration 0.1 >short.txt
+grep -qF "the input ends at 0.05 s; its last force, 20 N, is held to the run's end at 0.1 s" \
+  short.txt || { echo "FAIL: no note of the held end: $(cat short.txt)" >&2; exit 1; }
+"$exe" simulate --action grand --input csv:short_input.csv --duration 0.04 >long.txt
+if grep -q "is held to the run's end" long.txt; then
+  echo "FAIL: a recording longer than the run gets the note: $(cat long.txt)" >&2
+  exit 1
+fi
+echo "ok: a recording shorter than the run says its last value is held"
+
 # --- help -----------------------------------------------------------------------------------------
 "$exe" --help >help.txt
 grep -q "simulate" help.txt || { echo "FAIL: --help does not mention simulate" >&2; exit 1; }
