@@ -24,7 +24,10 @@ nlohmann::json limit_json(const std::optional<SweepResult>& sweep) {
                                  ? nlohmann::json(outcome_name(sweep->first_failure->outcome))
                                  : nlohmann::json(nullptr)},
       {"first_failure_hz", sweep->first_failure ? nlohmann::json(sweep->first_failure->frequency_hz)
-                                                : nlohmann::json(nullptr)}};
+                                                : nlohmann::json(nullptr)},
+      // the same object as sweep's, so that one script reads both
+      {"first_failure",
+       sweep->first_failure ? cycle_json(*sweep->first_failure) : nlohmann::json(nullptr)}};
 }
 
 /// The overlaid motions, gaps and touch of both actions under the common input, then their

@@ -5,8 +5,6 @@
 #include "core/format.h"
 
 namespace pat::app {
-namespace {
-
 nlohmann::json cycle_json(const CycleResult& c) {
   return {{"t_s", c.t_start_s},
           {"frequency_hz", c.frequency_hz},
@@ -16,6 +14,8 @@ nlohmann::json cycle_json(const CycleResult& c) {
           {"judged", c.judged},
           {"strike_velocity_mps", c.strike_velocity_mps}};
 }
+
+namespace {
 
 std::string failure_words(CycleOutcome outcome) {
   switch (outcome) {
@@ -33,8 +33,12 @@ std::string failure_words(CycleOutcome outcome) {
 
 void add_cycle_rows(CsvTable& table, const std::vector<CycleResult>& cycles, double step_hz) {
   for (const CycleResult& c : cycles) {
-    std::vector<double> row{c.t_start_s, c.frequency_hz, static_cast<double>(c.strikes),
-                            c.success() ? 1.0 : 0.0, c.judged ? 1.0 : 0.0};
+    std::vector<double> row{c.t_start_s,
+                            c.frequency_hz,
+                            static_cast<double>(c.strikes),
+                            c.success() ? 1.0 : 0.0,
+                            c.judged ? 1.0 : 0.0,
+                            c.strike_velocity_mps};
     if (step_hz > 0.0) row.push_back(step_hz);
     table.rows.push_back(std::move(row));
   }
@@ -84,7 +88,8 @@ CsvTable sweep_cycles_table(const SweepResult& r, const ActionModel& model) {
   table.metadata["action"] = model.kind;
   table.metadata["stroke"] = stroke_name(r.stroke);
   table.metadata["mode"] = sweep_mode_name(r.mode);
-  table.columns = {"t_s", "frequency_hz", "strikes", "success", "judged"};
+  // strikes tells the kind of a failure: 0 missed, 2 or more a double strike
+  table.columns = {"t_s", "frequency_hz", "strikes", "success", "judged", "strike_velocity_mps"};
   if (r.mode == SweepMode::chirp) {
     add_cycle_rows(table, r.cycles, 0.0);
   } else {

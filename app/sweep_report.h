@@ -15,8 +15,12 @@ namespace pat::app {
 /// (chirp) or frequencies (steps).
 nlohmann::json sweep_json(const SweepResult& result);
 
-/// One row per cycle: t_s (cycle start), frequency_hz, strikes, success (1/0), and the run's
-/// frequency for the steps mode (step_frequency_hz). Metadata: action, stroke, mode.
+/// One cycle: t_s, frequency_hz, strikes, success, kind, judged, strike_velocity_mps.
+nlohmann::json cycle_json(const CycleResult& cycle);
+
+/// One row per cycle: t_s (cycle start), frequency_hz, strikes, success (1/0), judged (1/0),
+/// strike_velocity_mps, and the run's frequency for the steps mode (step_frequency_hz).
+/// Metadata: action, stroke, mode.
 CsvTable sweep_cycles_table(const SweepResult& result, const ActionModel& model);
 
 /// The plots of `--plot`: strikes per judged cycle and the hammer speed at each strike over

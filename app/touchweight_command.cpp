@@ -33,8 +33,8 @@ int run_touchweight(const std::vector<std::string>& args) {
   const std::string out_path = cl.output_path("--out");
   const TouchweightResult result = measure_touchweight(model);
   plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",
-                         {{"down_weight_g", "downweight"},
-                          {"up_weight_g", "upweight"},
+                         {{"downweight_g", "downweight"},
+                          {"upweight_g", "upweight"},
                           {"balance_weight_g", "balance weight"},
                           {"friction_weight_g", "friction weight"}},
                          "dip_mm", "key dip (mm)", "mm")},

@@ -387,8 +387,8 @@ AnalysisEntry touchweight() {
                         {}};
       const int dip = t.column_index("dip_mm");
       for (const auto& [column, label] : std::vector<std::pair<std::string, QString>>{
-               {"down_weight_g", QObject::tr("downweight")},
-               {"up_weight_g", QObject::tr("upweight")},
+               {"downweight_g", QObject::tr("downweight")},
+               {"upweight_g", QObject::tr("upweight")},
                {"balance_weight_g", QObject::tr("balance weight")}}) {
         AnalysisSeries series{label, QString::fromStdString(column), {}, {}, false};
         const int c = t.column_index(column);

@@ -7,6 +7,7 @@
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "dynamics/action_dynamics.h"
 #include "inputs/key_input.h"
 #include "sim/simulation.h"
@@ -14,6 +15,12 @@
 
 namespace pat {
 namespace {
+
+/// Why a held key may find no balance: its parts keep moving there, which a setting or a weight
+/// that moved the action's rest (a key that falls to its punching on its own) does.
+constexpr const char* kNoBalanceHint =
+    ": the other parts keep moving there (a setting or a key weight may have moved the action's "
+    "rest, e.g. a key heavy enough in front to fall to its punching on its own)";
 
 /// The key held still at a fixed angle from rest (a motion input that never moves).
 class HeldKey : public KeyInput {
@@ -104,7 +111,7 @@ double key_arm(const ActionModel& model, ActionDynamics& dynamics, const DofVect
 
 CsvTable TouchweightResult::table() const {
   CsvTable t;
-  t.columns = {"dip_mm", "down_weight_g", "up_weight_g", "balance_weight_g", "friction_weight_g"};
+  t.columns = {"dip_mm", "downweight_g", "upweight_g", "balance_weight_g", "friction_weight_g"};
   for (const TouchweightPoint& p : curve) {
     const double b = p.balance_force_n / kGravity * 1e3, f = p.friction_force_n / kGravity * 1e3;
     t.rows.push_back({p.dip_mm, b + f, b - f, b, f});
@@ -150,8 +157,8 @@ TouchweightResult measure_touchweight(const ActionModel& action, const Touchweig
         for (int s = 1; s <= substeps; ++s) {
           HeldKeyBalance step(action, rest.q[key], angle * s / substeps);
           if (!step.solve(q)) {
-            failures[i] = "no static equilibrium with the key front " + std::to_string(dip_target) +
-                          " mm down";
+            failures[i] = "no static equilibrium with the key front held " +
+                          format_number(dip_target, 3) + " mm down" + kNoBalanceHint;
             return;
           }
         }
@@ -163,8 +170,8 @@ TouchweightResult measure_touchweight(const ActionModel& action, const Touchweig
         HeldKeyBalance plus(action, rest.q[key], angle + delta);
         HeldKeyBalance here(action, rest.q[key], angle);
         if (!minus.solve(q_minus) || !plus.solve(q_plus)) {
-          failures[i] = "no static equilibrium next to the key front " +
-                        std::to_string(dip_target) + " mm down";
+          failures[i] = "no static equilibrium next to the key front held " +
+                        format_number(dip_target, 3) + " mm down" + kNoBalanceHint;
           return;
         }
         const DofVector dq_dangle = (q_plus - q_minus) / (2.0 * delta);

@@ -53,7 +53,7 @@ struct TouchweightResult {
   double strike_weight_g = 0.0;
   double front_weight_g = 0.0;
   std::vector<TouchweightPoint> curve;
-  /// dip_mm, down_weight_g, up_weight_g, balance_weight_g, friction_weight_g per position
+  /// dip_mm, downweight_g, upweight_g, balance_weight_g, friction_weight_g per position
   CsvTable table() const;
 };
 

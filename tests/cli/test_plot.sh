@@ -83,7 +83,7 @@ grep -qF "went to two_axes_time_s.csv" two_axes.err || fail "the second file is 
 python3 -c 'import json,sys; json.load(open(sys.argv[1]))' two_axes.json \
   || fail "the note broke --json's stdout"
 "$exe" touchweight --action grand --plot weights.csv >/dev/null || fail "touchweight --plot csv"
-grep -q "^dip_mm,down_weight_g,up_weight_g" weights.csv \
+grep -q "^dip_mm,downweight_g,upweight_g" weights.csv \
   || fail "weights.csv header: $(grep -v '^#' weights.csv | head -1)"
 
 # a wrong extension: refused before the regulation runs, the file named, nothing written

@@ -42,7 +42,7 @@ assert 45 <= r["downweight_g"] <= 55 and 20 <= r["upweight_g"] <= 30, "F9: %r" %
 assert lead["balance_weight_g"] < r["balance_weight_g"] - 4.9, (lead, r)
 assert spring["downweight_g"] < r["downweight_g"], (spring, r)
 header = [l for l in open(sys.argv[4]) if not l.startswith("#")][0].strip()
-assert header == "dip_mm,down_weight_g,up_weight_g,balance_weight_g,friction_weight_g", header
+assert header == "dip_mm,downweight_g,upweight_g,balance_weight_g,friction_weight_g", header
 print("ok: touchweight --json (DW %.1f g, UW %.1f g), lead and spring factor" %
       (r["downweight_g"], r["upweight_g"]))
 PY
