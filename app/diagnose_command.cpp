@@ -142,8 +142,10 @@ int run_diagnose(const std::vector<std::string>& args) {
   else
     std::cout << "cause: none beyond the noise\n";
   std::cout << "baseline " << d.baseline_rms_deg << " deg, extended " << d.extended_rms_deg
-            << " deg, gain " << d.gain * 100 << " %  (" << d.simulations << " simulations, "
-            << d.wall_time_s << " s)\n";
+            << " deg, gain " << d.gain * 100 << " %"
+            << (d.held_out ? " on held-out trials"
+                           : " on the fitted trial itself (one trial: nothing held out)")
+            << "  (" << d.simulations << " simulations, " << d.wall_time_s << " s)\n";
   if (!report.empty()) std::cout << "report written to " << report << "\n";
   if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   return 0;

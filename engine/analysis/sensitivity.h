@@ -23,7 +23,9 @@ struct SensitivityMetricGroup {
   std::function<std::vector<double>(const ActionModel&, const RestState&)> evaluate;
 };
 
-/// impact_velocity_mps and let_off_time_ms under a constant key force (N), w2.
+/// impact_velocity_mps and let_off_time_ms under a constant key force (N), w2. Let-off time: the
+/// jack's toe meeting the let-off button, where the trip begins (NaN when it never does before
+/// the strike).
 SensitivityMetricGroup blow_metrics(double key_force_n = 20.0);
 
 /// The metric groups of the sensitivity table: the blow metrics at this key force, and the
