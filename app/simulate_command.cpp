@@ -6,7 +6,6 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/format.h"
-#include "core/types.h"
 #include "io/csv.h"
 #include "plot_output.h"
 #include "sim/key_travel.h"
@@ -58,18 +57,7 @@ int run_simulate(const std::vector<std::string>& args) {
   const PlotOption plot(cl.output_path("--plot"));
 
   // a recording shorter than the run: its last value goes on, which the user should know
-  std::string held_note;
-  if (input->given_until_s() < options.duration_s) {
-    const double t_end = input->given_until_s();
-    held_note =
-        "the input ends at " + format_number(t_end, 6) + " s; its last " +
-        (input->is_motion()
-             ? "key angle, " + format_number(input->motion(t_end).angle * 180.0 / kPi, 4) + " deg,"
-             : "force, " + format_number(input->force_n(t_end), 4) + " N,") +
-        " is held to the run's end at " + format_number(options.duration_s, 6) + " s";
-  }
-  std::string notes = input->note();
-  if (!held_note.empty()) notes += (notes.empty() ? "" : "; ") + held_note;
+  const std::string notes = input_notes(*input, options.duration_s);
 
   SimulationResult result = simulate(model, input.get(), options, &rest);
   // how the trace was made, beyond what the engine records: the accuracy asked for and the

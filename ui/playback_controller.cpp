@@ -240,9 +240,14 @@ void PlaybackController::show_time(double t) {
   emit frameShown(current_);
 }
 
-void PlaybackController::on_run_started(int run_id, double full_dip_rad) {
+void PlaybackController::on_run_started(int run_id, double full_dip_rad, const QString& notes) {
   if (run_id != run_id_) return;
   full_dip_rad_ = full_dip_rad;
+  // what the input's reading means (a CSV's ignored column, its held end) goes with its name
+  if (!notes.isEmpty() && inputs_.size() == 1) {
+    inputs_.front().second += tr(" (%1)").arg(notes);
+    emit inputChanged(inputs_.front().second);
+  }
   drain();
   if (!history_.empty()) show_time(history_.first_time());
 }

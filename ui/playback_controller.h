@@ -88,7 +88,7 @@ class PlaybackController : public QObject {
 
  private slots:
   void tick();
-  void on_run_started(int run_id, double full_dip_rad);
+  void on_run_started(int run_id, double full_dip_rad, const QString& notes);
   void on_run_failed(int run_id, const QString& message);
   void on_run_stopped(int run_id, const QString& cause);
 

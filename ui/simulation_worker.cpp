@@ -3,6 +3,7 @@
 #include <QElapsedTimer>
 #include <QMetaObject>
 #include <exception>
+#include <limits>
 
 #include "integrators/integrator_factory.h"
 #include "live_key_input.h"
@@ -83,6 +84,7 @@ void SimulationWorker::start_run(const RunSetup& setup) {
     pending_key_ = false;
     has_pending_.store(false);
   }
+  QString notes;
   try {
     SimulationOptions options;
     options.integrator = "w2";
@@ -95,6 +97,9 @@ void SimulationWorker::start_run(const RunSetup& setup) {
     full_dip_rad_ = context.full_dip_angle_rad;
     std::shared_ptr<const KeyInput> input;
     if (!setup.input_spec.empty()) input = parse_input_spec(setup.input_spec, context);
+    // the window's run has no end: a recording's last value is held after it
+    if (input)
+      notes = QString::fromStdString(input_notes(*input, std::numeric_limits<double>::infinity()));
     sim_ = std::make_unique<Simulator>(setup.model, input, options, &rest);
   } catch (const std::exception& e) {
     emit runFailed(run_id_, QString::fromStdString(e.what()));
@@ -102,7 +107,7 @@ void SimulationWorker::start_run(const RunSetup& setup) {
   }
   target_time_.store(0.0);
   record_frame();  // the first frame, at rest; it sets last_frame_t_
-  emit runStarted(run_id_, full_dip_rad_);
+  emit runStarted(run_id_, full_dip_rad_, notes);
 }
 
 void SimulationWorker::compute() {

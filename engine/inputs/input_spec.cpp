@@ -561,4 +561,21 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
   throw InputError("unknown input SPEC '" + spec + "' (" + kKnownSpecs + ")");
 }
 
+std::string input_notes(const KeyInput& input, double run_end_s) {
+  std::string notes = input.note();
+  const double t_end = input.given_until_s();
+  if (t_end < run_end_s) {
+    const std::string last =
+        input.is_motion()
+            ? "key angle, " + format_number(input.motion(t_end).angle * 180.0 / kPi, 4) + " deg,"
+            : "force, " + format_number(input.force_n(t_end), 4) + " N,";
+    notes +=
+        (notes.empty() ? "" : "; ") +
+        ("the input ends at " + format_number(t_end, 6) + " s; its last " + last + " is held ") +
+        (std::isfinite(run_end_s) ? "to the run's end at " + format_number(run_end_s, 6) + " s"
+                                  : std::string("after it"));
+  }
+  return notes;
+}
+
 }  // namespace pat

@@ -87,4 +87,10 @@ struct InputContext {
 /// Throws InputError naming the SPEC (and the file and line for csv:) and what is wrong.
 std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputContext& context);
 
+/// What the user should know of `input` for a run ending at `run_end_s` (infinity: a run without
+/// an end, the window's), in words: its note(), and for a recording that ends first, that its
+/// last value is held ("the input ends at 0.05 s; its last force, 20 N, is held to the run's end
+/// at 0.1 s" or "… is held after it"). Empty when there is nothing to say.
+std::string input_notes(const KeyInput& input, double run_end_s);
+
 }  // namespace pat

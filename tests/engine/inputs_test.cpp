@@ -96,6 +96,25 @@ class InputsCsvTest : public ::testing::Test {
   fs::path dir_;
 };
 
+TEST_F(InputsCsvTest, ARecordingShorterThanTheRunSaysItsLastValueIsHeld) {
+  const auto force = parse("csv:" + write_text("f.csv", "time_s,key_force_n\n0,0\n0.05,20\n"));
+  EXPECT_EQ(force->given_until_s(), 0.05);
+  EXPECT_EQ(input_notes(*force, 0.1),
+            "the input ends at 0.05 s; its last force, 20 N, is held to the run's end at 0.1 s");
+  EXPECT_EQ(input_notes(*force, std::numeric_limits<double>::infinity()),
+            "the input ends at 0.05 s; its last force, 20 N, is held after it");
+  EXPECT_EQ(input_notes(*force, 0.04), "");  // the run ends first
+  // 0.02 rad = 1.146 deg
+  const auto angle =
+      parse("csv:" + write_text("a.csv", "time_s,key_angle_deg\n0,0\n0.1,0.5\n0.2,1.146\n"));
+  EXPECT_EQ(input_notes(*angle, 1.0),
+            "the input ends at 0.2 s; its last key angle, 1.146 deg, is held to the run's end at "
+            "1 s");
+  // a SPEC defined for all time has nothing to say
+  EXPECT_EQ(input_notes(*parse("motion:sine:5"), 10.0), "");
+  EXPECT_EQ(parse("force:const:3")->given_until_s(), std::numeric_limits<double>::infinity());
+}
+
 TEST(MassInput, OneKilogramAddsMassAndNoForce) {
   const auto input = parse("mass:1kg");
   EXPECT_FALSE(input->is_motion());

@@ -43,6 +43,7 @@ class RunControlsTest : public QObject {
   void a_diverging_run_pauses_and_shows_its_cause();
   void a_bad_input_spec_is_shown_not_thrown();
   void a_malformed_csv_keeps_the_run_on_screen();
+  void a_short_recording_says_its_end_is_held();
   void switching_to_the_slowest_speed_keeps_playing();
   void the_regulation_dock_shows_every_column();
   void switching_actions_rebuilds_panel_and_view();
@@ -252,6 +253,26 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
                window.banner_text().contains("beyond the key's travel"),
            qPrintable(window.banner_text()));
   QFile::remove(path);
+}
+
+void RunControlsTest::a_short_recording_says_its_end_is_held() {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.csv");
+  QFile file(path);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.write("time_s,key_force_n\n0,0\n0.002,20\n0.05,20\n");
+  file.close();
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("csv:" + path.toStdString());
+  // the status line names the input with what its reading means: the force goes on after the
+  // file's last row
+  QVERIFY2(wait_until([&] {
+             return window.statusBar()->currentMessage().contains(
+                 "the input ends at 0.05 s; its last force, 20 N, is held after it");
+           }),
+           qPrintable(window.statusBar()->currentMessage()));
 }
 
 void RunControlsTest::switching_to_the_slowest_speed_keeps_playing() {
