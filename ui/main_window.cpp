@@ -549,9 +549,10 @@ void MainWindow::open_action(const std::string& name_or_path) {
 }
 
 void MainWindow::show_practice_test(const QString& input, double duration_s) {
-  // a test watched as a class watches it: a forte blow's 0.3 s at 1/10 takes 3 s, the slow
-  // press's 1.4 s at 1/2 takes 2.8 s (at 1/10 it would drag on for 14 s)
-  constexpr double kShownTestWallSeconds = 4.0;
+  // a test watched as a class watches it, in at most 8 s: the slow press's 1.4 s at 1/5 (7 s,
+  // a technician's own slow press; 1/10 would drag on for 14 s), a forte blow's strike and catch
+  // (0.05 s) at 1/100, four repeated notes at 12 Hz (0.33 s) at 1/20
+  constexpr double kShownTestWallSeconds = 8.0;
   if (duration_s > 0.0) {
     const auto& speeds = RunControls::speeds();  // fastest first
     int chosen = 0;

@@ -128,7 +128,7 @@ class MainWindow : public QMainWindow {
   void build_practice();
   void practise_on(std::shared_ptr<const ActionModel> model);
   /// Plays a practice test on the hidden action from rest, at the slowest listed speed that
-  /// shows its `duration_s` in at most 4 s of wall time.
+  /// shows its `duration_s` in at most 8 s of wall time.
   void show_practice_test(const QString& input, double duration_s);
   /// Opening another action or preset, and saving one: off while an exercise runs.
   void enable_action_changes(bool on);

@@ -25,6 +25,7 @@
 #include "model/preset_loader.h"
 #include "practice/exercise.h"
 #include "practice_report.h"
+#include "focus_wheel.h"
 #include "practice_runner.h"
 #include "setting_names.h"
 #include "step_slider.h"
@@ -75,12 +76,12 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
 
   auto* start_box = new QGroupBox(tr("Exercise"), this);
   auto* start_form = new QFormLayout(start_box);
-  action_ = new QComboBox(start_box);
+  action_ = new FocusWheel<QComboBox>(start_box);
   action_->setObjectName("practice_action");
   action_->addItems({"grand", "upright"});
-  seed_ = new QSpinBox(start_box);
+  seed_ = new FocusWheel<QSpinBox>(start_box);
   seed_->setRange(0, 1000000);
-  level_ = new QSpinBox(start_box);
+  level_ = new FocusWheel<QSpinBox>(start_box);
   level_->setRange(1, 2);
   level_->setToolTip(tr("Level 1 hides one setting, level 2 two"));
   start_form->addRow(tr("Action"), action_);
@@ -132,10 +133,10 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
 
   auto* answer_box = new QGroupBox(tr("Diagnosis"), this);
   auto* answer_grid = new QGridLayout(answer_box);
-  answer_setting_ = new QComboBox(answer_box);
-  answer_direction_ = new QComboBox(answer_box);
-  second_setting_ = new QComboBox(answer_box);
-  second_direction_ = new QComboBox(answer_box);
+  answer_setting_ = new FocusWheel<QComboBox>(answer_box);
+  answer_direction_ = new FocusWheel<QComboBox>(answer_box);
+  second_setting_ = new FocusWheel<QComboBox>(answer_box);
+  second_direction_ = new FocusWheel<QComboBox>(answer_box);
   for (QComboBox* d : {answer_direction_, second_direction_}) {
     d->addItem(tr("more than its target"), "more");
     d->addItem(tr("less than its target"), "less");
@@ -168,7 +169,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   column->addWidget(answer_box);
   connect(answer_button_, &QPushButton::clicked, this, &PracticePanel::answer_from_form);
   connect(hint_button_, &QPushButton::clicked, this, &PracticePanel::request_hint);
-  connect(reveal_button_, &QPushButton::clicked, this, &PracticePanel::reveal_answer);
+  connect(reveal_button_, &QPushButton::clicked, this, [this] {
+    if (confirm(tr("Give up?"), tr("Show the hidden settings? Answers after this are judged but "
+                                   "no longer scored.")))
+      reveal_answer();
+  });
 
   auto* correct_box = new QGroupBox(tr("Correction (relative moves; true positions hidden)"), this);
   correct_box->setObjectName("correction_box");
@@ -265,7 +270,21 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   });
 }
 
+bool PracticePanel::leave_running_exercise() {
+  if (!session_ || session_->final_score()) return true;
+  return confirm(tr("Leave this exercise?"),
+                 tr("The exercise under way (%1 tests used) is not scored yet; a new one replaces "
+                    "it and it is not kept among the past sessions. Start the new one?")
+                     .arg(session_->tests_used()));
+}
+
+bool PracticePanel::confirm(const QString& title, const QString& question) {
+  return QMessageBox::question(this, title, question, QMessageBox::Yes | QMessageBox::No,
+                               QMessageBox::No) == QMessageBox::Yes;
+}
+
 void PracticePanel::start_from_form() {
+  if (!leave_running_exercise()) return;
   try {
     start_seed(action_->currentText().toStdString(), static_cast<std::uint64_t>(seed_->value()),
                level_->value());
@@ -275,6 +294,7 @@ void PracticePanel::start_from_form() {
 }
 
 void PracticePanel::open_file_from_dialog() {
+  if (!leave_running_exercise()) return;
   const QString path = QFileDialog::getOpenFileName(
       this, tr("Open exercise"), QString::fromStdString(preset_directory() + "/exercises"),
       tr("Exercises (*.json)"));
@@ -337,6 +357,7 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
   show_status(tr("Exercise started: run the tests, then answer."));
   emit practiceActive(true);
   emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
+  emit testShown(QString(), 0.0);  // at rest: nothing of it is seen before a test is run
 }
 
 void PracticePanel::build_adjusters() {
@@ -400,8 +421,15 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
   const AnswerJudgement j = session_->answer(answers, elapsed_s());
   QStringList remarks;
   for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
+  // only the first answer earns the diagnosis marks (session.h): said when a later one is right
+  const bool later = session_->first_answer() && session_->answers_given() > 1;
+  const QString scored =
+      later && !session_->revealed()
+          ? tr(" (Only the first answer is scored: %1 of 50 for the diagnosis.)")
+                .arg(0.5 * session_->first_answer()->score, 0, 'f', 1)
+          : QString();
   show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
-              " " + remarks.join("; "));
+              " " + remarks.join("; ") + scored);
   // the sliders lie below the answer: brought into view for the instruction just given
   if (j.correct) scroll_->ensureWidgetVisible(correction_box_, 0, 0);
   append_history();
@@ -440,6 +468,7 @@ void PracticePanel::resume() {
   if (!session_ || session_->final_score()) return;
   emit practiceActive(true);
   emit modelChanged(std::make_shared<const ActionModel>(session_->current_model()));
+  emit testShown(QString(), 0.0);  // at rest: nothing of it is seen before a test is run
 }
 
 void PracticePanel::offer_action(const std::string& kind) {

@@ -72,11 +72,16 @@ class PracticePanel : public QWidget {
   void practiceActive(bool active);
   void scored(double total);
   /// A test started: the window plays it on the action from rest, under `input` (an input SPEC,
-  /// "" = no finger), in which the test takes `duration_s` of simulated time.
+  /// "" = no finger), in which the test takes `duration_s` of simulated time. Also when an
+  /// exercise starts or resumes, with no input: the hidden action is shown at rest.
   void testShown(const QString& input, double duration_s);
 
  private:
   void begin(Exercise exercise, ActionModel regulated);
+  /// Asks before an unscored exercise is replaced (the form's Start, a file opened); true: go on.
+  bool leave_running_exercise();
+  /// A yes/no question, No the default.
+  bool confirm(const QString& title, const QString& question);
   void build_adjusters();
   void set_busy(bool busy);
   void show_status(const QString& text);

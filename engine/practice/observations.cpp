@@ -193,6 +193,8 @@ std::string repetition_id(double hz) {
   return id.str();
 }
 
+constexpr double kForteBlowShownSeconds = 0.05;
+
 std::string repetition_spec(double hz) {
   return "motion:sine:" + format_number(hz, 12) + ":full";
 }
@@ -247,7 +249,9 @@ ShownTest shown_test(PracticeTest test) {
     case PracticeTest::SlowPress:
       return {slow_press_spec(), kSlowPressSeconds + kSlowPressHoldSeconds};
     case PracticeTest::ForteBlow:
-      return {forte_blow_spec(), kForteHoldSeconds};
+      // what there is to see: the strike (12-20 ms) and the backcheck's catch (25-35 ms on both
+      // actions); the hold after it is still
+      return {forte_blow_spec(), kForteBlowShownSeconds};
     case PracticeTest::Repetition: {
       const double hz = std::end(kRepetitionFrequencies)[-1];
       return {repetition_spec(hz), kRepetitionCycles / hz};

@@ -40,8 +40,9 @@ struct ShownTest {
   std::string input;
   double duration_s = 0.0;
 };
-/// rest: the action at rest; slow_press and forte_blow: their own inputs and durations;
-/// repetition: its fastest note (kRepetitionFrequencies' last, where a fault shows first).
+/// rest: the action at rest; slow_press: its input and duration; forte_blow: its input, for the
+/// strike and the catch (0.05 s); repetition: its fastest note (kRepetitionFrequencies' last,
+/// where a fault shows first), four cycles.
 ShownTest shown_test(PracticeTest test);
 /// Every test, in the order a technician runs them.
 std::vector<PracticeTest> all_tests();

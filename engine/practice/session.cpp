@@ -91,9 +91,12 @@ AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, d
     history_.push_back({t_s, "answer", answers_text(given) + " → after the answer was shown"});
     return judgement;
   }
+  ++answers_given_;
+  // a wrong answer repeated (Answer clicked twice) is one mistake, not two
+  const bool repeated = !given_answers_.insert(answers_text(given)).second;
   if (!first_answer_)
     first_answer_ = judgement;
-  else if (!judgement.correct && !diagnosed_)
+  else if (!judgement.correct && !diagnosed_ && !repeated)
     ++wrong_answers_after_first_;
   diagnosed_ = diagnosed_ || judgement.correct;
   std::ostringstream detail;

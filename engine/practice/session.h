@@ -17,6 +17,7 @@
 
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -95,6 +96,8 @@ class PracticeSession {
 
   const std::vector<SessionEvent>& history() const { return history_; }
   int tests_used() const { return tests_used_; }
+  /// Answers given before the answer was revealed (repeats included).
+  int answers_given() const { return answers_given_; }
   int hints_used() const { return hints_used_; }
   const std::optional<AnswerJudgement>& first_answer() const { return first_answer_; }
   const std::optional<SessionScore>& final_score() const { return final_score_; }
@@ -107,7 +110,9 @@ class PracticeSession {
   std::vector<PracticeTest> tests_run_;
   int tests_used_ = 0;
   int hints_used_ = 0;
-  int wrong_answers_after_first_ = 0;
+  int wrong_answers_after_first_ = 0;  ///< different wrong answers after the first
+  int answers_given_ = 0;
+  std::set<std::string> given_answers_;  ///< every answer given, in words
   bool diagnosed_ = false;
   bool revealed_ = false;
   std::optional<AnswerJudgement> first_answer_;

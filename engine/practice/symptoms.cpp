@@ -71,9 +71,14 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
     // upright's hammer butt)
     const std::string part =
         seen.label.find("knuckle") != std::string::npos ? "the knuckle" : "the hammer butt";
+    // named for what a technician sees between the parts (on the grand it is the repetition
+    // lever's height, on the upright the capstan's lost motion)
+    const std::string gap_words = part == "the knuckle"
+                                      ? "Larger gap between the jack and the knuckle at rest"
+                                      : "Lost motion at rest (jack to hammer butt)";
     if (more)
       out.add("excess_gap",
-              "Lost motion at rest" + v +
+              gap_words + v +
                   ": the hammer lags the key, power is lost and hammers do not "
                   "return to the same height.",
               seen);
@@ -86,7 +91,8 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
     else
       out.add(
           "small_gap",
-          "Smaller gap at rest" + v + ": little room for the jack to return under " + part + ".",
+          "Smaller gap at rest between the jack and " + part + v +
+              ": little room for the jack to return under it.",
           seen);
   } else if (id == "rest.jack_edge_mm") {
     if (more)

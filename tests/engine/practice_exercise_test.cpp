@@ -245,6 +245,24 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   EXPECT_THROW(write_session_csv("/nonexistent/dir/session.csv", session), InputError);
 }
 
+// Answer clicked twice on the same wrong answer is one mistake: the first answer (the right
+// setting, the wrong direction: 40 of 100, 20 diagnosis marks) loses 5 for one later wrong
+// answer, not 10 for the same one given twice.
+TEST(PracticeSession, AWrongAnswerRepeatedIsOneMistake) {
+  const ActionModel& model = shipped_model("grand");
+  const Exercise e = checking_exercise(model);
+  PracticeSession session(e, model);
+  const FaultAnswer right = exercise_answers(e).front();
+  const FaultAnswer backwards{right.setting, right.direction == "more" ? "less" : "more"};
+  EXPECT_FALSE(session.answer({backwards}, 10.0).correct);
+  EXPECT_FALSE(session.answer({{"drop", "more"}}, 20.0).correct);
+  EXPECT_FALSE(session.answer({{"drop", "more"}}, 21.0).correct);
+  EXPECT_TRUE(session.answer({right}, 30.0).correct);
+  EXPECT_EQ(session.answers_given(), 4);
+  const SessionScore s = session.score({{"checking", 16.0, 19.0, 19.0}}, 60.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis, 15.0);
+}
+
 TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
   // A grand's lever height also moves the hammer's rest (the lever carries the knuckle at
   // rest), so the rest geometry shows a hammer-blow symptom first; the hint must not send the

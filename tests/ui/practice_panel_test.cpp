@@ -4,17 +4,20 @@
 // naming the file and the field; the regulation panel is hidden while practising.
 #include "practice_panel.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QShortcut>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QTimer>
 #include <QWheelEvent>
 
 #include "core/error.h"
@@ -45,6 +48,20 @@ class PracticePanelTest : public QObject {
   void the_exercise_form_offers_the_action_on_screen();
 };
 
+/// Answers the next question box that opens (modal: the click that opens it returns only once
+/// it is answered) with `button`.
+void answer_next_question(QMessageBox::StandardButton button) {
+  auto* poll = new QTimer;
+  QObject::connect(poll, &QTimer::timeout, poll, [poll, button] {
+    if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget())) {
+      poll->stop();
+      poll->deleteLater();
+      box->button(button)->click();
+    }
+  });
+  poll->start(20);
+}
+
 void PracticePanelTest::walk_through_an_exercise() {
   MainWindow window;
   window.open_action("grand");
@@ -64,8 +81,12 @@ void PracticePanelTest::walk_through_an_exercise() {
 
   // a teacher's file with a known fault, so the walk-through can give the right answer
   const QString file = QStringLiteral(PAT_PRESET_DIR) + "/exercises/grand_two_faults.json";
+  window.start("force:pulse:20:40");  // the class's last run
   panel->start_file(file.toStdString());
   QCOMPARE(active.count(), 1);
+  // the hidden action is shown at rest, not played with the last run's input: nothing of it is
+  // seen before a test is run
+  QCOMPARE(window.run_controls()->input_form()->spec(), std::string());
   QVERIFY(panel->session());
   // the regulation panel (true adjuster positions, measured values) is hidden while practising
   QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
@@ -105,11 +126,11 @@ void PracticePanelTest::walk_through_an_exercise() {
   // 250 ms leaves room for a loaded CI machine
   QVERIFY2(longest_gap_ms < 250, qPrintable(QString::number(longest_gap_ms)));
   // the action on screen plays the test from rest (the trainee watches what was read), slowed
-  // so that its 0.3 s take 3 s
+  // so that its strike and catch (0.05 s) take 5 s
   auto* input_form = window.run_controls()->input_form();
   auto shown_speed = [&] { return RunControls::speeds()[window.run_controls()->speed_index()]; };
   QCOMPARE(input_form->spec(), std::string("force:const:40"));
-  QCOMPARE(shown_speed(), 0.1);
+  QCOMPARE(shown_speed(), 0.01);
   auto key_moves = [&] {
     return wait_until(
         [&] {
@@ -119,10 +140,10 @@ void PracticePanelTest::walk_through_an_exercise() {
         20000);
   };
   QVERIFY(key_moves());
-  // the slow press at 1/2: its 1.4 s in 2.8 s, not 14 s
+  // the slow press at 1/5: its 1.4 s in 7 s, not 14 s
   panel->run_test(pat::PracticeTest::SlowPress);
   QCOMPARE(input_form->spec(), std::string("motion:press:1"));
-  QCOMPARE(shown_speed(), 0.5);
+  QCOMPARE(shown_speed(), 0.2);
   QVERIFY(key_moves());
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
   // the rest geometry: the action at rest, no finger, at the speed the class chose
@@ -156,6 +177,9 @@ void PracticePanelTest::walk_through_an_exercise() {
   choose("second_direction", QString::fromStdString(answers[1].direction));
   QTest::mouseClick(panel->findChild<QPushButton*>("answer_button"), Qt::LeftButton);
   QVERIFY2(panel->status_text().startsWith("Correct"), qPrintable(panel->status_text()));
+  // a right answer after a wrong one says what the score makes of it
+  QVERIFY2(panel->status_text().contains("Only the first answer is scored"),
+           qPrintable(panel->status_text()));
   // "now correct it with the sliders": the sliders, below the answer, are scrolled into view
   {
     auto* scroll = panel->findChild<QScrollArea*>("practice_scroll");
@@ -232,6 +256,11 @@ void PracticePanelTest::giving_up_shows_the_answer() {
   panel->start_seed("grand", 5, 1);
   auto* reveal = panel->findChild<QPushButton*>("reveal_button");
   QVERIFY(reveal && reveal->isEnabled());
+  // the button asks first: No keeps the answer hidden, Yes shows it
+  answer_next_question(QMessageBox::No);
+  QTest::mouseClick(reveal, Qt::LeftButton);
+  QVERIFY(!panel->session()->revealed());
+  answer_next_question(QMessageBox::Yes);
   QTest::mouseClick(reveal, Qt::LeftButton);
   const pat::FaultAnswer hidden = pat::exercise_answers(panel->session()->exercise()).front();
   // named as the form names it ("hammer blow", not "hammer_blow")
@@ -271,6 +300,18 @@ void PracticePanelTest::adjuster_sliders_keep_their_keys_and_ignore_a_passing_wh
   QTest::keyClick(slider, Qt::Key_Right);
   QCOMPARE(slider->value(), 1);
   QCOMPARE(steps, 1);
+
+  // the diagnosis's choices likewise: a wheel scrolling the dock past them leaves the answer
+  MainWindow window;
+  window.open_action("grand");
+  window.practice()->start_seed("grand", 5, 1);
+  auto* answer = window.practice()->findChild<QComboBox*>("answer_setting");
+  QVERIFY(answer && answer->isEnabled());
+  const int chosen = answer->currentIndex();
+  QWheelEvent down(QPointF(5, 5), answer->mapToGlobal(QPointF(5, 5)), QPoint(), QPoint(0, -120),
+                   Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+  QApplication::sendEvent(answer, &down);
+  QCOMPARE(answer->currentIndex(), chosen);
 }
 
 void PracticePanelTest::the_exercise_form_offers_the_action_on_screen() {
