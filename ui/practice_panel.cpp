@@ -13,19 +13,22 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <cmath>
 
 #include "core/error.h"
+#include "focus_wheel.h"
 #include "model/preset_loader.h"
 #include "practice/exercise.h"
 #include "practice_report.h"
-#include "focus_wheel.h"
 #include "practice_runner.h"
 #include "setting_names.h"
 #include "step_slider.h"
@@ -209,7 +212,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   scroll->setWidget(content);
   scroll->setWidgetResizable(true);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
-  scroll->setMinimumWidth(content->sizeHint().width() + 24);
+  fit_width();
   outer->addWidget(scroll, 1);
   status_ = new QLabel(this);
   status_->setObjectName("practice_status");
@@ -268,6 +271,22 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
     set_busy(false);
     show_status(tr("Stopped: %1").arg(reason));
   });
+}
+
+void PracticePanel::fit_width() {
+  // the whole form without a horizontal scroll bar (24 px: the vertical one and the frame)
+  int wanted = scroll_->widget()->sizeHint().width() + 24;
+  // never more than half the screen: beyond that the form's lines wrap, the buttons squeeze
+  if (screen()) wanted = std::min(wanted, screen()->availableGeometry().width() / 2);
+  scroll_->setMinimumWidth(wanted);
+}
+
+void PracticePanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  // larger text for a class: the buttons and lines grow, and so must the dock (they were cut
+  // at its right edge); measured once the layouts have taken the new font
+  if (event->type() == QEvent::FontChange || event->type() == QEvent::ApplicationFontChange)
+    QTimer::singleShot(0, this, [this] { fit_width(); });
 }
 
 bool PracticePanel::leave_running_exercise() {
@@ -423,11 +442,10 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
   for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
   // only the first answer earns the diagnosis marks (session.h): said when a later one is right
   const bool later = session_->first_answer() && session_->answers_given() > 1;
-  const QString scored =
-      later && !session_->revealed()
-          ? tr(" (Only the first answer is scored: %1 of 50 for the diagnosis.)")
-                .arg(0.5 * session_->first_answer()->score, 0, 'f', 1)
-          : QString();
+  const QString scored = later && !session_->revealed()
+                             ? tr(" (Only the first answer is scored: %1 of 50 for the diagnosis.)")
+                                   .arg(0.5 * session_->first_answer()->score, 0, 'f', 1)
+                             : QString();
   show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
               " " + remarks.join("; ") + scored);
   // the sliders lie below the answer: brought into view for the instruction just given
@@ -564,11 +582,16 @@ void PracticePanel::show_status(const QString& text) {
 void PracticePanel::append_history() {
   if (!session_) return;
   const auto& events = session_->history();
-  for (std::size_t i = static_cast<std::size_t>(history_->count()); i < events.size(); ++i)
-    history_->addItem(QStringLiteral("%1 s  %2: %3")
-                          .arg(events[i].t_s, 0, 'f', 1)
-                          .arg(QString::fromStdString(events[i].kind))
-                          .arg(readable(QString::fromStdString(events[i].detail))));
+  auto line = [&](std::size_t i) {
+    return QStringLiteral("%1 s  %2: %3")
+        .arg(events[i].t_s, 0, 'f', 1)
+        .arg(QString::fromStdString(events[i].kind))
+        .arg(readable(QString::fromStdString(events[i].detail)));
+  };
+  // the last line may have grown since (a setting's steps one after another are one move)
+  const std::size_t shown = static_cast<std::size_t>(history_->count());
+  if (shown > 0 && shown <= events.size()) history_->item(int(shown) - 1)->setText(line(shown - 1));
+  for (std::size_t i = shown; i < events.size(); ++i) history_->addItem(line(i));
   history_->scrollToBottom();
 }
 

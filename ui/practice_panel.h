@@ -76,7 +76,12 @@ class PracticePanel : public QWidget {
   /// exercise starts or resumes, with no input: the hidden action is shown at rest.
   void testShown(const QString& input, double duration_s);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  /// The form's width: all of it, without a horizontal scroll bar, in the current font.
+  void fit_width();
   void begin(Exercise exercise, ActionModel regulated);
   /// Asks before an unscored exercise is replaced (the form's Start, a file opened); true: go on.
   bool leave_running_exercise();

@@ -177,8 +177,18 @@ void PracticeSession::move_adjuster(const std::string& setting, double delta_mm,
   const Adjuster& a = model.adjusters[model.adjuster_index(setting)];
   with_adjuster(model, setting, a.value + total * 1e-3);
   moves_mm_ = std::move(moves);
+  // one setting's steps one after another (ten 0.01 mm key presses) are one move in the
+  // history, while no more than kMoveMergeSeconds pass between them
+  double step_mm = delta_mm;
+  if (!history_.empty() && history_.back().kind == "move" && last_moved_ == setting &&
+      t_s - history_.back().t_s <= kMoveMergeSeconds) {
+    step_mm += last_move_mm_;
+    history_.pop_back();
+  }
+  last_moved_ = setting;
+  last_move_mm_ = step_mm;
   history_.push_back({t_s, "move",
-                      setting + " " + (delta_mm >= 0 ? "+" : "") + format_number(delta_mm) +
+                      setting + " " + (step_mm >= 0 ? "+" : "") + format_number(step_mm) +
                           " mm (moved " + format_number(total) + " mm in all)"});
 }
 

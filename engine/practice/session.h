@@ -54,6 +54,9 @@ struct SessionScore {
   std::vector<std::string> notes;  ///< one line per component, for the report
 };
 
+/// Steps of one setting closer together than this (s) are one move in the history.
+inline constexpr double kMoveMergeSeconds = 5.0;
+
 class PracticeSession {
  public:
   /// `regulated` is the action the exercise was made for (adjusters at their regulated place).
@@ -112,6 +115,8 @@ class PracticeSession {
   int hints_used_ = 0;
   int wrong_answers_after_first_ = 0;  ///< different wrong answers after the first
   int answers_given_ = 0;
+  std::string last_moved_;               ///< the setting of the history's last move
+  double last_move_mm_ = 0.0;            ///< that move's size, steps merged
   std::set<std::string> given_answers_;  ///< every answer given, in words
   bool diagnosed_ = false;
   bool revealed_ = false;

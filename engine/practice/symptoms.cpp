@@ -89,11 +89,10 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
                   "failure to repeat.",
               seen);
     else
-      out.add(
-          "small_gap",
-          "Smaller gap at rest between the jack and " + part + v +
-              ": little room for the jack to return under it.",
-          seen);
+      out.add("small_gap",
+              "Smaller gap at rest between the jack and " + part + v +
+                  ": little room for the jack to return under it.",
+              seen);
   } else if (id == "rest.jack_edge_mm") {
     if (more)
       out.add("jack_deep",
@@ -120,9 +119,12 @@ void compare_numbers(const Observation& seen, double reg, SymptomList& out) {
                   ": poor control at pianissimo, notes may miss, lost power.",
               seen);
     else if (*seen.value < 0.5)
+      // the hammer may still fall back once escaped (the slow press's held distance says
+      // whether it stays): the risk is named, not a jam the drawing does not show
       out.add("blocking",
-              "Blocking: the hammer escapes almost at the string" + v +
-                  " and jams against it, muting the note.",
+              "The hammer escapes almost at the string" + v +
+                  ": it blocks against the string in a soft blow, muting the note, and double "
+                  "strikes in a loud one.",
               seen);
     else
       out.add("escapes_close",

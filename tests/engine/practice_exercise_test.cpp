@@ -263,6 +263,30 @@ TEST(PracticeSession, AWrongAnswerRepeatedIsOneMistake) {
   EXPECT_DOUBLE_EQ(s.diagnosis, 15.0);
 }
 
+// A setting stepped from the keyboard (ten 0.01 mm presses) is one move in the history, as long
+// as the steps follow each other within kMoveMergeSeconds; another setting, or a pause, starts a
+// new one.
+TEST(PracticeSession, OneSettingsStepsOneAfterAnotherAreOneMove) {
+  const ActionModel& model = shipped_model("grand");
+  PracticeSession session(checking_exercise(model), model);
+  auto moves = [&session] {
+    std::vector<std::string> details;
+    for (const SessionEvent& e : session.history())
+      if (e.kind == "move") details.push_back(e.detail);
+    return details;
+  };
+  for (int i = 0; i < 10; ++i) session.move_adjuster("checking", -0.01, 10.0 + 0.2 * i);
+  ASSERT_EQ(moves().size(), 1u);
+  EXPECT_EQ(moves().back(), "checking -0.1 mm (moved -0.1 mm in all)");
+  session.move_adjuster("checking", -0.01, 10.0 + 0.2 * 9 + kMoveMergeSeconds + 1.0);
+  ASSERT_EQ(moves().size(), 2u);
+  EXPECT_EQ(moves().back(), "checking -0.01 mm (moved -0.11 mm in all)");
+  session.move_adjuster("drop", 0.05, 20.0);
+  session.move_adjuster("checking", 0.01, 20.5);
+  EXPECT_EQ(moves().size(), 4u);
+  EXPECT_NEAR(session.moved_mm("checking"), -0.1, 1e-12);
+}
+
 TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
   // A grand's lever height also moves the hammer's rest (the lever carries the knuckle at
   // rest), so the rest geometry shows a hammer-blow symptom first; the hint must not send the

@@ -46,6 +46,7 @@ class PracticePanelTest : public QObject {
   void giving_up_shows_the_answer();
   void adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel();
   void the_exercise_form_offers_the_action_on_screen();
+  void larger_text_widens_the_practice_form();
 };
 
 /// Answers the next question box that opens (modal: the click that opens it returns only once
@@ -325,6 +326,31 @@ void PracticePanelTest::the_exercise_form_offers_the_action_on_screen() {
   window.open_action("grand");
   window.show_practice(true);
   QCOMPARE(action->currentText(), QString("grand"));
+  window.show_practice(false);
+}
+
+void PracticePanelTest::larger_text_widens_the_practice_form() {
+  MainWindow window;
+  window.open_action("grand");
+  window.resize(1400, 900);
+  window.show();
+  window.show_practice(true);
+  window.practice()->start_seed("grand", 5, 1);
+  auto* scroll = window.practice()->findChild<QScrollArea*>("practice_scroll");
+  QVERIFY(scroll);
+  const int normal = scroll->minimumWidth();
+  window.set_large_text(true);
+  // the form grows with its text, so that no button is cut at the dock's right edge
+  QVERIFY2(wait_until([&] { return scroll->minimumWidth() > normal; }),
+           qPrintable(QString("%1 → %2 px").arg(normal).arg(scroll->minimumWidth())));
+  QTest::qWait(50);
+  for (QPushButton* b : window.practice()->findChildren<QPushButton*>())
+    if (b->isVisible())
+      QVERIFY2(b->width() >= b->sizeHint().width(), qPrintable(QString("%1: %2 of %3 px")
+                                                                   .arg(b->text())
+                                                                   .arg(b->width())
+                                                                   .arg(b->sizeHint().width())));
+  window.set_large_text(false);
   window.show_practice(false);
 }
 
