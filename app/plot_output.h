@@ -17,8 +17,10 @@ void check_plot_path(const std::string& path);
 bool plotting_available();
 /// Whether a valid --plot path writes the plotted columns as CSV (the extension, any case).
 bool is_csv_plot_path(const std::string& path);
-/// Writes the plots, stacked top to bottom. Throws InputError naming the file when it cannot
-/// be written or when there is nothing to plot.
+/// Writes the plots, stacked top to bottom (a CSV: those over the first plot's x axis, and those
+/// over each other x to STEM_<x column>.csv beside it; those names are not checked before the
+/// work, being known only from the plots). Throws InputError naming the file when it cannot be
+/// written or when there is nothing to plot.
 void write_plots(const std::string& path, const std::vector<PlotSpec>& plots);
 
 /// The --plot option of a command: reads it and checks its extension at once (before the
@@ -28,7 +30,7 @@ class PlotOption {
   explicit PlotOption(std::string path);
   bool given() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
-  /// A CSV export: one table, so the plots must share their x axis.
+  /// A CSV export: one table per x axis (write_plots puts the plots over another x beside it).
   bool writes_csv() const { return given() && is_csv_plot_path(path_); }
   /// Writes when given; returns whether it wrote.
   bool write(const std::vector<PlotSpec>& plots) const;

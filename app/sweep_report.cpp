@@ -143,7 +143,8 @@ std::string sweep_summary(const SweepResult& r) {
                // nothing failed, yet no steady window: too few judged cycles in the band
                : "no maximum: the band's " + std::to_string(judged_cycle_points(r).size()) +
                      " judged cycles all strike once, but a maximum needs a steady window of "
-                     "them (--window); widen the band or slow the chirp (--rate)";
+                     "them (--window); widen the band" +
+                     (r.mode == SweepMode::chirp ? " or slow the chirp (--rate)" : "");
   } else if (!r.first_failure) {
     text += " (a run stopped while settling)";
   } else {

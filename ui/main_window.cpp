@@ -449,6 +449,10 @@ void MainWindow::build_practice() {
   // measure every setting against its target: both hidden while an exercise runs; closing the
   // practice dock returns to the regulated action
   connect(practice_, &PracticePanel::practiceActive, this, [this](bool active) {
+    if (active && !practising_) {  // the class's own input and speed, given back afterwards
+      input_before_practice_ = run_controls_->input_form()->spec();
+      speed_before_practice_ = run_controls_->speed_index();
+    }
     practising_ = active;
     regulation_dock_->setVisible(!active);
     analyses_dock_->setVisible(!active);
@@ -472,6 +476,9 @@ void MainWindow::end_practice() {
   regulation_dock_->show();
   analyses_dock_->show();
   enable_action_changes(true);
+  // the tests shown took over the run input and the speed: the class's own come back
+  run_controls_->input_form()->set_spec(input_before_practice_);
+  run_controls_->set_speed_index(speed_before_practice_);
   if (!action_name_.empty()) open_action(action_name_);
 }
 

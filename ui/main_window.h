@@ -170,7 +170,9 @@ class MainWindow : public QMainWindow {
   QAction* open_preset_action_ = nullptr;
   QAction* save_preset_action_ = nullptr;
   QAction* practice_action_ = nullptr;
-  QString running_input_;  ///< what drives the key (PlaybackController::inputChanged)
+  std::string input_before_practice_;  ///< the run input when an exercise began
+  int speed_before_practice_ = 3;      ///< and the speed (index into RunControls::speeds)
+  QString running_input_;              ///< what drives the key (PlaybackController::inputChanged)
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

@@ -15,6 +15,7 @@
 #include <QRegularExpression>
 #include <QScreen>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -211,7 +212,8 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   column->addWidget(history_box, 1);
   scroll->setWidget(content);
   scroll->setWidgetResizable(true);
-  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  // wider than fit_width's cap (very large text): scrolled sideways rather than cut
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
   fit_width();
   outer->addWidget(scroll, 1);
   status_ = new QLabel(this);
@@ -276,8 +278,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
 void PracticePanel::fit_width() {
   // the whole form without a horizontal scroll bar (24 px: the vertical one and the frame)
   int wanted = scroll_->widget()->sizeHint().width() + 24;
-  // never more than half the screen: beyond that the form's lines wrap, the buttons squeeze
-  if (screen()) wanted = std::min(wanted, screen()->availableGeometry().width() / 2);
+  // never more than half the screen (or of a window larger than it, as the regulation dock
+  // measures): beyond that the form scrolls sideways
+  const int room =
+      std::max(screen() ? screen()->availableGeometry().width() : 0, window()->width()) / 2;
+  if (room > 0) wanted = std::min(wanted, room);
   scroll_->setMinimumWidth(wanted);
 }
 
@@ -441,15 +446,18 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
   QStringList remarks;
   for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
   // only the first answer earns the diagnosis marks (session.h): said when a later one is right
-  const bool later = session_->first_answer() && session_->answers_given() > 1;
-  const QString scored = later && !session_->revealed()
-                             ? tr(" (Only the first answer is scored: %1 of 50 for the diagnosis.)")
-                                   .arg(0.5 * session_->first_answer()->score, 0, 'f', 1)
+  const QString scored = j.correct && session_->answers_given() > 1 && !session_->revealed()
+                             ? tr(" (Only the first answer is scored: %1 of 50 for the "
+                                  "diagnosis so far.)")
+                                   .arg(session_->diagnosis_marks(), 0, 'f', 1)
                              : QString();
   show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
               " " + remarks.join("; ") + scored);
   // the sliders lie below the answer: brought into view for the instruction just given
-  if (j.correct) scroll_->ensureWidgetVisible(correction_box_, 0, 0);
+  if (j.correct) {  // its top at the top (a box taller than the view would be centred)
+    QScrollBar* bar = scroll_->verticalScrollBar();
+    bar->setValue(std::min(correction_box_->y(), bar->maximum()));
+  }
   append_history();
   return j;
 }

@@ -46,8 +46,10 @@ SensitivityMetricGroup blow_metrics(double key_force_n) {
     // strike, README "Escapement in loud blows is a slide")
     const int button = model.landmarks.letoff_contact;
     double velocity = kNaN, let_off = kNaN;
-    while (sim.time() < options.duration_s && std::isnan(velocity)) {
-      if (!sim.step(options.duration_s)) break;
+    bool running = true;
+    while (running && sim.time() < options.duration_s && std::isnan(velocity)) {
+      running = sim.step(options.duration_s);
+      // read the step's events and contacts even when it ended the run (as simulate() does)
       if (std::isnan(let_off) && button >= 0 && sim.contact_penetrations()[button] > 0.0)
         let_off = sim.time() * 1e3;
       for (const SimEvent& e : sim.events())

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -92,8 +93,13 @@ AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, d
     return judgement;
   }
   ++answers_given_;
-  // a wrong answer repeated (Answer clicked twice) is one mistake, not two
-  const bool repeated = !given_answers_.insert(answers_text(given)).second;
+  // a wrong answer repeated (Answer clicked twice, or its two faults named in the other order)
+  // is one mistake, not two
+  std::vector<FaultAnswer> in_order = given;
+  std::sort(in_order.begin(), in_order.end(), [](const FaultAnswer& a, const FaultAnswer& b) {
+    return std::tie(a.setting, a.direction) < std::tie(b.setting, b.direction);
+  });
+  const bool repeated = !given_answers_.insert(answers_text(in_order)).second;
   if (!first_answer_)
     first_answer_ = judgement;
   else if (!judgement.correct && !diagnosed_ && !repeated)
@@ -104,6 +110,11 @@ AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, d
          << format_number(judgement.score) << ")";
   history_.push_back({t_s, "answer", detail.str()});
   return judgement;
+}
+
+double PracticeSession::diagnosis_marks() const {
+  const double first = first_answer_ ? first_answer_->score : 0.0;
+  return std::max(0.0, 0.5 * first - 5.0 * wrong_answers_after_first_);
 }
 
 std::string PracticeSession::hint(double t_s) {
@@ -185,11 +196,18 @@ void PracticeSession::move_adjuster(const std::string& setting, double delta_mm,
     step_mm += last_move_mm_;
     history_.pop_back();
   }
+  // sums of 0.01 mm steps: to the micrometre (steps that undo each other leave no move)
+  step_mm = std::round(step_mm * 1e3) / 1e3;
+  if (step_mm == 0.0) {
+    last_moved_.clear();  // nothing to continue
+    return;
+  }
   last_moved_ = setting;
   last_move_mm_ = step_mm;
   history_.push_back({t_s, "move",
-                      setting + " " + (step_mm >= 0 ? "+" : "") + format_number(step_mm) +
-                          " mm (moved " + format_number(total) + " mm in all)"});
+                      setting + " " + (step_mm > 0 ? "+" : "") + format_number(step_mm) +
+                          " mm (moved " + format_number(std::round(total * 1e3) / 1e3) +
+                          " mm in all)"});
 }
 
 double PracticeSession::moved_mm(const std::string& setting) const {
@@ -213,7 +231,7 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
   s.time_s = t_s;
   s.diagnosed = diagnosed_;
   const double first = first_answer_ ? first_answer_->score : 0.0;
-  s.diagnosis = std::max(0.0, 0.5 * first - 5.0 * wrong_answers_after_first_);
+  s.diagnosis = diagnosis_marks();
   s.notes.push_back("diagnosis " + format_number(s.diagnosis) + "/50: first answer " +
                     format_number(first) + "/100, " + std::to_string(wrong_answers_after_first_) +
                     " wrong answers after it");

@@ -99,6 +99,9 @@ class PracticeSession {
 
   const std::vector<SessionEvent>& history() const { return history_; }
   int tests_used() const { return tests_used_; }
+  /// The diagnosis marks so far (0–50): half the first answer's score, 5 off per different
+  /// wrong answer after it.
+  double diagnosis_marks() const;
   /// Answers given before the answer was revealed (repeats included).
   int answers_given() const { return answers_given_; }
   int hints_used() const { return hints_used_; }

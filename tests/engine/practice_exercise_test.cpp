@@ -246,8 +246,8 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
 }
 
 // Answer clicked twice on the same wrong answer is one mistake: the first answer (the right
-// setting, the wrong direction: 40 of 100, 20 diagnosis marks) loses 5 for one later wrong
-// answer, not 10 for the same one given twice.
+// setting, the wrong direction: 40 of 100, 20 diagnosis marks) loses 5 for each different later
+// wrong answer (two here), not for the same one given again or in another order.
 TEST(PracticeSession, AWrongAnswerRepeatedIsOneMistake) {
   const ActionModel& model = shipped_model("grand");
   const Exercise e = checking_exercise(model);
@@ -257,10 +257,14 @@ TEST(PracticeSession, AWrongAnswerRepeatedIsOneMistake) {
   EXPECT_FALSE(session.answer({backwards}, 10.0).correct);
   EXPECT_FALSE(session.answer({{"drop", "more"}}, 20.0).correct);
   EXPECT_FALSE(session.answer({{"drop", "more"}}, 21.0).correct);
+  // the same pair named in the other order is the same answer
+  EXPECT_FALSE(session.answer({{"drop", "more"}, {"let_off", "less"}}, 22.0).correct);
+  EXPECT_FALSE(session.answer({{"let_off", "less"}, {"drop", "more"}}, 23.0).correct);
+  EXPECT_DOUBLE_EQ(session.diagnosis_marks(), 10.0);  // two different wrong answers
   EXPECT_TRUE(session.answer({right}, 30.0).correct);
-  EXPECT_EQ(session.answers_given(), 4);
+  EXPECT_EQ(session.answers_given(), 6);
   const SessionScore s = session.score({{"checking", 16.0, 19.0, 19.0}}, 60.0);
-  EXPECT_DOUBLE_EQ(s.diagnosis, 15.0);
+  EXPECT_DOUBLE_EQ(s.diagnosis, 10.0);
 }
 
 // A setting stepped from the keyboard (ten 0.01 mm presses) is one move in the history, as long
@@ -285,6 +289,11 @@ TEST(PracticeSession, OneSettingsStepsOneAfterAnotherAreOneMove) {
   session.move_adjuster("checking", 0.01, 20.5);
   EXPECT_EQ(moves().size(), 4u);
   EXPECT_NEAR(session.moved_mm("checking"), -0.1, 1e-12);
+  // steps that undo each other leave no move (not "+3.5e-18 mm")
+  session.move_adjuster("drop", 0.01, 40.0);
+  session.move_adjuster("drop", -0.01, 40.5);
+  EXPECT_EQ(moves().size(), 4u);
+  EXPECT_EQ(moves().back(), "checking +0.01 mm (moved -0.1 mm in all)");
 }
 
 TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
