@@ -57,6 +57,23 @@ QString test_title(PracticeTest test) {
   return {};
 }
 
+/// The readings of a test, " (label value unit; …)", or "" when none has a value.
+QString readings_text(const std::vector<Observation>& seen) {
+  QStringList readings;
+  for (const Observation& o : seen) {
+    if (!o.value) continue;
+    const bool fraction = o.unit == "fraction";  // of the hammer's travel: read as a percentage
+    double value = fraction ? 100.0 * *o.value : *o.value;
+    if (std::abs(value) < 0.005) value = 0.0;  // "0.00", not "-0.00"
+    readings << QStringLiteral("%1 %2 %3")
+                    .arg(QString::fromStdString(o.label))
+                    .arg(value, 0, 'f', 2)
+                    .arg(fraction ? QStringLiteral("%") : QString::fromStdString(o.unit))
+                    .trimmed();
+  }
+  return readings.isEmpty() ? QString() : " (" + readings.join("; ") + ")";
+}
+
 /// Long lines wrap to the list's width instead of scrolling sideways.
 void wrap_lines(QListWidget* list) {
   list->setWordWrap(true);
@@ -228,24 +245,26 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
     progress_->setValue(static_cast<int>(std::lround(100 * f)));
     progress_->setFormat(stage + " %p%");
   });
-  connect(runner_, &PracticeRunner::observed, this,
-          [this](int test, const std::vector<Observation>& seen,
-                 const std::vector<Observation>& regulated) {
-            set_busy(false);
-            if (!session_) return;
-            const auto symptoms = session_->record_test(static_cast<PracticeTest>(test), seen,
-                                                        regulated, elapsed_s());
-            const QString name = test_title(static_cast<PracticeTest>(test));
-            if (symptoms.empty())
-              symptoms_->addItem(tr("%1: nothing differs from a regulated action.").arg(name));
-            for (const Symptom& s : symptoms)
-              symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
-            symptoms_->scrollToBottom();
-            append_history();
-            const int used = session_->tests_used();
-            show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
-                                  : tr("%1 done (%2 tests used).").arg(name).arg(used));
-          });
+  connect(
+      runner_, &PracticeRunner::observed, this,
+      [this](int test, const std::vector<Observation>& seen,
+             const std::vector<Observation>& regulated) {
+        set_busy(false);
+        if (!session_) return;
+        const auto symptoms =
+            session_->record_test(static_cast<PracticeTest>(test), seen, regulated, elapsed_s());
+        const QString name = test_title(static_cast<PracticeTest>(test));
+        if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
+          symptoms_->addItem(
+              tr("%1: nothing differs from a regulated action%2.").arg(name, readings_text(seen)));
+        for (const Symptom& s : symptoms)
+          symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
+        symptoms_->scrollToBottom();
+        append_history();
+        const int used = session_->tests_used();
+        show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
+                              : tr("%1 done (%2 tests used).").arg(name).arg(used));
+      });
   connect(runner_, &PracticeRunner::measured, this,
           [this](const std::vector<CorrectionReading>& readings) {
             set_busy(false);

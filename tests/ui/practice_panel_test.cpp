@@ -219,6 +219,14 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (const pat::HiddenFault& f : panel->session()->exercise().faults)
     panel->move_adjuster(f.setting, -f.adjuster_mm);
   QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.0);
+  // a test of the corrected action that finds nothing amiss still gives its readings, which a
+  // correction is fine-tuned by
+  panel->run_test(pat::PracticeTest::Rest);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  const QString last = panel->symptom_lines().last();
+  QVERIFY2(last.startsWith("Rest geometry: nothing differs from a regulated action (") &&
+               last.contains(" mm"),
+           qPrintable(last));
 
   QSignalSpy scored(panel, &PracticePanel::scored);
   panel->finish();
