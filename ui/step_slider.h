@@ -1,20 +1,21 @@
 // A slider for adjuster moves: it keeps the arrow, page and Home/End keys when it has the focus
 // (the window's Left/Right shortcuts step the simulation otherwise, so a focused slider could
-// not be moved 0.01 mm from the keyboard), and ignores the mouse wheel unless it has the focus,
-// so that scrolling a panel past it does not move an adjuster.
+// not be moved 0.01 mm from the keyboard), and ignores the mouse wheel unless it has the focus
+// (FocusWheel), so that scrolling a panel past it does not move an adjuster.
 #pragma once
 
 #include <QKeyEvent>
 #include <QSlider>
-#include <QWheelEvent>
+
+#include "focus_wheel.h"
 
 namespace pat::ui {
 
-class StepSlider : public QSlider {
+class StepSlider : public FocusWheel<QSlider> {
  public:
   explicit StepSlider(Qt::Orientation orientation, QWidget* parent = nullptr)
-      : QSlider(orientation, parent) {
-    setFocusPolicy(Qt::StrongFocus);
+      : FocusWheel<QSlider>(parent) {
+    setOrientation(orientation);
   }
 
  protected:
@@ -36,12 +37,6 @@ class StepSlider : public QSlider {
       }
     }
     return QSlider::event(e);
-  }
-  void wheelEvent(QWheelEvent* e) override {
-    if (hasFocus())
-      QSlider::wheelEvent(e);
-    else
-      e->ignore();  // to the scroll area around it
   }
 };
 
