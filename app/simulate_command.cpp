@@ -42,7 +42,8 @@ int run_simulate(const std::vector<std::string>& args) {
   if (!fixed_step && cl.has("--step"))
     throw InputError("--step sets w2's fixed step; " + options.integrator +
                      " chooses its own steps (set its tolerance with --rtol)");
-  options.integrator_options.fixed_step_s = cl.positive_number_or("--step", 1e-5);
+  options.integrator_options.fixed_step_s =
+      cl.positive_number_or("--step", options.integrator_options.fixed_step_s);
   options.integrator_options.relative_tolerance =
       cl.positive_number_or("--rtol", options.integrator_options.relative_tolerance);
   // absolute tolerance on angles (rad) and rates (rad/s): a hundredth of the relative one, as

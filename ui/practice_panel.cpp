@@ -615,10 +615,12 @@ void PracticePanel::append_history() {
         .arg(QString::fromStdString(events[i].kind))
         .arg(readable(QString::fromStdString(events[i].detail)));
   };
-  // the last line may have grown since (a setting's steps one after another are one move)
-  const std::size_t shown = static_cast<std::size_t>(history_->count());
-  if (shown > 0 && shown <= events.size()) history_->item(int(shown) - 1)->setText(line(shown - 1));
-  for (std::size_t i = shown; i < events.size(); ++i) history_->addItem(line(i));
+  // the session's last move may have grown or gone since (steps one after another are one
+  // move, steps that undo each other none): the last line shown is written again
+  const int kept = std::max(0, static_cast<int>(events.size()) - 1);
+  while (history_->count() > kept) delete history_->takeItem(history_->count() - 1);
+  for (std::size_t i = static_cast<std::size_t>(history_->count()); i < events.size(); ++i)
+    history_->addItem(line(i));
   history_->scrollToBottom();
 }
 

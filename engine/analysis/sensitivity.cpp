@@ -50,11 +50,12 @@ SensitivityMetricGroup blow_metrics(double key_force_n) {
     while (running && sim.time() < options.duration_s && std::isnan(velocity)) {
       running = sim.step(options.duration_s);
       // read the step's events and contacts even when it ended the run (as simulate() does)
-      if (std::isnan(let_off) && button >= 0 && sim.contact_penetrations()[button] > 0.0)
+      if (std::isnan(let_off) && button >= 0 && sim.contact_closed(button))
         let_off = sim.time() * 1e3;
-      for (const SimEvent& e : sim.events())
-        if (e.type == "impact") {
-          velocity = e.hammer_velocity;
+      const auto& events = sim.events();
+      for (auto e = events.end() - sim.new_event_count(); e != events.end(); ++e)
+        if (e->type == "impact") {
+          velocity = e->hammer_velocity;
           break;
         }
     }

@@ -548,12 +548,9 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
     const double shortest_s = 0.5 / kMaxKeyMotionHz;
     if (seconds < shortest_s)
       spec_error(spec, "the press must take at least " + number_text(shortest_s) + " s (got " +
-                           number_text(seconds) +
-                           " s), half a period of the fastest key "
-                           "motion accepted (" +
-                           number_text(kMaxKeyMotionHz) +
-                           " Hz): no key "
-                           "is pressed faster");
+                           number_text(seconds) + " s), half a period of the fastest key motion " +
+                           "accepted (" + number_text(kMaxKeyMotionHz) +
+                           " Hz): no key is pressed faster");
     require_full_dip(spec, context);
     return std::make_unique<PressMotion>(spec, context.full_dip_angle_rad, seconds);
   }

@@ -63,6 +63,9 @@ class Simulator {
   /// Signed contact penetrations at time() (m; < 0: the gap still open), by contact index.
   /// Computed on the first call after a step: the steps themselves only need their signs.
   const std::vector<double>& contact_penetrations();
+  /// Whether contact `c` is closed at time(): the sign the steps keep, without the exact
+  /// penetrations contact_penetrations() computes (cheap enough to ask after every step).
+  bool contact_closed(int c) const { return penetration_[c] > 0.0; }
   /// Events found so far, in time order.
   const std::vector<SimEvent>& events() const { return events_; }
   /// Events reported by the latest step() (or finish_events()) call: the last ones of
