@@ -7,6 +7,10 @@
 
 namespace pat::app {
 
+/// Exit code of a simulation that stopped (unphysical penetration, divergence): its results up to
+/// the stop are written, as for a run that ended.
+constexpr int kExitRunStopped = 3;
+
 int run_simulate(const std::vector<std::string>& args);
 int run_bench(const std::vector<std::string>& args);
 /// bench --window: the trainer window's frame rate and slider latency (bench_window_command.cpp)

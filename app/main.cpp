@@ -97,6 +97,8 @@ key angles with its rows of the --calibration points (their 'sensor' names the c
 diagnose then drives the model with that key motion instead of an estimated finger force.
 --view frames the whole action (default) or a close-up of the escapement (jack, knuckle or
 butt, let-off button) or of the checking (hammer head and tail, backcheck); View menu, Ctrl+1-3.
+exit codes: 0 done, 2 bad input (the message names the option, file or field), 3 simulate's run
+stopped (unphysical or diverging; what it computed up to the stop is written), 1 other failures.
 --screenshot PNG opens the window, plays a blow until the hammer is 2.5 mm from the string,
 saves a screenshot of the window and exits (works with QT_QPA_PLATFORM=offscreen).
 )";
@@ -124,7 +126,8 @@ std::string subcommand_usage(const std::string& command) {
       if (line.empty()) continue;
       // a note starts with what it explains; its other lines continue it
       const bool starts_note = line.rfind("input SPEC", 0) == 0 ||
-                               line.rfind("effects (--effect", 0) == 0 || line.rfind("--", 0) == 0;
+                               line.rfind("effects (--effect", 0) == 0 ||
+                               line.rfind("exit codes", 0) == 0 || line.rfind("--", 0) == 0;
       if (starts_note || notes.empty())
         notes.push_back(line + "\n");
       else
@@ -141,7 +144,8 @@ std::string subcommand_usage(const std::string& command) {
   std::string text = "usage:\n" + entries;
   for (const std::string& note : notes) {
     const std::string subject = note_subject(note.substr(0, note.find('\n')));
-    if (entries.find(subject) != std::string::npos) text += "\n" + note;
+    // the exit codes hold for every subcommand
+    if (subject == "exit" || entries.find(subject) != std::string::npos) text += "\n" + note;
   }
   return text;
 }

@@ -2,7 +2,7 @@
 # Installs the Debian bookworm packages the project needs, if any is missing.
 set -euo pipefail
 packages=(build-essential cmake ninja-build pkg-config python3
-          libeigen3-dev nlohmann-json3-dev libsundials-dev libgtest-dev libgmock-dev
+          libeigen3-dev nlohmann-json3-dev libsundials-dev libgtest-dev libgmock-dev libbenchmark-dev
           qt6-base-dev qt6-svg-dev libqcustomplot-dev xvfb imagemagick)
 missing=()
 for p in "${packages[@]}"; do

@@ -208,8 +208,10 @@ status=0
   >stdout.txt 2>stderr.txt || status=$?
 if ! grep -q '"status": "stopped"' stdout.txt || ! grep -q "diverged" stdout.txt; then
   fail "a diverging run: not reported as stopped and diverged: $(cat stdout.txt stderr.txt)"
+elif [[ $status -ne 3 ]] || ! grep -q "the run stopped at t = .*diverged" stderr.txt; then
+  fail "a stopped run: exit code $status (expected 3) or no cause on stderr: $(cat stderr.txt)"
 else
-  echo "ok: a diverging run is stopped: $(grep stop_cause stdout.txt)"
+  echo "ok: a diverging run is stopped, exit code 3: $(grep stop_cause stdout.txt)"
 fi
 
 # --- a run that leaves the action's geometry names the part that went out of its travel --------
