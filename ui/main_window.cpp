@@ -123,8 +123,10 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       show_run_status();
     }
     if (!controller_->playing()) show_run_status();  // paused: a step or seek moves its time
+    if (practice_test_end_s_ >= 0.0 && frame.t >= practice_test_end_s_) end_practice_test_shown();
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
+    end_practice_test_shown();  // what it found is not kept waiting for a run that cannot go on
     show_run_status();
     // what made it diverge may be a moved setting or the input itself (a file's huge force)
     const bool moved = model_ && adjuster_settings_text(*model_) != "regulated";
@@ -147,6 +149,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(controller_, &PlaybackController::playingChanged, this, &MainWindow::show_run_status);
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
+    end_practice_test_shown();  // another run replaces the test on screen
     hide_banner();
     plots_->clear();
     if (!controller_->replaying()) {
@@ -445,6 +448,7 @@ void MainWindow::build_practice() {
   regulation_dock_->raise();  // the regulation tab in front, as before the practice tab joined
   connect(practice_, &PracticePanel::modelChanged, this, &MainWindow::practise_on);
   connect(practice_, &PracticePanel::testShown, this, &MainWindow::show_practice_test);
+  practice_->set_readings_wait_for_playback(true);  // the window plays each test first
   // the regulation panel shows true adjuster positions and measured values, the analyses
   // measure every setting against its target: both hidden while an exercise runs; closing the
   // practice dock returns to the regulated action
@@ -454,6 +458,7 @@ void MainWindow::build_practice() {
       speed_before_practice_ = run_controls_->speed_index();
     }
     practising_ = active;
+    if (!active) end_practice_test_shown();
     regulation_dock_->setVisible(!active);
     analyses_dock_->setVisible(!active);
     enable_action_changes(!active);
@@ -567,7 +572,14 @@ void MainWindow::show_practice_test(const QString& input, double duration_s) {
       if (duration_s / speeds[i] <= kShownTestWallSeconds) chosen = i;
     run_controls_->set_speed_index(chosen);
   }
-  start(input.toStdString());
+  start(input.toStdString());  // (its restart ends the test shown before)
+  practice_test_end_s_ = duration_s > 0.0 ? duration_s : -1.0;
+}
+
+void MainWindow::end_practice_test_shown() {
+  if (practice_test_end_s_ < 0.0) return;
+  practice_test_end_s_ = -1.0;
+  practice_->shown_test_played();
 }
 
 void MainWindow::start(const std::string& spec) {

@@ -170,6 +170,11 @@ class MainWindow : public QMainWindow {
   QAction* open_preset_action_ = nullptr;
   QAction* save_preset_action_ = nullptr;
   QAction* practice_action_ = nullptr;
+  /// Simulated time (s) at which the practice test on screen has been played (its readings are
+  /// then shown, PracticePanel::shown_test_played); negative: no test is being played.
+  double practice_test_end_s_ = -1.0;
+  /// Tells the practice panel that the test on screen is over (played, stopped or replaced).
+  void end_practice_test_shown();
   std::string input_before_practice_;  ///< the run input when an exercise began
   int speed_before_practice_ = 3;      ///< and the speed (index into RunControls::speeds)
   QString running_input_;              ///< what drives the key (PlaybackController::inputChanged)

@@ -254,16 +254,26 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
         const auto symptoms =
             session_->record_test(static_cast<PracticeTest>(test), seen, regulated, elapsed_s());
         const QString name = test_title(static_cast<PracticeTest>(test));
-        if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
-          symptoms_->addItem(
-              tr("%1: nothing differs from a regulated action%2.").arg(name, readings_text(seen)));
-        for (const Symptom& s : symptoms)
-          symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
-        symptoms_->scrollToBottom();
-        append_history();
         const int used = session_->tests_used();
-        show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
-                              : tr("%1 done (%2 tests used).").arg(name).arg(used));
+        held_readings_ = [this, name, symptoms, seen, used] {
+          if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
+            symptoms_->addItem(tr("%1: nothing differs from a regulated action%2.")
+                                   .arg(name, readings_text(seen)));
+          for (const Symptom& s : symptoms)
+            symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
+          symptoms_->scrollToBottom();
+          append_history();  // its line names the symptoms too
+          show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
+                                : tr("%1 done (%2 tests used).").arg(name).arg(used));
+        };
+        // what the test found is seen on the action before it is read in words (a class watches
+        // the hammer bounce before the list says "double strike")
+        if (shown_test_playing_)
+          show_status(tr("%1: read. What it found appears when the action on screen has played "
+                         "it.")
+                          .arg(name));
+        else
+          release_readings();
       });
   connect(runner_, &PracticeRunner::measured, this,
           [this](const std::vector<CorrectionReading>& readings) {
@@ -376,6 +386,8 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
                      e.what() + ")");
   }
   runner_->reset_cache();
+  held_readings_ = nullptr;  // the last exercise's
+  shown_test_playing_ = false;
   regulated_ = std::make_shared<const ActionModel>(regulated);
   session_ = std::make_unique<PracticeSession>(std::move(exercise), std::move(regulated));
   clock_.start();
@@ -444,11 +456,25 @@ void PracticePanel::build_adjusters() {
   }
 }
 
+void PracticePanel::shown_test_played() {
+  shown_test_playing_ = false;
+  release_readings();
+}
+
+void PracticePanel::release_readings() {
+  if (!held_readings_) return;
+  const std::function<void()> show = std::move(held_readings_);
+  held_readings_ = nullptr;
+  show();
+}
+
 void PracticePanel::run_test(PracticeTest test) {
   if (!session_ || runner_->running()) return;
+  release_readings();  // the previous test's, if its playback was cut short
   set_busy(true);
   progress_->setValue(0);
   const ShownTest shown = shown_test(test);
+  shown_test_playing_ = readings_wait_for_playback_ && shown.duration_s > 0.0;
   emit testShown(QString::fromStdString(shown.input), shown.duration_s);
   show_status(test == PracticeTest::Rest
                   ? tr("%1: the action rests on screen while it is measured.").arg(test_title(test))
@@ -461,6 +487,7 @@ void PracticePanel::run_test(PracticeTest test) {
 
 AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& answers) {
   if (!session_) throw InputError("no exercise is running");
+  release_readings();  // the history in the order of the session's
   const AnswerJudgement j = session_->answer(answers, elapsed_s());
   QStringList remarks;
   for (const std::string& r : j.remarks) remarks << QString::fromStdString(r);
@@ -493,6 +520,7 @@ void PracticePanel::answer_from_form() {
 
 QString PracticePanel::request_hint() {
   if (!session_) return {};
+  release_readings();
   const QString hint = QString::fromStdString(session_->hint(elapsed_s()));
   show_status(tr("Hint: %1").arg(hint));
   append_history();
@@ -501,6 +529,7 @@ QString PracticePanel::request_hint() {
 
 QString PracticePanel::reveal_answer() {
   if (!session_) return {};
+  release_readings();
   const QString text = QString::fromStdString(session_->reveal(elapsed_s()));
   show_status(text + " " + tr("Answers from now on are judged but not scored."));
   hint_button_->setEnabled(false);  // nothing left to hint
@@ -524,6 +553,7 @@ void PracticePanel::offer_action(const std::string& kind) {
 
 void PracticePanel::move_adjuster(const std::string& setting, double delta_mm) {
   if (!session_) throw InputError("no exercise is running");
+  release_readings();
   session_->move_adjuster(setting, delta_mm, elapsed_s());
   const double moved = session_->moved_mm(setting);
   if (QSlider* slider = sliders_.count(setting) ? sliders_[setting] : nullptr) {
@@ -539,6 +569,7 @@ void PracticePanel::move_adjuster(const std::string& setting, double delta_mm) {
 
 void PracticePanel::finish() {
   if (!session_ || runner_->running()) return;
+  release_readings();
   set_busy(true);
   show_status(tr("Measuring the corrected action…"));
   runner_->measure(*session_);
@@ -546,6 +577,7 @@ void PracticePanel::finish() {
 
 void PracticePanel::export_report(const QString& pdf_path, const QString& csv_path) {
   if (!session_) throw InputError("no exercise is running: nothing to report");
+  release_readings();
   write_session_pdf(pdf_path, *session_);
   write_session_csv(csv_path.toStdString(), *session_);
   show_status(tr("Report written: %1 and %2").arg(pdf_path, csv_path));

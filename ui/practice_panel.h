@@ -7,6 +7,7 @@
 
 #include <QElapsedTimer>
 #include <QWidget>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -56,6 +57,18 @@ class PracticePanel : public QWidget {
   /// Writes the report: PDF and CSV. Throws InputError.
   void export_report(const QString& pdf_path, const QString& csv_path);
 
+  /// Whether a test's readings wait until the window has played the test (testShown); the window
+  /// that plays them turns this on and calls shown_test_played(). Off (the default), they show as
+  /// soon as they are read. Either way the session records the test when it is read, and any
+  /// other step of the trainee's (another test, an answer, a hint, a move, finishing) shows the
+  /// readings first.
+  void set_readings_wait_for_playback(bool wait) { readings_wait_for_playback_ = wait; }
+  /// The window has played the test shown, or has stopped showing it (the run stopped or was
+  /// restarted, the practice mode closed): readings held for it appear.
+  void shown_test_played();
+  /// Readings have been taken and wait for the test to be played.
+  bool readings_held() const { return static_cast<bool>(held_readings_); }
+
   const PracticeSession* session() const { return session_ ? session_.get() : nullptr; }
   PracticeRunner* runner() const { return runner_; }
   /// The symptom lines shown, and the status line (tests).
@@ -93,6 +106,8 @@ class PracticePanel : public QWidget {
   /// `text` with the settings' identifiers replaced by the names the form shows.
   QString readable(QString text) const;
   void append_history();
+  /// Shows readings held for playback, if any.
+  void release_readings();
   void remember_session(const SessionScore& score);
   void show_past_sessions();
   double elapsed_s() const;
@@ -105,6 +120,9 @@ class PracticePanel : public QWidget {
   std::shared_ptr<const ActionModel> regulated_;
   PracticeRunner* runner_;
   QElapsedTimer clock_;
+  bool readings_wait_for_playback_ = false;
+  bool shown_test_playing_ = false;     ///< the window plays the latest test (not yet played)
+  std::function<void()> held_readings_;  ///< shows the latest test's readings, once
 
   QComboBox* action_;
   QSpinBox* seed_;

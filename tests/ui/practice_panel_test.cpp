@@ -48,6 +48,7 @@ class PracticePanelTest : public QObject {
   void adjuster_sliders_keep_their_keys_and_ignore_a_passing_wheel();
   void the_exercise_form_offers_the_action_on_screen();
   void larger_text_widens_the_practice_form();
+  void readings_wait_for_the_playback();
 };
 
 /// Answers the next question box that opens (modal: the click that opens it returns only once
@@ -396,6 +397,50 @@ void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
              qPrintable(message));
   }
   QVERIFY(!window.practice()->session());
+}
+
+
+void PracticePanelTest::readings_wait_for_the_playback() {
+  MainWindow window;
+  window.open_action("grand");
+  window.resize(1400, 900);
+  window.show();
+  window.show_practice(true);
+  PracticePanel* panel = window.practice();
+  panel->start_seed("grand", 3, 1);
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(wait_until([&] { return !window.measurements()->busy(); }, 60000));
+
+  // the forte blow's strike and catch (0.05 s) play at 1/100, in 5 s: what the test found is
+  // listed once the frame on screen has reached the end of that span, not when it was read
+  const int before = panel->symptom_lines().size();
+  panel->run_test(pat::PracticeTest::ForteBlow);
+  bool held = false;  // read while the playback had not reached its end
+  QVERIFY(wait_until(
+      [&] {
+        held = held || panel->readings_held();
+        return panel->symptom_lines().size() > before;
+      },
+      60000));
+  const double shown_t = window.controller()->current_frame().t;
+  QVERIFY2(shown_t >= 0.05 - 1e-9, qPrintable(QString("readings shown at t = %1 s").arg(shown_t)));
+  // (on a machine slower than the playback the readings come after it; then nothing was held)
+  if (held) QVERIFY(!panel->readings_held());
+
+  // a step of the trainee's shows held readings first: the history keeps the session's order
+  panel->run_test(pat::PracticeTest::ForteBlow);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  const int listed = panel->symptom_lines().size();
+  if (panel->readings_held()) {
+    panel->request_hint();
+    QVERIFY(!panel->readings_held());
+    QVERIFY(panel->symptom_lines().size() > listed);
+  }
+  // leaving the practice mode shows them too (nothing is left waiting in a hidden form)
+  panel->run_test(pat::PracticeTest::ForteBlow);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  window.show_practice(false);
+  QVERIFY(!panel->readings_held());
 }
 
 QTEST_MAIN(PracticePanelTest)
