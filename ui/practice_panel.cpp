@@ -254,8 +254,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
         const auto symptoms =
             session_->record_test(static_cast<PracticeTest>(test), seen, regulated, elapsed_s());
         const QString name = test_title(static_cast<PracticeTest>(test));
-        const int used = session_->tests_used();
-        held_readings_ = [this, name, symptoms, seen, used] {
+        // a test toward the diagnosis, or (once it is right) a check of the correction, which
+        // the score does not count
+        const int used = session_->tests_used() - session_->check_tests();
+        const bool check = session_->tests_are_checks();
+        held_readings_ = [this, name, symptoms, seen, used, check] {
           if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
             symptoms_->addItem(tr("%1: nothing differs from a regulated action%2.")
                                    .arg(name, readings_text(seen)));
@@ -263,8 +266,12 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
             symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
           symptoms_->scrollToBottom();
           append_history();  // its line names the symptoms too
-          show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
-                                : tr("%1 done (%2 tests used).").arg(name).arg(used));
+          if (check)
+            show_status(tr("%1 done: a check of the correction, not counted against economy.")
+                            .arg(name));
+          else
+            show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
+                                  : tr("%1 done (%2 tests used).").arg(name).arg(used));
         };
         // what the test found is seen on the action before it is read in words (a class watches
         // the hammer bounce before the list says "double strike")

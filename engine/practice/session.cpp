@@ -76,9 +76,13 @@ std::vector<Symptom> PracticeSession::record_test(
     PracticeTest test, const std::vector<Observation>& seen,
     const std::vector<Observation>& regulated_observations, double t_s) {
   ++tests_used_;
-  tests_run_.push_back(test);
+  const bool check = tests_are_checks();
+  if (check)
+    ++check_tests_;
+  else
+    tests_run_.push_back(test);  // toward the diagnosis
   std::vector<Symptom> symptoms = describe_symptoms(seen, regulated_observations);
-  std::string detail = test_name(test) + ": ";
+  std::string detail = test_name(test) + (check ? " (check): " : ": ");
   if (symptoms.empty()) detail += "no symptom";
   for (std::size_t i = 0; i < symptoms.size(); ++i) detail += (i ? "; " : "") + symptoms[i].id;
   history_.push_back({t_s, "test", detail});
@@ -273,12 +277,16 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
   }
   s.regulation = std::max(0.0, s.regulation);
 
+  s.check_tests = check_tests_;
   const std::set<PracticeTest> distinct(tests_run_.begin(), tests_run_.end());
-  const int extra_tests = std::max(0, tests_used_ - static_cast<int>(all_tests().size()));
+  const int diagnosis_tests = static_cast<int>(tests_run_.size());
+  const int extra_tests = std::max(0, diagnosis_tests - static_cast<int>(all_tests().size()));
   const int slow_periods = std::max(0, static_cast<int>((t_s - 600.0) / 120.0));
   s.economy = std::max(0.0, 10.0 - extra_tests - slow_periods);
-  s.notes.push_back("economy " + format_number(s.economy) + "/10: " + std::to_string(tests_used_) +
-                    " tests (" + std::to_string(distinct.size()) + " different), " +
+  s.notes.push_back("economy " + format_number(s.economy) + "/10: " +
+                    std::to_string(diagnosis_tests) + " tests to the diagnosis (" +
+                    std::to_string(distinct.size()) + " different), " +
+                    std::to_string(check_tests_) + " checks of the correction (free), " +
                     format_number(std::round(t_s)) + " s");
   s.hint_penalty = 5.0 * hints_used_;
   if (hints_used_ > 0)

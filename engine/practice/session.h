@@ -9,8 +9,10 @@
 //               the tolerance tol removed: 1 − max(0, |corrected − regulated| − tol) /
 //               (|hidden − regulated| − tol), in [0, 1] (a fault left as found earns nothing),
 //               − 5 per setting that was not faulty but was left moved by more than 0.05 mm;
-//   economy     10 − 1 per test run beyond the four different tests − 1 per full two minutes
-//               beyond the first ten (never below 0);
+//   economy     10 − 1 per test run toward the diagnosis beyond the four different tests − 1 per
+//               full two minutes beyond the first ten (never below 0); a test run once the
+//               diagnosis is right (or the answer shown) checks the correction, as a technician
+//               re-tests after turning a screw, and costs nothing;
 //   hints       − 5 each.
 // After the answer is revealed (reveal()), answers are still judged but no longer scored.
 #pragma once
@@ -47,7 +49,8 @@ struct SessionScore {
   double hint_penalty = 0.0;
   double total = 0.0;  ///< 0–100
   bool diagnosed = false;
-  int tests_used = 0;
+  int tests_used = 0;   ///< every test run
+  int check_tests = 0;  ///< of them, those after the diagnosis (checks of the correction)
   int hints_used = 0;
   double time_s = 0.0;
   std::vector<CorrectionReading> readings;
@@ -99,6 +102,11 @@ class PracticeSession {
 
   const std::vector<SessionEvent>& history() const { return history_; }
   int tests_used() const { return tests_used_; }
+  /// Tests run once the diagnosis was right or the answer shown: checks of the correction, not
+  /// counted against economy.
+  int check_tests() const { return check_tests_; }
+  /// Whether a test run now would be such a check.
+  bool tests_are_checks() const { return diagnosed_ || revealed_; }
   /// The diagnosis marks so far (0–50): half the first answer's score, 5 off per different
   /// wrong answer after it.
   double diagnosis_marks() const;
@@ -115,6 +123,7 @@ class PracticeSession {
   std::vector<SessionEvent> history_;
   std::vector<PracticeTest> tests_run_;
   int tests_used_ = 0;
+  int check_tests_ = 0;
   int hints_used_ = 0;
   int wrong_answers_after_first_ = 0;  ///< different wrong answers after the first
   int answers_given_ = 0;

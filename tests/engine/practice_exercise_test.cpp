@@ -245,6 +245,35 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   EXPECT_THROW(write_session_csv("/nonexistent/dir/session.csv", session), InputError);
 }
 
+// Economy judges the tests toward the diagnosis: six of them (four different tests, the two
+// repeats beyond four cost 1 each), then, once the diagnosis is right, re-tests that check the
+// correction, which cost nothing however many (a technician re-tests after turning a screw).
+TEST(PracticeSession, TestsAfterTheDiagnosisAreFreeChecks) {
+  const ActionModel& model = shipped_model("grand");
+  const Exercise e = checking_exercise(model);
+  PracticeSession session(e, model);
+  const std::vector<Observation> none;
+  const PracticeTest diagnosis_tests[] = {PracticeTest::Rest,      PracticeTest::SlowPress,
+                                          PracticeTest::ForteBlow, PracticeTest::Repetition,
+                                          PracticeTest::SlowPress, PracticeTest::ForteBlow};
+  double t = 10.0;
+  for (PracticeTest test : diagnosis_tests) session.record_test(test, none, none, t += 10.0);
+  EXPECT_FALSE(session.tests_are_checks());
+  EXPECT_TRUE(session.answer({exercise_answers(e).front()}, t += 10.0).correct);
+  EXPECT_TRUE(session.tests_are_checks());
+  for (int i = 0; i < 5; ++i) session.record_test(PracticeTest::ForteBlow, none, none, t += 10.0);
+  EXPECT_EQ(session.tests_used(), 11);
+  EXPECT_EQ(session.check_tests(), 5);
+  const SessionScore s = session.score({{"checking", 16.0, 19.0, 16.0}}, t);
+  EXPECT_DOUBLE_EQ(s.economy, 8.0);  // 6 tests toward the diagnosis: 2 beyond the four
+  EXPECT_EQ(s.check_tests, 5);
+  // the history says which tests were checks
+  int checks = 0;
+  for (const SessionEvent& event : session.history())
+    if (event.kind == "test" && event.detail.find("(check)") != std::string::npos) ++checks;
+  EXPECT_EQ(checks, 5);
+}
+
 // Answer clicked twice on the same wrong answer is one mistake: the first answer (the right
 // setting, the wrong direction: 40 of 100, 20 diagnosis marks) loses 5 for each different later
 // wrong answer (two here), not for the same one given again or in another order.
