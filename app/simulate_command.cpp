@@ -109,8 +109,8 @@ int run_simulate(const std::vector<std::string>& args) {
   if (result.status != "ok") {
     // a script must see it without reading the output: exit code 3 (2 is bad input, 1 a failure
     // before any result); what was computed up to the stop has been written
-    std::cerr << "pianoaction simulate: the run stopped at t = " << format_number(result.end_time, 6)
-              << " s: " << result.stop_cause << "\n";
+    std::cerr << "pianoaction simulate: the run stopped at t = "
+              << format_number(result.end_time, 6) << " s: " << result.stop_cause << "\n";
     return kExitRunStopped;
   }
   return 0;

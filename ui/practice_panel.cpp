@@ -8,6 +8,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLineEdit>
 #include <QListWidget>
 #include <QMessageBox>
 #include <QProgressBar>
@@ -97,6 +98,17 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
 
   auto* start_box = new QGroupBox(tr("Exercise"), this);
   auto* start_form = new QFormLayout(start_box);
+  // the trainee's name heads the report and the past sessions (remembered: a student's own
+  // machine keeps it; on a shared one the next student types theirs)
+  trainee_ = new QLineEdit(QSettings().value("practice/trainee").toString(), start_box);
+  trainee_->setObjectName("practice_trainee");
+  trainee_->setPlaceholderText(tr("name for the report"));
+  trainee_->setMaxLength(80);
+  start_form->addRow(tr("Trainee"), trainee_);
+  connect(trainee_, &QLineEdit::textEdited, this, [this](const QString& name) {
+    QSettings().setValue("practice/trainee", name);
+    if (session_) session_->set_trainee(name.toStdString());
+  });
   action_ = new FocusWheel<QComboBox>(start_box);
   action_->setObjectName("practice_action");
   action_->addItems({"grand", "upright"});
@@ -267,8 +279,8 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
           symptoms_->scrollToBottom();
           append_history();  // its line names the symptoms too
           if (check)
-            show_status(tr("%1 done: a check of the correction, not counted against economy.")
-                            .arg(name));
+            show_status(
+                tr("%1 done: a check of the correction, not counted against economy.").arg(name));
           else
             show_status(used == 1 ? tr("%1 done (1 test used).").arg(name)
                                   : tr("%1 done (%2 tests used).").arg(name).arg(used));
@@ -397,6 +409,7 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
   shown_test_playing_ = false;
   regulated_ = std::make_shared<const ActionModel>(regulated);
   session_ = std::make_unique<PracticeSession>(std::move(exercise), std::move(regulated));
+  session_->set_trainee(trainee_->text().toStdString());
   clock_.start();
   title_->setText(QString::fromStdString(session_->exercise().title) +
                   (session_->exercise().notes.empty()
@@ -591,8 +604,14 @@ void PracticePanel::export_report(const QString& pdf_path, const QString& csv_pa
 }
 
 void PracticePanel::export_from_dialog() {
-  QString pdf =
-      QFileDialog::getSaveFileName(this, tr("Export the session report"), {}, tr("PDF (*.pdf)"));
+  // named after the trainee, so that a class's reports do not overwrite each other
+  const QString who = QString::fromStdString(session_ ? session_->trainee() : std::string());
+  const QString suggested =
+      who.isEmpty() ? QString()
+                    : tr("practice report %1.pdf")
+                          .arg(QString(who).replace(QRegularExpression("[/\\\\:*?\"<>|]"), "_"));
+  QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"), suggested,
+                                             tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
   // a name typed without its extension ("session") still makes session.pdf and session.csv
   if (!pdf.endsWith(".pdf", Qt::CaseInsensitive)) pdf += ".pdf";
@@ -669,9 +688,11 @@ constexpr int kPastSessionsKept = 50;
 void PracticePanel::remember_session(const SessionScore& score) {
   QSettings settings;
   QStringList past = settings.value("practice/past_sessions").toStringList();
+  const QString who = QString::fromStdString(session_->trainee());
   past.prepend(tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
                    .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
-                   .arg(QString::fromStdString(session_->exercise().title))
+                   .arg((who.isEmpty() ? QString() : who + ", ") +
+                        QString::fromStdString(session_->exercise().title))
                    .arg(score.total, 0, 'f', 1)
                    .arg(score.tests_used)
                    .arg(score.hints_used)

@@ -16,6 +16,7 @@
 
 class QComboBox;
 class QLabel;
+class QLineEdit;
 class QListWidget;
 class QProgressBar;
 class QPushButton;
@@ -121,9 +122,10 @@ class PracticePanel : public QWidget {
   PracticeRunner* runner_;
   QElapsedTimer clock_;
   bool readings_wait_for_playback_ = false;
-  bool shown_test_playing_ = false;     ///< the window plays the latest test (not yet played)
+  bool shown_test_playing_ = false;      ///< the window plays the latest test (not yet played)
   std::function<void()> held_readings_;  ///< shows the latest test's readings, once
 
+  QLineEdit* trainee_;  ///< the trainee's name, for the report and the past sessions
   QComboBox* action_;
   QSpinBox* seed_;
   QSpinBox* level_;

@@ -23,7 +23,10 @@ QString number(const std::optional<double>& v) {
 QString session_report_html(const PracticeSession& session) {
   const Exercise& e = session.exercise();
   QString html = "<h2>" + QObject::tr("Practice session report") + "</h2>";
-  html += "<p><b>" + cell(e.title) + "</b><br>" + QObject::tr("Action: %1").arg(cell(e.kind));
+  html += "<p>";
+  if (!session.trainee().empty())
+    html += QObject::tr("Trainee: %1").arg("<b>" + cell(session.trainee()) + "</b>") + "<br>";
+  html += "<b>" + cell(e.title) + "</b><br>" + QObject::tr("Action: %1").arg(cell(e.kind));
   if (e.seed)
     html += "<br>" + QObject::tr("Exercise number %1, level %2").arg(*e.seed).arg(e.level);
   if (!e.source_file.empty())

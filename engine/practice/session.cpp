@@ -63,6 +63,14 @@ PracticeSession::PracticeSession(Exercise exercise, ActionModel regulated)
   history_.push_back({0.0, "start", exercise_.title});
 }
 
+void PracticeSession::set_trainee(const std::string& name) {
+  std::string line;
+  for (char c : name) line += (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) ? ' ' : c;
+  const auto first = line.find_first_not_of(' ');
+  const auto last = line.find_last_not_of(' ');
+  trainee_ = first == std::string::npos ? std::string() : line.substr(first, last - first + 1);
+}
+
 ActionModel PracticeSession::current_model() const {
   ActionModel model = hidden_model(regulated_, exercise_);
   for (const auto& [setting, mm] : moves_mm_) {
@@ -283,8 +291,8 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
   const int extra_tests = std::max(0, diagnosis_tests - static_cast<int>(all_tests().size()));
   const int slow_periods = std::max(0, static_cast<int>((t_s - 600.0) / 120.0));
   s.economy = std::max(0.0, 10.0 - extra_tests - slow_periods);
-  s.notes.push_back("economy " + format_number(s.economy) + "/10: " +
-                    std::to_string(diagnosis_tests) + " tests to the diagnosis (" +
+  s.notes.push_back("economy " + format_number(s.economy) +
+                    "/10: " + std::to_string(diagnosis_tests) + " tests to the diagnosis (" +
                     std::to_string(distinct.size()) + " different), " +
                     std::to_string(check_tests_) + " checks of the correction (free), " +
                     format_number(std::round(t_s)) + " s");
@@ -312,6 +320,7 @@ void write_session_csv(const std::string& path, const PracticeSession& session) 
   std::ostringstream out;
   const Exercise& e = session.exercise();
   out << "# exercise: " << e.title << "\n# action: " << e.kind << "\n";
+  if (!session.trainee().empty()) out << "# trainee: " << session.trainee() << "\n";
   if (e.seed) out << "# seed: " << *e.seed << "\n";
   if (!e.source_file.empty()) out << "# file: " << e.source_file << "\n";
   out << "t_s,kind,detail\n";

@@ -66,6 +66,10 @@ class PracticeSession {
   PracticeSession(Exercise exercise, ActionModel regulated);
 
   const Exercise& exercise() const { return exercise_; }
+  /// The trainee's name for the report (may be empty), on one line: line breaks and other
+  /// control characters become spaces, the ends are trimmed.
+  void set_trainee(const std::string& name);
+  const std::string& trainee() const { return trainee_; }
   const ActionModel& regulated() const { return regulated_; }
   /// The hidden action with the trainee's moves applied (what the sliders act on).
   ActionModel current_model() const;
@@ -119,6 +123,7 @@ class PracticeSession {
  private:
   Exercise exercise_;
   ActionModel regulated_;
+  std::string trainee_;
   std::map<std::string, double> moves_mm_;
   std::vector<SessionEvent> history_;
   std::vector<PracticeTest> tests_run_;

@@ -88,9 +88,8 @@ void BM_DoubleBlowW2(benchmark::State& state) {
     steps += simulator.steps();
     if (simulator.stopped()) state.SkipWithError(simulator.stop_cause().c_str());
   }
-  state.counters["realtime"] =
-      benchmark::Counter(options.duration_s * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
+  state.counters["realtime"] = benchmark::Counter(
+      options.duration_s * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   // wall time per step (shown in seconds: "1.1us")
   state.counters["per_step"] = benchmark::Counter(
       static_cast<double>(steps), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);

@@ -235,10 +235,13 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
 
   const std::string csv =
       (std::filesystem::temp_directory_path() / "pat_practice_session.csv").string();
+  session.set_trainee("  Ada\nLovelace ");  // one line in the file's metadata
+  EXPECT_EQ(session.trainee(), "Ada Lovelace");
   write_session_csv(csv, session);
   std::ifstream in(csv);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("t_s,kind,detail"), std::string::npos);
+  EXPECT_NE(text.find("# trainee: Ada Lovelace\n"), std::string::npos);
   EXPECT_NE(text.find("answer"), std::string::npos);
   EXPECT_NE(text.find("score"), std::string::npos);
   std::filesystem::remove(csv);

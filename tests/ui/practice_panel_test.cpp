@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QPushButton>
@@ -94,6 +95,10 @@ void PracticePanelTest::walk_through_an_exercise() {
   // a teacher's file with a known fault, so the walk-through can give the right answer
   const QString file = QStringLiteral(PAT_PRESET_DIR) + "/exercises/grand_two_faults.json";
   window.start("force:pulse:20:40");  // the class's last run
+  auto* trainee = panel->findChild<QLineEdit*>("practice_trainee");
+  QVERIFY(trainee);
+  trainee->clear();
+  QTest::keyClicks(trainee, "Ada");  // the report and the past sessions name the trainee
   panel->start_file(file.toStdString());
   QCOMPARE(active.count(), 1);
   // the hidden action is shown at rest, not played with the last run's input: nothing of it is
@@ -239,7 +244,8 @@ void PracticePanelTest::walk_through_an_exercise() {
            qPrintable(panel->status_text()));
   QVERIFY(score.total > 0.0);
   // the scored session is remembered for the next run of the program
-  QVERIFY(panel->past_sessions().value(0).contains("Grand, level 2"));
+  QVERIFY2(panel->past_sessions().value(0).contains("Ada, Grand, level 2"),
+           qPrintable(panel->past_sessions().value(0)));
 
   QTemporaryDir dir;
   const QString pdf = dir.filePath("session.pdf"), csv = dir.filePath("session.csv");
@@ -253,6 +259,7 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(csv_text.contains("t_s,kind,detail"));
   QVERIFY(csv_text.contains("score"));
   QVERIFY(csv_text.contains("move,checking"));
+  QVERIFY(csv_text.contains("# trainee: Ada\n"));
 
   // leaving practice mode (the menu entry again) returns to the regulated action with its
   // regulation panel
@@ -398,7 +405,6 @@ void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
   }
   QVERIFY(!window.practice()->session());
 }
-
 
 void PracticePanelTest::readings_wait_for_the_playback() {
   MainWindow window;
