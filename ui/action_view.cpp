@@ -488,17 +488,26 @@ void ActionView::paint_frame(QPainter& painter) {
   painter.drawLine(QPointF(0, band), QPointF(width(), band));
   const double t_ms = frame_->t * 1e3;
   const double gap_mm = frame_->hammer_string_gap_mm, finger_n = frame_->finger_force_n;
-  const QString full = tr("t = %1 ms   hammer–string gap %2 mm   finger %3 N")
+  // the gap is read at a point fixed on the felt, which stands up to 0.3 mm behind the felt's
+  // nearest point near the string (README, limits): while the felt presses the string the
+  // readout says so, instead of a gap the drawing's string force contradicts
+  const int string_contact = model.landmarks.string_contact;
+  const bool on_string = string_contact >= 0 &&
+                         string_contact < static_cast<int>(frame_->contact_force_n.size()) &&
+                         frame_->contact_force_n[string_contact] > 0.0;
+  const QString gap_text =
+      on_string ? tr("felt on the string") : tr("%1 mm").arg(gap_mm, 0, 'f', 2);
+  const QString full = tr("t = %1 ms   hammer–string gap %2   finger %3 N")
                            .arg(t_ms, 0, 'f', 2)
-                           .arg(gap_mm, 0, 'f', 2)
+                           .arg(gap_text)
                            .arg(finger_n, 0, 'f', 1);
-  const QString shorter = tr("t = %1 ms   gap %2 mm   finger %3 N")
+  const QString shorter = tr("t = %1 ms   gap %2   finger %3 N")
                               .arg(t_ms, 0, 'f', 1)
-                              .arg(gap_mm, 0, 'f', 2)
+                              .arg(gap_text)
                               .arg(finger_n, 0, 'f', 1);
-  const QString shortest = tr("%1 ms  gap %2 mm  %3 N")
+  const QString shortest = tr("%1 ms  gap %2  %3 N")
                                .arg(t_ms, 0, 'f', 1)
-                               .arg(gap_mm, 0, 'f', 2)
+                               .arg(on_string ? tr("0 (on string)") : gap_text)
                                .arg(finger_n, 0, 'f', 1);
   const double room = width() - 20.0;
   QFont readout_font_used = big;

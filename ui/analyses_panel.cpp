@@ -23,6 +23,7 @@
 #include "analysis_plots.h"
 #include "analysis_runner.h"
 #include "core/error.h"
+#include "export_folder.h"
 #include "plot_export.h"
 #include "plot_panel.h"
 
@@ -169,21 +170,24 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   connect(export_plots_, &QPushButton::clicked, this,
           [this] { emit exportRequested(plots_, result_title_); });
   connect(export_table_, &QPushButton::clicked, this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Export the table"), {}, tr("CSV (*.csv)"));
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export the table"), export_folder(),
+                                                      tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
     try {
       const QStringList written = write_table_csv(path);
+      remember_export_folder(path);
       if (written.size() > 1) stage_->setText(tr("Tables written: %1").arg(written.join(", ")));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
     }
   });
   connect(export_report_, &QPushButton::clicked, this, [this] {
-    const QString folder = QFileDialog::getExistingDirectory(this, tr("Report folder"));
+    const QString folder =
+        QFileDialog::getExistingDirectory(this, tr("Report folder"), export_folder());
     if (folder.isEmpty()) return;
     try {
       write_report(folder);
+      remember_export_folder(folder);
       summary_->setText(summary_->text() + "\n" + tr("Report written to %1.").arg(folder));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));

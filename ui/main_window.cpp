@@ -30,6 +30,7 @@
 #include "analyses_panel.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
+#include "export_folder.h"
 #include "export_size_dialog.h"
 #include "input_spec_form.h"
 #include "inputs/key_input.h"
@@ -333,9 +334,12 @@ void MainWindow::build_menus() {
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
   exports->addAction(tr("&Window screenshot…"), this, [this] {
-    const QString path =
-        QFileDialog::getSaveFileName(this, tr("Window screenshot"), {}, tr("PNG images (*.png)"));
-    if (!path.isEmpty() && !grab().save(path, "PNG"))
+    const QString path = QFileDialog::getSaveFileName(this, tr("Window screenshot"),
+                                                      export_folder(), tr("PNG images (*.png)"));
+    if (path.isEmpty()) return;
+    if (grab().save(path, "PNG"))
+      remember_export_folder(path);
+    else
       statusBar()->showMessage(tr("Could not write %1").arg(path));
   });
 
@@ -818,14 +822,13 @@ void MainWindow::export_to_chosen_file(const QString& what, const QString& filte
   // was chosen, not where the run had got to when the dialog closed
   const bool was_playing = pause_run && controller_->playing();
   if (was_playing) controller_->pause();
-  QSettings settings;
-  const QString path = QFileDialog::getSaveFileName(
-      this, tr("Export %1").arg(what), settings.value("export_folder").toString(), filter);
+  const QString path =
+      QFileDialog::getSaveFileName(this, tr("Export %1").arg(what), export_folder(), filter);
   if (was_playing) controller_->play();
   if (path.isEmpty()) return;
   try {
     write(path);
-    settings.setValue("export_folder", QFileInfo(path).absolutePath());
+    remember_export_folder(path);
     statusBar()->showMessage(tr("Exported %1 to %2").arg(what, path));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));

@@ -27,6 +27,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "export_folder.h"
 #include "focus_wheel.h"
 #include "model/preset_loader.h"
 #include "practice/exercise.h"
@@ -66,9 +67,11 @@ QString readings_text(const std::vector<Observation>& seen) {
     const bool fraction = o.unit == "fraction";  // of the hammer's travel: read as a percentage
     double value = fraction ? 100.0 * *o.value : *o.value;
     if (std::abs(value) < 0.005) value = 0.0;  // "0.00", not "-0.00"
+    // a count (no unit: strikes of one blow) as a whole number, "1" not "1.00"
+    const bool count = o.unit.empty() && value == std::round(value);
     readings << QStringLiteral("%1 %2 %3")
                     .arg(QString::fromStdString(o.label))
-                    .arg(value, 0, 'f', 2)
+                    .arg(value, 0, 'f', count ? 0 : 2)
                     .arg(fraction ? QStringLiteral("%") : QString::fromStdString(o.unit))
                     .trimmed();
   }
@@ -442,16 +445,30 @@ void PracticePanel::build_adjusters() {
   moved_labels_.clear();
   for (const RegulationSetting& s : regulated_->regulation) {
     auto* row = new QWidget(adjusters_box_);
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
+    auto* rows = new QVBoxLayout(row);
+    rows->setContentsMargins(0, 0, 0, 0);
+    rows->setSpacing(1);
+    auto* layout = new QHBoxLayout;
+    rows->addLayout(layout);
     auto* slider = new StepSlider(Qt::Horizontal, row);
     slider->setRange(-kSliderSpanSteps, kSliderSpanSteps);
     slider->setValue(0);
-    slider->setToolTip(
-        tr("Moves the %1 adjuster relative to where you found it").arg(setting_title(s.name)));
+    // which way is which: the adjuster's part and what + does, as the regulation panel's tooltip
+    // says it ("capstan (key pilot): + screws it up, raising the whippen (shorter blow)"), with
+    // the slider's side named
+    const Adjuster& adjuster = regulated_->adjusters[regulated_->adjuster_index(s.name)];
+    const QString what = QString::fromStdString(adjuster.description)
+                             .replace(QStringLiteral(": + "), tr(": to the right (+) "));
+    slider->setToolTip(tr("Moves the %1 adjuster relative to where you found it.\n%2")
+                           .arg(setting_title(s.name), what));
     auto* moved = new QLabel(tr("moved 0.00 mm"), row);
     layout->addWidget(slider, 1);
     layout->addWidget(moved);
+    auto* direction = new QLabel(what, row);
+    direction->setObjectName("direction_" + QString::fromStdString(s.name));
+    direction->setWordWrap(true);
+    direction->setForegroundRole(QPalette::PlaceholderText);  // grey: a caption, not a value
+    rows->addWidget(direction);
     form->addRow(setting_title(s.name), row);
     sliders_[s.name] = slider;
     moved_labels_[s.name] = moved;
@@ -610,8 +627,8 @@ void PracticePanel::export_from_dialog() {
       who.isEmpty() ? QString()
                     : tr("practice report %1.pdf")
                           .arg(QString(who).replace(QRegularExpression("[/\\\\:*?\"<>|]"), "_"));
-  QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"), suggested,
-                                             tr("PDF (*.pdf)"));
+  QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"),
+                                             export_path(suggested), tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
   // a name typed without its extension ("session") still makes session.pdf and session.csv
   if (!pdf.endsWith(".pdf", Qt::CaseInsensitive)) pdf += ".pdf";
@@ -620,6 +637,7 @@ void PracticePanel::export_from_dialog() {
   csv += ".csv";
   try {
     export_report(pdf, csv);
+    remember_export_folder(pdf);
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
   }

@@ -14,8 +14,9 @@ QString cell(const std::string& text) {
   return QString::fromStdString(text).toHtmlEscaped();
 }
 
-QString number(const std::optional<double>& v) {
-  return v ? QString::number(*v, 'f', 3) : QObject::tr("not measurable");
+/// A reading with its unit ("0.147 mm"), or why there is none.
+QString reading(const std::optional<double>& v, const std::string& unit) {
+  return v ? QString::fromStdString(reading_text(*v, unit)) : QObject::tr("not measurable");
 }
 
 }  // namespace
@@ -38,15 +39,23 @@ QString session_report_html(const PracticeSession& session) {
     html += "<h3>" + QObject::tr("Score: %1 / 100").arg(score->total, 0, 'f', 1) + "</h3><ul>";
     for (const std::string& note : score->notes) html += "<li>" + cell(note) + "</li>";
     html += "</ul><p>" + QObject::tr("Hidden:") + " ";
+    QStringList hidden;
     for (const FaultAnswer& a : exercise_answers(e))
-      html += cell(a.setting) + " (" + cell(a.direction) + ") ";
+      hidden << cell(setting_words(a.setting)) + " (" +
+                    QObject::tr("%1 than its target").arg(cell(a.direction)) + ")";
+    html += hidden.join(", ");
     html += "</p><table border='1' cellspacing='0' cellpadding='3'><tr><th>" +
             QObject::tr("setting") + "</th><th>" + QObject::tr("regulated") + "</th><th>" +
             QObject::tr("deregulated") + "</th><th>" + QObject::tr("after correction") +
             "</th></tr>";
-    for (const CorrectionReading& r : score->readings)
-      html += "<tr><td>" + cell(r.setting) + "</td><td>" + number(r.regulated) + "</td><td>" +
-              number(r.hidden) + "</td><td>" + number(r.corrected) + "</td></tr>";
+    const ActionModel& regulated = session.regulated();
+    for (const CorrectionReading& r : score->readings) {
+      const int index = regulated.setting_index(r.setting);
+      const std::string unit = index >= 0 ? regulated.regulation[index].unit : std::string();
+      html += "<tr><td>" + cell(setting_words(r.setting)) + "</td><td>" +
+              reading(r.regulated, unit) + "</td><td>" + reading(r.hidden, unit) + "</td><td>" +
+              reading(r.corrected, unit) + "</td></tr>";
+    }
     html += "</table>";
   } else {
     html += "<p>" + QObject::tr("Not scored yet.") + "</p>";
@@ -55,9 +64,13 @@ QString session_report_html(const PracticeSession& session) {
           "</h3><table border='1' cellspacing='0' "
           "cellpadding='3'><tr><th>t (s)</th><th>" +
           QObject::tr("what") + "</th><th>" + QObject::tr("detail") + "</th></tr>";
+  // a test's line, then the sentences the trainee read (in grey)
   for (const SessionEvent& ev : session.history())
     html += "<tr><td>" + QString::number(ev.t_s, 'f', 1) + "</td><td>" + cell(ev.kind) +
-            "</td><td>" + cell(ev.detail) + "</td></tr>";
+            "</td><td>" + cell(ev.detail) +
+            (ev.words.empty() ? QString()
+                              : "<br><span style='color:#555'>" + cell(ev.words) + "</span>") +
+            "</td></tr>";
   html += "</table>";
   return html;
 }

@@ -12,9 +12,7 @@ namespace pat::ui {
 
 /// "key_dip" → "key dip", "let_off" → "let-off" (the technicians' spelling).
 inline QString setting_title(const std::string& name) {
-  QString title = QString::fromStdString(name).replace('_', ' ');
-  if (title == QStringLiteral("let off")) title = QStringLiteral("let-off");
-  return title;
+  return QString::fromStdString(setting_words(name));
 }
 
 /// The part the adjuster turns, from its description ("let-off button: + screws it down …" →

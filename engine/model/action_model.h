@@ -173,6 +173,15 @@ struct RegulationSetting {
   double clear_position = 0.0;
 };
 
+/// A setting's or adjuster's identifier in words, as technicians write it: "key_dip" → "key dip",
+/// "let_off" → "let-off".
+inline std::string setting_words(const std::string& name) {
+  std::string words = name;
+  for (char& c : words)
+    if (c == '_') c = ' ';
+  return words == "let off" ? std::string("let-off") : words;
+}
+
 struct ActionModel {
   int schema = 1;
   std::string kind;  ///< "grand" or "upright"

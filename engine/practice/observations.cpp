@@ -292,6 +292,8 @@ std::vector<Observation> run_test_unguarded(const ActionModel& model, const Rest
   return {};
 }
 
+}  // namespace
+
 std::string test_label(PracticeTest test) {
   switch (test) {
     case PracticeTest::Rest:
@@ -305,8 +307,6 @@ std::string test_label(PracticeTest test) {
   }
   return "test";
 }
-
-}  // namespace
 
 std::vector<Observation> run_test(const ActionModel& model, const RestState& rest,
                                   PracticeTest test, ProgressReporter* progress) {

@@ -44,9 +44,23 @@ std::string measuring_test(const std::string& kind, const std::string& setting) 
 std::string answers_text(const std::vector<FaultAnswer>& answers) {
   std::string text;
   for (const FaultAnswer& a : answers)
-    text += (text.empty() ? "" : ", ") + a.setting + ":" + a.direction;
+    text += (text.empty() ? "" : ", ") + setting_words(a.setting) + ": " + a.direction;
   return text;
 }
+
+}  // namespace
+
+std::string reading_text(double value, const std::string& unit) {
+  // to the hundredth of a millimetre a feeler gauge reads (a tenth of a per cent of the travel)
+  char text[64];
+  if (unit == "fraction")
+    std::snprintf(text, sizeof(text), "%.1f %% of the hammer's travel", 100.0 * value);
+  else
+    std::snprintf(text, sizeof(text), "%.2f%s%s", value, unit.empty() ? "" : " ", unit.c_str());
+  return text;
+}
+
+namespace {
 
 std::optional<double> try_measure(const ActionModel& model, const std::string& setting) {
   try {
@@ -90,10 +104,16 @@ std::vector<Symptom> PracticeSession::record_test(
   else
     tests_run_.push_back(test);  // toward the diagnosis
   std::vector<Symptom> symptoms = describe_symptoms(seen, regulated_observations);
-  std::string detail = test_name(test) + (check ? " (check): " : ": ");
-  if (symptoms.empty()) detail += "no symptom";
-  for (std::size_t i = 0; i < symptoms.size(); ++i) detail += (i ? "; " : "") + symptoms[i].id;
-  history_.push_back({t_s, "test", detail});
+  // the line names the symptoms by their keywords in words ("no gap, failure to repeat"); the
+  // sentences the trainee read go with it
+  std::string detail = test_label(test) + (check ? " (check): " : ": ");
+  std::string words;
+  if (symptoms.empty()) detail += "nothing differs from a regulated action";
+  for (std::size_t i = 0; i < symptoms.size(); ++i) {
+    detail += (i ? ", " : "") + setting_words(symptoms[i].id);
+    words += (i ? " " : "") + symptoms[i].text;
+  }
+  history_.push_back({t_s, "test", detail, words});
   symptoms_seen_.insert(symptoms_seen_.end(), symptoms.begin(), symptoms.end());
   return symptoms;
 }
@@ -217,9 +237,9 @@ void PracticeSession::move_adjuster(const std::string& setting, double delta_mm,
   last_moved_ = setting;
   last_move_mm_ = step_mm;
   history_.push_back({t_s, "move",
-                      setting + " " + (step_mm > 0 ? "+" : "") + format_number(step_mm) +
-                          " mm (moved " + format_number(std::round(total * 1e3) / 1e3) +
-                          " mm in all)"});
+                      setting_words(setting) + " " + (step_mm > 0 ? "+" : "") +
+                          format_number(step_mm) + " mm (moved " +
+                          format_number(std::round(total * 1e3) / 1e3) + " mm in all)"});
 }
 
 double PracticeSession::moved_mm(const std::string& setting) const {
@@ -259,19 +279,21 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
       const double initial = r->hidden ? std::abs(*r->hidden - *r->regulated) : NAN;
       // the hidden deviation is the scale; when the hidden action could not be measured (no
       // escapement, no check), the setting's tolerance ×10 stands for it
-      const double tolerance = regulated_.regulation[regulated_.setting_index(f.setting)].tolerance;
+      const RegulationSetting& setting = regulated_.regulation[regulated_.setting_index(f.setting)];
+      const double tolerance = setting.tolerance;
       // the part of the deviation beyond the tolerance is what there was to correct: a setting
       // left as found earns nothing
       const double scale =
           std::isfinite(initial) && initial > tolerance ? initial - tolerance : 10 * tolerance;
       removed = std::clamp(1.0 - std::max(0.0, residual - tolerance) / scale, 0.0, 1.0);
-      how = "off by " + format_number(residual) + " after, " +
-            (std::isfinite(initial) ? format_number(initial) : std::string("unmeasurable")) +
+      how = "off by " + reading_text(residual, setting.unit) + " after, " +
+            (std::isfinite(initial) ? reading_text(initial, setting.unit)
+                                    : std::string("unmeasurable")) +
             " before";
     }
     removed_sum += removed;
-    s.notes.push_back(f.setting + ": " + format_number(100 * removed) + " % corrected (" + how +
-                      ")");
+    s.notes.push_back(setting_words(f.setting) + ": " + format_number(100 * removed) +
+                      " % corrected (" + how + ")");
   }
   s.regulation = 40.0 * removed_sum / static_cast<double>(exercise_.faults.size());
   for (const auto& [setting, mm] : moves_mm_) {
@@ -279,8 +301,8 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
                                     [&](const HiddenFault& f) { return f.setting == setting; });
     if (!faulty && std::abs(mm) > 0.05) {
       s.regulation -= 5.0;
-      s.notes.push_back(setting + " was not deregulated but was left moved " + format_number(mm) +
-                        " mm (−5)");
+      s.notes.push_back(setting_words(setting) + " was not deregulated but was left moved " +
+                        format_number(mm) + " mm (−5)");
     }
   }
   s.regulation = std::max(0.0, s.regulation);
@@ -323,20 +345,25 @@ void write_session_csv(const std::string& path, const PracticeSession& session) 
   if (!session.trainee().empty()) out << "# trainee: " << session.trainee() << "\n";
   if (e.seed) out << "# seed: " << *e.seed << "\n";
   if (!e.source_file.empty()) out << "# file: " << e.source_file << "\n";
-  out << "t_s,kind,detail\n";
+  // words: what the trainee read in full (a test's symptom sentences)
+  out << "t_s,kind,detail,words\n";
   for (const SessionEvent& ev : session.history())
-    out << format_number(ev.t_s) << "," << ev.kind << "," << csv_quoted(ev.detail) << "\n";
+    out << format_number(ev.t_s) << "," << ev.kind << "," << csv_quoted(ev.detail) << ","
+        << csv_quoted(ev.words) << "\n";
   if (const auto& s = session.final_score()) {
     for (const std::string& note : s->notes)
-      out << format_number(s->time_s) << ",score_note," << csv_quoted(note) << "\n";
+      out << format_number(s->time_s) << ",score_note," << csv_quoted(note) << ",\n";
+    const ActionModel& regulated = session.regulated();
     for (const CorrectionReading& r : s->readings) {
-      auto value = [](const std::optional<double>& v) {
-        return v ? format_number(*v) : std::string("not measurable");
+      const int index = regulated.setting_index(r.setting);
+      const std::string unit = index >= 0 ? regulated.regulation[index].unit : std::string();
+      auto value = [&unit](const std::optional<double>& v) {
+        return v ? reading_text(*v, unit) : std::string("not measurable");
       };
       out << format_number(s->time_s) << ",reading,"
-          << csv_quoted(r.setting + ": regulated " + value(r.regulated) + ", hidden " +
-                        value(r.hidden) + ", corrected " + value(r.corrected))
-          << "\n";
+          << csv_quoted(setting_words(r.setting) + ": regulated " + value(r.regulated) +
+                        ", hidden " + value(r.hidden) + ", corrected " + value(r.corrected))
+          << ",\n";
     }
   }
   write_file_replacing(path, out.str());

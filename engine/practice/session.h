@@ -33,7 +33,10 @@ namespace pat {
 struct SessionEvent {
   double t_s = 0.0;
   std::string kind;    ///< "start", "test", "answer", "hint", "move", "score"
-  std::string detail;  ///< in words
+  std::string detail;  ///< in words, short (the history list's line)
+  /// What the trainee was told in full, where the line shortens it: a test's symptom sentences
+  /// (empty for the other kinds).
+  std::string words;
 };
 
 /// The measured value of a setting on three actions (its unit); empty when not measurable.
@@ -56,6 +59,10 @@ struct SessionScore {
   std::vector<CorrectionReading> readings;
   std::vector<std::string> notes;  ///< one line per component, for the report
 };
+
+/// A setting's reading with its unit, as the report gives it: "0.15 mm", "4.2 % of the hammer's
+/// travel" (unit "fraction").
+std::string reading_text(double value, const std::string& unit);
 
 /// Steps of one setting closer together than this (s) are one move in the history.
 inline constexpr double kMoveMergeSeconds = 5.0;

@@ -242,6 +242,13 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_NE(text.find("t_s,kind,detail"), std::string::npos);
   EXPECT_NE(text.find("# trainee: Ada Lovelace\n"), std::string::npos);
+  // in a technician's words and units: the answer, the readings, the score's notes
+  EXPECT_NE(text.find("t_s,kind,detail,words\n"), std::string::npos);
+  EXPECT_NE(text.find("drop: more → not correct"), std::string::npos) << text;
+  EXPECT_NE(text.find("checking: regulated 16.00 mm, hidden 19.00 mm, corrected 16.04 mm"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("off by 0.04 mm after, 3.00 mm before"), std::string::npos) << text;
   EXPECT_NE(text.find("answer"), std::string::npos);
   EXPECT_NE(text.find("score"), std::string::npos);
   std::filesystem::remove(csv);
@@ -275,6 +282,8 @@ TEST(PracticeSession, TestsAfterTheDiagnosisAreFreeChecks) {
   for (const SessionEvent& event : session.history())
     if (event.kind == "test" && event.detail.find("(check)") != std::string::npos) ++checks;
   EXPECT_EQ(checks, 5);
+  // a test's line in words, the test named as the form names it
+  EXPECT_EQ(session.history()[1].detail, "rest geometry: nothing differs from a regulated action");
 }
 
 // Answer clicked twice on the same wrong answer is one mistake: the first answer (the right

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "dynamics/action_dynamics.h"
 #include "frame_history.h"
@@ -36,6 +37,7 @@ class ActionViewTest : public QObject {
   void labels_avoid_each_other_and_kept_clear_ones_the_drawing();
   void close_up_labels_name_their_own_part_and_hold_still();
   void larger_text_for_a_class_enlarges_the_plots_and_panels();
+  void the_readout_says_when_the_felt_is_on_the_string();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -477,6 +479,38 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
            qPrintable(QString("%1 px shown of %2")
                           .arg(window.regulation()->parentWidget()->width())
                           .arg(window.regulation()->minimumSizeHint().width())));
+}
+
+// The gap is read at a point fixed on the felt, up to 0.3 mm behind its nearest point near the
+// string: while the felt presses the string (its contact carries force) the readout says so
+// instead of a positive gap the drawn string force would contradict.
+void ActionViewTest::the_readout_says_when_the_felt_is_on_the_string() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("force:const:40");
+  pat::ui::PlaybackController* controller = window.controller();
+  QVERIFY(wait_until([&] { return controller->history().last_time() > 0.03; }, 60000));
+  controller->pause();
+  const int string_contact = window.model()->landmarks.string_contact;
+  std::optional<pat::ui::Frame> on_string, apart;
+  for (double t = 0.0; t <= 0.03 && !(on_string && apart); t += 1e-4) {
+    const pat::ui::Frame frame = controller->history().interpolated(t);
+    const bool touching = frame.contact_force_n.at(string_contact) > 0.0;
+    if (touching && frame.hammer_string_gap_mm > 0.0 && !on_string) on_string = frame;
+    if (!touching && !apart) apart = frame;
+  }
+  QVERIFY2(on_string, "no frame with the felt on the string at a positive reading");
+  QVERIFY(apart);
+  ActionView view;
+  view.resize(740, 330);
+  view.show_frame(*on_string);
+  view.grab();
+  QVERIFY2(view.readout().contains("felt on the string"), qPrintable(view.readout()));
+  view.show_frame(*apart);
+  view.grab();
+  QVERIFY2(view.readout().contains(" mm") && !view.readout().contains("felt on the string"),
+           qPrintable(view.readout()));
 }
 
 QTEST_MAIN(ActionViewTest)

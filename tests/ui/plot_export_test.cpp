@@ -3,14 +3,18 @@
 // command line's --plot writes.
 #include "plot_export.h"
 
+#include <QDir>
 #include <QFile>
 #include <QImage>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
 #include <memory>
 
 #include "analysis_plots.h"
 #include "core/error.h"
+#include "export_folder.h"
 #include "io/csv.h"
 #include "plot_panel.h"
 
@@ -28,6 +32,7 @@ class PlotExportTest : public QObject {
   void flat_series_keeps_a_bounded_value_axis();
   void a_narrow_plot_puts_its_legend_under_it();
   void a_large_picture_is_drawn_larger_not_wider();
+  void export_dialogs_open_in_the_last_export_folder_or_documents();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -218,6 +223,24 @@ void PlotExportTest::analysis_plots_are_written_headless() {
   const QString png = dir_.filePath("plots.png");
   pat::ui::write_analysis_plots({angles, strikes}, png);
   QCOMPARE(QImage(png).size(), pat::ui::stacked_plot_size(2));  // 300 px per stacked plot
+}
+
+// An export dialog opens where the last export went, or in the documents folder (or home), not in
+// the working directory the program was started from (a build tree, when run from there).
+void PlotExportTest::export_dialogs_open_in_the_last_export_folder_or_documents() {
+  QSettings().remove("export_folder");
+  const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+  const QString first = pat::ui::export_folder();
+  QVERIFY2(first == documents || first == QDir::homePath(), qPrintable(first));
+  const QString file = dir_.filePath("plots.png");
+  pat::ui::remember_export_folder(file);
+  QCOMPARE(pat::ui::export_folder(), dir_.path());
+  QCOMPARE(pat::ui::export_path("report.pdf"), dir_.filePath("report.pdf"));
+  pat::ui::remember_export_folder(dir_.path());  // a report written into a folder
+  QCOMPARE(pat::ui::export_folder(), dir_.path());
+  QSettings().setValue("export_folder", dir_.filePath("gone"));  // since removed: not offered
+  QVERIFY(pat::ui::export_folder() != dir_.filePath("gone"));
+  QSettings().remove("export_folder");
 }
 
 QTEST_MAIN(PlotExportTest)

@@ -9,6 +9,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFile>
+#include <QLabel>
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -50,6 +51,7 @@ class PracticePanelTest : public QObject {
   void the_exercise_form_offers_the_action_on_screen();
   void larger_text_widens_the_practice_form();
   void readings_wait_for_the_playback();
+  void correction_sliders_say_which_way_is_which();
 };
 
 /// Answers the next question box that opens (modal: the click that opens it returns only once
@@ -447,6 +449,22 @@ void PracticePanelTest::readings_wait_for_the_playback() {
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
   window.show_practice(false);
   QVERIFY(!panel->readings_held());
+}
+
+// Each correction slider says what its right-hand (+) side does to its part, in the adjuster's
+// own words (the regulation panel, which says it too, is hidden while practising).
+void PracticePanelTest::correction_sliders_say_which_way_is_which() {
+  PracticePanel panel;
+  panel.start_seed("grand", 4, 1);
+  auto* capstan = panel.findChild<QLabel*>("direction_hammer_blow");
+  QVERIFY(capstan);
+  QVERIFY2(capstan->text().startsWith("capstan (key pilot): to the right (+) screws it up"),
+           qPrintable(capstan->text()));
+  for (const char* setting :
+       {"key_dip", "jack_position", "lever_height", "let_off", "drop", "checking"}) {
+    auto* label = panel.findChild<QLabel*>(QString("direction_") + setting);
+    QVERIFY2(label && label->text().contains("to the right (+)"), setting);
+  }
 }
 
 QTEST_MAIN(PracticePanelTest)
