@@ -165,6 +165,27 @@ TEST(PresetErrors, ClosedEndNamesTheChoicesAndRefusesRoundedCorners) {
   expect_preset_error(preset, {"closed_end", "rounded"});
 }
 
+// A face's normal tilted against its segment would make the distance jump at the span's ends
+// (and the cull of apart contacts rests on it not jumping): refused, with the angle.
+TEST(PresetErrors, SegmentNormalMustStandSquareToItsFace) {
+  json preset = preset_json("grand");
+  std::size_t index = 0;
+  while (!preset["contacts"][index].contains("segment_mm")) ++index;
+  json& contact = preset["contacts"][index];
+  const double dx =
+      contact["segment_mm"][1][0].get<double>() - contact["segment_mm"][0][0].get<double>();
+  const double dy =
+      contact["segment_mm"][1][1].get<double>() - contact["segment_mm"][0][1].get<double>();
+  // the normal turned 5° toward the segment's direction
+  const double length = std::hypot(dx, dy), turn = 5.0 * kPi / 180.0;
+  const double nx = contact["normal"][0].get<double>(), ny = contact["normal"][1].get<double>();
+  contact["normal"] = {nx * std::cos(turn) + dx / length * std::sin(turn),
+                       ny * std::cos(turn) + dy / length * std::sin(turn)};
+  const std::string where = "contacts[" + std::to_string(index) + "]";
+  expect_preset_error(preset,
+                      {where.c_str(), "normal", "not perpendicular to segment_mm", "off by 5°"});
+}
+
 TEST(PresetErrors, UnsupportedSchema) {
   json preset = preset_json("grand");
   preset["schema"] = 2;
