@@ -363,6 +363,26 @@ void MainWindow::build_menus() {
   follow->setChecked(true);
   connect(follow, &QAction::toggled, plots_, &PlotStack::set_following);
   connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
+  // how much time the followed plots span: a blow's strike and catch, or a whole slow press
+  QMenu* span = view->addMenu(tr("Plot time &span"));
+  auto* spans = new QActionGroup(span);
+  const double chosen = QSettings().value("view/plot_span_s", 0.25).toDouble();
+  for (const double seconds : {0.05, 0.25, 1.0, 2.0, 5.0}) {
+    QAction* a = span->addAction(seconds < 1.0 ? tr("%1 ms").arg(seconds * 1e3)
+                                               : tr("%1 s").arg(seconds));
+    a->setCheckable(true);
+    a->setChecked(std::abs(seconds - chosen) < 1e-9);
+    spans->addAction(a);
+    connect(a, &QAction::triggered, this, [this, seconds] {
+      QSettings().setValue("view/plot_span_s", seconds);
+      plots_->set_window(seconds);
+      plots_->set_following(true);
+    });
+  }
+  plots_->set_window(chosen);
+  QAction* whole = view->addAction(tr("Plots show the &whole run"));
+  whole->setShortcut(QKeySequence(tr("Ctrl+Shift+W")));
+  connect(whole, &QAction::triggered, plots_, &PlotStack::show_whole_run);
   QMenu* practice = menuBar()->addMenu(tr("&Practice"));
   // its own action, not the dock's toggleViewAction: Qt disables that one for a dock without a
   // close button, and this dock has none (below)

@@ -143,6 +143,25 @@ void PlotStack::show_time(double t) {
   replot();
 }
 
+void PlotStack::set_window(double seconds) {
+  window_s_ = seconds;
+  if (following_) show_time(latest_t_);
+}
+
+void PlotStack::show_whole_run() {
+  const double lo = std::max(0.0, latest_t_ - kKeptSeconds);
+  const double hi = std::max(latest_t_, lo + 5e-3);
+  if (following_) {
+    following_ = false;
+    emit followingChanged(false);
+  }
+  for (PlotPanel* panel : panels()) {
+    panel->set_x_range(lo, hi);
+    panel->fit_values();
+  }
+  replot();
+}
+
 void PlotStack::mark_time(double t) {
   marked_t_ = t;
   for (PlotPanel* panel : panels()) panel->set_time_mark(t);

@@ -35,8 +35,12 @@ class PlotStack : public QWidget {
   void mark_time(double t);
   void set_following(bool follow);
   bool following() const { return following_; }
-  /// Width of the followed time window, s.
-  void set_window(double seconds) { window_s_ = seconds; }
+  /// Width of the followed time window, s (0.25 s at first); applied at once when following.
+  void set_window(double seconds);
+  double window() const { return window_s_; }
+  /// The whole run kept (up to its last 60 s) on the time axes, values fitted to it; following
+  /// stops (a slow press's let-off and drop had scrolled away after 0.25 s).
+  void show_whole_run();
 
   std::vector<PlotPanel*> panels() const;
   PlotPanel* angles() const { return angles_; }

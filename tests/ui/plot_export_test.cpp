@@ -10,13 +10,16 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
+#include <cmath>
 #include <memory>
 
 #include "analysis_plots.h"
 #include "core/error.h"
 #include "export_folder.h"
 #include "io/csv.h"
+#include "model/preset_loader.h"
 #include "plot_panel.h"
+#include "plot_stack.h"
 
 using pat::ui::PlotPanel;
 
@@ -33,6 +36,7 @@ class PlotExportTest : public QObject {
   void a_narrow_plot_puts_its_legend_under_it();
   void a_large_picture_is_drawn_larger_not_wider();
   void export_dialogs_open_in_the_last_export_folder_or_documents();
+  void the_live_plots_span_a_chosen_window_or_the_whole_run();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -241,6 +245,36 @@ void PlotExportTest::export_dialogs_open_in_the_last_export_folder_or_documents(
   QSettings().setValue("export_folder", dir_.filePath("gone"));  // since removed: not offered
   QVERIFY(pat::ui::export_folder() != dir_.filePath("gone"));
   QSettings().remove("export_folder");
+}
+
+// The live plots follow the time in a window of the chosen span, and show the whole run on demand
+// (a 1.4 s slow press's let-off and drop had scrolled out of the fixed 0.25 s).
+void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
+  const pat::ActionModel model = pat::load_action("grand");
+  pat::ui::PlotStack stack;
+  stack.set_model(model);
+  std::vector<pat::ui::Frame> frames;
+  for (int i = 0; i <= 1500; ++i) {
+    pat::ui::Frame f;
+    f.t = 1e-3 * i;
+    f.angle_deg.assign(model.bodies.size(), std::sin(f.t));
+    f.contact_force_n.assign(model.contacts.size(), 0.0);
+    frames.push_back(f);
+  }
+  stack.append(frames);
+  auto width = [&] {
+    const auto [lo, hi] = stack.angles()->x_range();
+    return hi - lo;
+  };
+  QVERIFY2(std::abs(width() - 0.25) < 1e-9, qPrintable(QString::number(width())));
+  stack.set_window(1.0);  // following: applied at once
+  QVERIFY2(std::abs(width() - 1.0) < 1e-9, qPrintable(QString::number(width())));
+  stack.show_whole_run();
+  QVERIFY(!stack.following());
+  const auto [lo, hi] = stack.angles()->x_range();
+  QCOMPARE(lo, 0.0);
+  QCOMPARE(hi, 1.5);
+  for (pat::ui::PlotPanel* panel : stack.panels()) QCOMPARE(panel->x_range(), stack.angles()->x_range());
 }
 
 QTEST_MAIN(PlotExportTest)
