@@ -169,7 +169,20 @@ void PlaybackController::step_back() {
 
 void PlaybackController::rewind() {
   pause();
-  if (!history_.empty()) show_time(history_.first_time());
+  if (history_.empty()) return;
+  // back to just before the latest blow struck (or key played) before the time shown, so that a
+  // class sees it again without stepping back through the whole run; pressed again, to the one
+  // before it, and at last to the run's start
+  constexpr double kLeadS = 2e-3;  // shown from slightly before the blow: the key still at rest
+  const double first = history_.first_time();
+  const double now = has_frame_ ? current_.t : display_time();
+  double target = first;
+  for (const auto& entry : inputs_) {
+    const double before = entry.first - kLeadS;
+    if (entry.first > first && before > first && before < now - 1e-9)
+      target = std::max(target, before);
+  }
+  show_time(target);
 }
 
 void PlaybackController::seek(double t) {

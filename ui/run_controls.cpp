@@ -60,7 +60,8 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   connect(start, &QPushButton::clicked, this, [this] { emit startRequested(input_->spec()); });
 
   auto* rewind = tool_button(this, QStyle::SP_MediaSkipBackward, tr("Rewind"),
-                             tr("Back to the oldest frame kept (Home)"));
+                             tr("Back to just before the last blow struck (Home); again: to the "
+                                "one before, then to the oldest frame kept"));
   auto* back =
       tool_button(this, QStyle::SP_MediaSeekBackward, tr("Step back"), tr("One frame back (Left)"));
   play_ = tool_button(this, QStyle::SP_MediaPlay, tr("Play"), tr("Play or pause (P)"));

@@ -128,9 +128,15 @@ void RunControlsTest::pause_step_and_rewind() {
   QVERIFY2(inputs.rfind("force:pulse:20:40; from t = ", 0) == 0 &&
                inputs.find(" s a blow struck (force:pulse:10:20)") != std::string::npos,
            inputs.c_str());
+  // Rewind goes first to just before the blow struck (a class sees it again at once), ...
   c->rewind();
+  QVERIFY2(c->current_frame().t < struck_at && c->current_frame().t > struck_at - 0.005,
+           qPrintable(QString("rewound to %1 s, the blow struck at %2 s")
+                          .arg(c->current_frame().t)
+                          .arg(struck_at)));
   QVERIFY2(window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
            qPrintable(window.statusBar()->currentMessage()));
+  // ... pressed again, to the run's start
   c->rewind();
   QCOMPARE(c->current_frame().t, c->history().first_time());
   QCOMPARE(c->current_frame().t, 0.0);
