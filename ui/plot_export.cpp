@@ -18,14 +18,28 @@ namespace {
 
 // the width (px) large exports lay their plots out at before drawing them larger
 constexpr double kLayoutWidth = 800.0;
+// the least height (layout units) a stacked plot is laid out at when the picture allows it:
+// title, plot area, ticks and axis title
+constexpr double kMinimumPlotUnits = 150.0;
 
+// the plots one above the other, sharing the height equally beyond the room a legend under a
+// plot needs (the contact forces' two rows of six had been squeezed into each other and cut at
+// the picture's bottom edge), so that every plot area keeps the same height
 std::vector<std::pair<PlotPanel*, QRect>> stacked(const std::vector<PlotPanel*>& plots,
                                                   QSize size) {
   std::vector<std::pair<PlotPanel*, QRect>> out;
   const int n = static_cast<int>(plots.size());
+  int legends = 0;
+  for (const PlotPanel* plot : plots) legends += plot->legend_height_below();
+  // never more than half the picture for legends: a tiny export shares it equally instead
+  if (legends > size.height() / 2) legends = 0;
+  const int shared = size.height() - legends;
+  int top = 0;
   for (int i = 0; i < n; ++i) {
-    const int top = size.height() * i / n, bottom = size.height() * (i + 1) / n;
-    out.push_back({plots[i], QRect(0, top, size.width(), bottom - top)});
+    const int extra = legends > 0 ? plots[i]->legend_height_below() : 0;
+    const int height = shared * (i + 1) / n - shared * i / n + extra;
+    out.push_back({plots[i], QRect(0, top, size.width(), height)});
+    top += height;
   }
   return out;
 }
@@ -99,7 +113,13 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
 
   // a large picture is the plots laid out at about 800 units wide and drawn larger, text
   // included (at 1600 pixels the screen's 9 pt text was a quarter of its width's share)
-  const double scale = std::max(1.0, size.width() / kLayoutWidth);
+  // ... unless that leaves a plot less than kMinimumPlotUnits high (four plots in 1000 pixels
+  // had 125 each: the contact legend's second row was cut at the bottom): then less larger
+  int legends = 0;
+  for (const PlotPanel* plot : plots) legends += plot->legend_height_below();
+  const double tall_enough =
+      size.height() / (kMinimumPlotUnits * static_cast<double>(plots.size()) + legends);
+  const double scale = std::max(1.0, std::min(size.width() / kLayoutWidth, tall_enough));
   const QSize layout(static_cast<int>(size.width() / scale),
                      static_cast<int>(size.height() / scale));
   switch (format) {

@@ -440,6 +440,10 @@ void PlotPanel::move_legend_below(bool for_good) {
   legend_below_ = true;
 }
 
+int PlotPanel::legend_height_below() const {
+  return legend_below_ ? plot_->legend->minimumOuterSizeHint().height() : 0;
+}
+
 QRect PlotPanel::legend_rect() const {
   return plot_->legend->outerRect();
 }

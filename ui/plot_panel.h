@@ -84,6 +84,8 @@ class PlotPanel : public QWidget {
   /// area itself, for tests.
   QRect legend_rect() const;
   bool legend_below() const { return legend_below_; }
+  /// The height (px) a legend under the plot takes (0 when it sits inside the plot area).
+  int legend_height_below() const;
   QRect plot_area_rect() const;
 
   void set_cursors_enabled(bool enabled);

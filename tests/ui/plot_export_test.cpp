@@ -37,6 +37,7 @@ class PlotExportTest : public QObject {
   void a_large_picture_is_drawn_larger_not_wider();
   void export_dialogs_open_in_the_last_export_folder_or_documents();
   void the_live_plots_span_a_chosen_window_or_the_whole_run();
+  void a_legend_under_a_stacked_plot_keeps_its_height();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -275,6 +276,36 @@ void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
   QCOMPARE(lo, 0.0);
   QCOMPARE(hi, 1.5);
   for (pat::ui::PlotPanel* panel : stack.panels()) QCOMPARE(panel->x_range(), stack.angles()->x_range());
+}
+
+// The window's four plots exported at 1600x1000: the contact forces' legend (two rows under its
+// plot) keeps the height it needs inside its share of the picture (it was squeezed into one row's
+// height and cut at the bottom edge).
+void PlotExportTest::a_legend_under_a_stacked_plot_keeps_its_height() {
+  const pat::ActionModel model = pat::load_action("grand");
+  pat::ui::PlotStack stack;
+  stack.resize(740, 360);
+  stack.set_model(model);
+  std::vector<pat::ui::Frame> frames;
+  for (int i = 0; i <= 300; ++i) {
+    pat::ui::Frame f;
+    f.t = 1e-3 * i;
+    f.angle_deg.assign(model.bodies.size(), std::sin(20 * f.t));
+    f.contact_force_n.assign(model.contacts.size(), 10.0 * std::cos(20 * f.t));
+    frames.push_back(f);
+  }
+  stack.append(frames);
+  stack.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&stack));
+  pat::ui::PlotPanel* contacts = stack.contacts();
+  QVERIFY(contacts->legend_below());
+  const int needed = contacts->legend_height_below();
+  const QString path = dir_.filePath("stack.png");
+  pat::ui::export_plots(stack.panels(), path, QSize(1600, 1000), {});
+  // the render laid the panel out at its share: the legend got the rows it needs
+  const QRect legend = contacts->legend_rect();
+  QVERIFY2(legend.height() >= needed,
+           qPrintable(QString("legend %1 px high, needs %2").arg(legend.height()).arg(needed)));
 }
 
 QTEST_MAIN(PlotExportTest)
