@@ -162,6 +162,11 @@ void ActionView::set_labels_visible(bool visible) {
   update();
 }
 
+void ActionView::set_measurements_visible(bool visible) {
+  measurements_ = visible;
+  update();
+}
+
 QTransform ActionView::model_to_widget() const {
   return QTransform(scale_, 0, 0, -scale_, offset_.x(), offset_.y());
 }
@@ -463,7 +468,7 @@ void ActionView::paint_frame(QPainter& painter) {
     painter.setBrush(Qt::white);
     painter.drawEllipse(at, 5.0, 5.0);
     draw_arrow(painter, at, tip, contact_colour());
-    if (r.normal_force >= 0.5)
+    if (r.normal_force >= 0.5 && measurements_)
       force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
                               contact_colour().darker(130), true, false, tip,
                               QStringLiteral("force %1").arg(c)});
@@ -511,8 +516,8 @@ void ActionView::paint_frame(QPainter& painter) {
                                .arg(finger_n, 0, 'f', 1);
   const double room = width() - 20.0;
   QFont readout_font_used = big;
-  QString readout = full;
-  if (QFontMetricsF(big).horizontalAdvance(full) > room) {
+  QString readout = measurements_ ? full : tr("t = %1 ms").arg(t_ms, 0, 'f', 2);
+  if (measurements_ && QFontMetricsF(big).horizontalAdvance(full) > room) {
     readout = shorter;
     // 0.5 pt steps down to the view's own size, bold
     QFont smaller = big;

@@ -52,6 +52,12 @@ class ActionView : public QWidget {
   static std::optional<ModelBox> focus_region(const ActionModel& model, ViewFocus focus);
   void set_labels_visible(bool visible);
   bool labels_visible() const { return labels_; }
+  /// Whether the readout gives the hammer–string gap and finger force and the force arrows their
+  /// newtons (on by default). Off in a practice exercise, where the technician's tests are the
+  /// measurements and these would read the hidden setting off for free: the time and the arrows
+  /// stay (what the eye sees of the action).
+  void set_measurements_visible(bool visible);
+  bool measurements_visible() const { return measurements_; }
   /// Model (m) to widget (px) transform in use.
   QTransform model_to_widget() const;
   /// Screen position of the key front in the frame shown (where a left drag plays the key).
@@ -111,6 +117,7 @@ class ActionView : public QWidget {
   std::unique_ptr<ActionDynamics> dynamics_;
   DynamicsReading reading_;
   bool labels_ = true;
+  bool measurements_ = true;
   bool fitted_ = false;
   ViewFocus focus_ = ViewFocus::whole;
   double scale_ = 1000.0;  // px per m

@@ -482,7 +482,12 @@ void MainWindow::build_practice() {
       speed_before_practice_ = run_controls_->speed_index();
     }
     practising_ = active;
-    if (!active) end_practice_test_shown();
+    // the tests are the measurements: the readout's gap and force, the arrows' newtons and the
+    // plots (the hammer blow at rest, a jack force that names the lever height) would read the
+    // hidden setting off for free; the action itself stays in view, taller
+    view_->set_measurements_visible(!active);
+    plots_->setVisible(!active);
+    QTimer::singleShot(0, this, [this] { view_->reset_view(); });  // refit to its new height
     regulation_dock_->setVisible(!active);
     analyses_dock_->setVisible(!active);
     enable_action_changes(!active);
@@ -502,6 +507,10 @@ void MainWindow::enable_action_changes(bool on) {
 void MainWindow::end_practice() {
   if (!practising_) return;
   practising_ = false;
+  end_practice_test_shown();
+  view_->set_measurements_visible(true);
+  plots_->show();
+  QTimer::singleShot(0, this, [this] { view_->reset_view(); });
   regulation_dock_->show();
   analyses_dock_->show();
   enable_action_changes(true);

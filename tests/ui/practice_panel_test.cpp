@@ -23,12 +23,14 @@
 #include <QTimer>
 #include <QWheelEvent>
 
+#include "action_view.h"
 #include "core/error.h"
 #include "input_spec_form.h"
 #include "main_window.h"
 #include "measurement_service.h"
 #include "playback_controller.h"
 #include "practice/exercise.h"
+#include "plot_stack.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
 #include "run_controls.h"
@@ -110,6 +112,11 @@ void PracticePanelTest::walk_through_an_exercise() {
   // the regulation panel (true adjuster positions, measured values) is hidden while practising
   QVERIFY(!window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
   QVERIFY(!window.findChild<QDockWidget*>("analyses_dock")->isVisibleTo(&window));
+  // nor do the readout's gap, the arrows' newtons or the plots measure it for free: the tests do
+  QVERIFY(!window.plots()->isVisibleTo(&window));
+  QVERIFY(!window.view()->measurements_visible());
+  window.view()->grab();
+  QVERIFY2(!window.view()->readout().contains("gap"), qPrintable(window.view()->readout()));
   // the window now runs the hidden action: its adjusters moved, nothing on screen says where
   QVERIFY(window.model()->adjusters[window.model()->adjuster_index("checking")].value != 0.0);
   // nor can another action, a preset or a saved preset of the hidden action be opened
@@ -269,6 +276,8 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(!practice_mode->isChecked());
   QVERIFY(!window.findChild<QDockWidget*>("practice_dock")->isVisibleTo(&window));
   QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  QVERIFY(window.plots()->isVisibleTo(&window));
+  QVERIFY(window.view()->measurements_visible());
   for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
   for (QAction* action : window.menuBar()->findChildren<QAction*>())
     if (action->text().contains("preset")) QVERIFY(action->isEnabled());
