@@ -21,6 +21,9 @@ constexpr double kKeyGrabRadiusPx = 24.0;
 constexpr double kCheckingNamesReach = 0.125;
 // room kept free of labels around the knuckle or butt and the jack top (px)
 constexpr double kEscapementRoomPx = 4.0;
+// a contact force below this (N) is drawn as no contact at all: no arrow, and the readout's gap
+// is not called "felt on the string"
+constexpr double kShownForceN = 1e-3;
 // the named points of the bodies are a group of their own (LabelPlacer::NamedStyle::group)
 constexpr int kBodyGroup = 1;
 
@@ -453,7 +456,7 @@ void ActionView::paint_frame(QPainter& painter) {
   active_contacts_ = 0;
   for (std::size_t c = 0; c < reading_.contacts.size(); ++c) {
     const ContactReading& r = reading_.contacts[c];
-    if (!r.active || r.normal_force <= 1e-3) continue;
+    if (!r.active || r.normal_force <= kShownForceN) continue;
     ++active_contacts_;
     const QPointF at = to_screen(r.point);
     double length = std::clamp(14.0 * std::sqrt(r.normal_force), 10.0, 90.0);
@@ -499,7 +502,7 @@ void ActionView::paint_frame(QPainter& painter) {
   const int string_contact = model.landmarks.string_contact;
   const bool on_string = string_contact >= 0 &&
                          string_contact < static_cast<int>(frame_->contact_force_n.size()) &&
-                         frame_->contact_force_n[string_contact] > 0.0;
+                         frame_->contact_force_n[string_contact] > kShownForceN;
   const QString gap_text =
       on_string ? tr("felt on the string") : tr("%1 mm").arg(gap_mm, 0, 'f', 2);
   const QString full = tr("t = %1 ms   hammer–string gap %2   finger %3 N")

@@ -139,6 +139,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                     .arg(cause));
   });
   connect(controller_, &PlaybackController::runRefused, this, [this](const QString& why) {
+    end_practice_test_shown();  // a run that cannot start plays no test
     show_run_status();
     show_banner(tr("Could not start: %1. Choose another input, or fix the setting or the file, "
                    "and press \"Start from rest\".")
@@ -316,9 +317,11 @@ void MainWindow::build_menus() {
   connect(upright_action_, &QAction::triggered, this, [this] { open_action("upright"); });
 
   QMenu* exports = menuBar()->addMenu(tr("&Export"));
-  exports->addAction(tr("&All plots…"), QKeySequence(tr("Ctrl+E")), this,
-                     [this] { export_from_menu(plots_->panels(), tr("all plots"), true); });
+  measurement_actions_.push_back(
+      exports->addAction(tr("&All plots…"), QKeySequence(tr("Ctrl+E")), this,
+                         [this] { export_from_menu(plots_->panels(), tr("all plots"), true); }));
   QMenu* one = exports->addMenu(tr("One &plot"));
+  measurement_actions_.push_back(one->menuAction());
   for (PlotPanel* panel : plots_->panels()) {
     const QString title = panel->title();
     one->addAction(title + "…", this, [this, title] {
@@ -326,10 +329,12 @@ void MainWindow::build_menus() {
         if (p->title() == title) export_from_menu({p}, title, true);
     });
   }
-  exports->addAction(tr("Run &trace, every column (CSV)…"), this, [this] {
-    export_to_chosen_file(tr("the run trace"), tr("CSV (*.csv)"), true,
-                          [this](const QString& path) { export_run_trace(path.toStdString()); });
-  });
+  measurement_actions_.push_back(
+      exports->addAction(tr("Run &trace, every column (CSV)…"), this, [this] {
+        export_to_chosen_file(
+            tr("the run trace"), tr("CSV (*.csv)"), true,
+            [this](const QString& path) { export_run_trace(path.toStdString()); });
+      }));
   exports->addAction(tr("Export &size…"), this,
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
@@ -365,11 +370,18 @@ void MainWindow::build_menus() {
   connect(plots_, &PlotStack::followingChanged, follow, &QAction::setChecked);
   // how much time the followed plots span: a blow's strike and catch, or a whole slow press
   QMenu* span = view->addMenu(tr("Plot time &span"));
+  measurement_actions_.push_back(span->menuAction());
   auto* spans = new QActionGroup(span);
-  const double chosen = QSettings().value("view/plot_span_s", 0.25).toDouble();
-  for (const double seconds : {0.05, 0.25, 1.0, 2.0, 5.0}) {
-    QAction* a = span->addAction(seconds < 1.0 ? tr("%1 ms").arg(seconds * 1e3)
-                                               : tr("%1 s").arg(seconds));
+  const std::vector<double> span_choices{0.05, 0.25, 1.0, 2.0, 5.0};
+  // the remembered span, or the listed one nearest it (a hand-edited setting)
+  const double remembered = QSettings().value("view/plot_span_s", 0.25).toDouble();
+  double chosen = 0.25;
+  for (const double seconds : span_choices)
+    if (std::abs(std::log(seconds / remembered)) < std::abs(std::log(chosen / remembered)))
+      chosen = seconds;
+  for (const double seconds : span_choices) {
+    QAction* a =
+        span->addAction(seconds < 1.0 ? tr("%1 ms").arg(seconds * 1e3) : tr("%1 s").arg(seconds));
     a->setCheckable(true);
     a->setChecked(std::abs(seconds - chosen) < 1e-9);
     spans->addAction(a);
@@ -383,6 +395,7 @@ void MainWindow::build_menus() {
   QAction* whole = view->addAction(tr("Plots show the &whole run"));
   whole->setShortcut(QKeySequence(tr("Ctrl+Shift+W")));
   connect(whole, &QAction::triggered, plots_, &PlotStack::show_whole_run);
+  measurement_actions_.push_back(whole);
   QMenu* practice = menuBar()->addMenu(tr("&Practice"));
   // its own action, not the dock's toggleViewAction: Qt disables that one for a dock without a
   // close button, and this dock has none (below)
@@ -482,19 +495,25 @@ void MainWindow::build_practice() {
       speed_before_practice_ = run_controls_->speed_index();
     }
     practising_ = active;
-    // the tests are the measurements: the readout's gap and force, the arrows' newtons and the
-    // plots (the hammer blow at rest, a jack force that names the lever height) would read the
-    // hidden setting off for free; the action itself stays in view, taller
-    view_->set_measurements_visible(!active);
-    plots_->setVisible(!active);
-    QTimer::singleShot(0, this, [this] { view_->reset_view(); });  // refit to its new height
-    regulation_dock_->setVisible(!active);
-    analyses_dock_->setVisible(!active);
-    enable_action_changes(!active);
+    set_practice_layout(active);
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
   practice_dock_->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+}
+
+void MainWindow::set_practice_layout(bool practising) {
+  // the regulation panel shows true adjuster positions and measured values, the analyses measure
+  // every setting against its target; the readout's gap and force, the arrows' newtons, the plots
+  // and their exports (the hammer blow at rest, a jack force that names the lever height) would
+  // read the hidden setting off for free: the tests are the measurements. The action stays in
+  // view, taller (the view refits as it is resized).
+  regulation_dock_->setVisible(!practising);
+  analyses_dock_->setVisible(!practising);
+  view_->set_measurements_visible(!practising);
+  plots_->setVisible(!practising);
+  for (QAction* a : measurement_actions_) a->setEnabled(!practising);
+  enable_action_changes(!practising);
 }
 
 void MainWindow::enable_action_changes(bool on) {
@@ -508,12 +527,7 @@ void MainWindow::end_practice() {
   if (!practising_) return;
   practising_ = false;
   end_practice_test_shown();
-  view_->set_measurements_visible(true);
-  plots_->show();
-  QTimer::singleShot(0, this, [this] { view_->reset_view(); });
-  regulation_dock_->show();
-  analyses_dock_->show();
-  enable_action_changes(true);
+  set_practice_layout(false);
   // the tests shown took over the run input and the speed: the class's own come back
   run_controls_->input_form()->set_spec(input_before_practice_);
   run_controls_->set_speed_index(speed_before_practice_);
@@ -605,7 +619,10 @@ void MainWindow::show_practice_test(const QString& input, double duration_s) {
       if (duration_s / speeds[i] <= kShownTestWallSeconds) chosen = i;
     run_controls_->set_speed_index(chosen);
   }
-  start(input.toStdString());  // (its restart ends the test shown before)
+  // the test shown before is over (its readings were shown when this one was asked for); the
+  // restart below must not end the new one
+  practice_test_end_s_ = -1.0;
+  start(input.toStdString());
   practice_test_end_s_ = duration_s > 0.0 ? duration_s : -1.0;
 }
 
@@ -797,8 +814,8 @@ void MainWindow::save_preset(const std::string& path) {
 
 void MainWindow::save_preset_from_menu() {
   if (!model_) return;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save current state as preset"), {},
-                                                    tr("Action presets (*.json)"));
+  const QString path = QFileDialog::getSaveFileName(this, tr("Save current state as preset"),
+                                                    export_folder(), tr("Action presets (*.json)"));
   if (path.isEmpty()) return;
   try {
     save_preset(path.toStdString());

@@ -175,9 +175,13 @@ class MainWindow : public QMainWindow {
   double practice_test_end_s_ = -1.0;
   /// Tells the practice panel that the test on screen is over (played, stopped or replaced).
   void end_practice_test_shown();
-  std::string input_before_practice_;  ///< the run input when an exercise began
-  int speed_before_practice_ = 3;      ///< and the speed (index into RunControls::speeds)
-  QString running_input_;              ///< what drives the key (PlaybackController::inputChanged)
+  /// Hides (practising) or shows what would measure a hidden setting: the regulation and
+  /// analyses docks, the plots and their exports, the readout's and arrows' numbers.
+  void set_practice_layout(bool practising);
+  std::vector<QAction*> measurement_actions_;  ///< plot exports and plot span: off in practice
+  std::string input_before_practice_;          ///< the run input when an exercise began
+  int speed_before_practice_ = 3;              ///< and the speed (index into RunControls::speeds)
+  QString running_input_;  ///< what drives the key (PlaybackController::inputChanged)
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

@@ -45,7 +45,8 @@ class PlaybackController : public QObject {
   /// Paused: one frame forward (computed if needed) or back.
   void step_forward();
   void step_back();
-  /// Paused, at the oldest frame kept.
+  /// Paused, just before the last blow struck or key played before the frame shown (2 ms
+  /// before it); again, the one before; at last the oldest frame kept.
   void rewind();
   /// Displayed time (within the history), paused.
   void seek(double t);

@@ -511,8 +511,10 @@ void PracticePanel::run_test(PracticeTest test) {
   set_busy(true);
   progress_->setValue(0);
   const ShownTest shown = shown_test(test);
-  shown_test_playing_ = readings_wait_for_playback_ && shown.duration_s > 0.0;
   emit testShown(QString::fromStdString(shown.input), shown.duration_s);
+  // after the window has taken the test (its restart ends the one shown before, which must not
+  // end this one)
+  shown_test_playing_ = readings_wait_for_playback_ && shown.duration_s > 0.0;
   show_status(test == PracticeTest::Rest
                   ? tr("%1: the action rests on screen while it is measured.").arg(test_title(test))
                   : tr("%1: the action on screen plays it from rest while its readings are "
@@ -707,14 +709,17 @@ void PracticePanel::remember_session(const SessionScore& score) {
   QSettings settings;
   QStringList past = settings.value("practice/past_sessions").toStringList();
   const QString who = QString::fromStdString(session_->trainee());
-  past.prepend(tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
-                   .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
-                   .arg((who.isEmpty() ? QString() : who + ", ") +
-                        QString::fromStdString(session_->exercise().title))
-                   .arg(score.total, 0, 'f', 1)
-                   .arg(score.tests_used)
-                   .arg(score.hints_used)
-                   .arg(score.time_s, 0, 'f', 0));
+  past.prepend(
+      tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
+          .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
+          .arg((who.isEmpty() ? QString() : who + ", ") +
+               QString::fromStdString(session_->exercise().title))
+          .arg(score.total, 0, 'f', 1)
+          .arg(score.check_tests > 0
+                   ? tr("%1, %2 of them checks").arg(score.tests_used).arg(score.check_tests)
+                   : QString::number(score.tests_used))
+          .arg(score.hints_used)
+          .arg(score.time_s, 0, 'f', 0));
   while (past.size() > kPastSessionsKept) past.removeLast();
   settings.setValue("practice/past_sessions", past);
   show_past_sessions();

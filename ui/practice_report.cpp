@@ -14,7 +14,7 @@ QString cell(const std::string& text) {
   return QString::fromStdString(text).toHtmlEscaped();
 }
 
-/// A reading with its unit ("0.147 mm"), or why there is none.
+/// A reading with its unit ("0.15 mm"), or why there is none.
 QString reading(const std::optional<double>& v, const std::string& unit) {
   return v ? QString::fromStdString(reading_text(*v, unit)) : QObject::tr("not measurable");
 }

@@ -303,7 +303,7 @@ std::string test_label(PracticeTest test) {
     case PracticeTest::ForteBlow:
       return "forte blow";
     case PracticeTest::Repetition:
-      return "repetition test";
+      return "repeated notes";  // as the form's button says
   }
   return "test";
 }

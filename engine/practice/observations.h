@@ -32,7 +32,8 @@ enum class PracticeTest { Rest, SlowPress, ForteBlow, Repetition };
 
 /// The test's identifier ("rest", "slow_press", "forte_blow", "repetition").
 std::string test_name(PracticeTest test);
-/// The test in words ("rest geometry", "slow key press", "forte blow", "repetition test").
+/// The test in words, as the practice form names it ("rest geometry", "slow key press", "forte
+/// blow", "repeated notes").
 std::string test_label(PracticeTest test);
 /// Parses a test identifier; throws InputError naming the tests.
 PracticeTest parse_test(const std::string& name);

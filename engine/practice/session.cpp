@@ -178,8 +178,8 @@ std::string PracticeSession::hint(double t_s) {
              std::string(first.direction == "more" ? "larger" : "smaller") + " than its target.";
       break;
     default:
-      text = "The hidden setting is " + first.setting + " (" + first.direction + ")" +
-             (answers.size() > 1 ? ", and there is a second one." : ".");
+      text = "The hidden setting is " + setting_words(first.setting) + " (" + first.direction +
+             " than its target)" + (answers.size() > 1 ? ", and there is a second one." : ".");
   }
   ++hints_used_;
   history_.push_back({t_s, "hint", text});
@@ -195,9 +195,9 @@ std::string PracticeSession::answer_text() const {
   std::string text;
   for (std::size_t i = 0; i < answers.size() && i < exercise_.faults.size(); ++i) {
     const double mm = exercise_.faults[i].adjuster_mm;
-    text += (text.empty() ? "" : "; ") + answers[i].setting + " " + answers[i].direction +
-            " than its target (its adjuster moved " + (mm >= 0 ? "+" : "") + format_fixed(mm, 2) +
-            " mm)";
+    text += (text.empty() ? "" : "; ") + setting_words(answers[i].setting) + " " +
+            answers[i].direction + " than its target (its adjuster moved " + (mm >= 0 ? "+" : "") +
+            format_fixed(mm, 2) + " mm)";
   }
   return text;
 }

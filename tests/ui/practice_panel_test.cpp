@@ -29,8 +29,8 @@
 #include "main_window.h"
 #include "measurement_service.h"
 #include "playback_controller.h"
-#include "practice/exercise.h"
 #include "plot_stack.h"
+#include "practice/exercise.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
 #include "run_controls.h"
@@ -115,6 +115,12 @@ void PracticePanelTest::walk_through_an_exercise() {
   // nor do the readout's gap, the arrows' newtons or the plots measure it for free: the tests do
   QVERIFY(!window.plots()->isVisibleTo(&window));
   QVERIFY(!window.view()->measurements_visible());
+  auto plot_export_enabled = [&] {
+    for (QAction* action : window.menuBar()->findChildren<QAction*>())
+      if (action->text().startsWith("&All plots")) return action->isEnabled();
+    return true;
+  };
+  QVERIFY(!plot_export_enabled());  // nor exported
   window.view()->grab();
   QVERIFY2(!window.view()->readout().contains("gap"), qPrintable(window.view()->readout()));
   // the window now runs the hidden action: its adjusters moved, nothing on screen says where
@@ -278,6 +284,7 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
   QVERIFY(window.plots()->isVisibleTo(&window));
   QVERIFY(window.view()->measurements_visible());
+  QVERIFY(plot_export_enabled());
   for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
   for (QAction* action : window.menuBar()->findChildren<QAction*>())
     if (action->text().contains("preset")) QVERIFY(action->isEnabled());
@@ -368,13 +375,18 @@ void PracticePanelTest::the_exercise_form_offers_the_action_on_screen() {
   window.show_practice(false);
 }
 
-void PracticePanelTest::larger_text_widens_the_practice_form() {
-  MainWindow window;
+/// The grand in a shown 1400x900 window, practising seeded exercise `seed` (level 1).
+void start_shown_exercise(MainWindow& window, int seed) {
   window.open_action("grand");
   window.resize(1400, 900);
   window.show();
   window.show_practice(true);
-  window.practice()->start_seed("grand", 5, 1);
+  window.practice()->start_seed("grand", static_cast<std::uint64_t>(seed), 1);
+}
+
+void PracticePanelTest::larger_text_widens_the_practice_form() {
+  MainWindow window;
+  start_shown_exercise(window, 5);
   auto* scroll = window.practice()->findChild<QScrollArea*>("practice_scroll");
   QVERIFY(scroll);
   const int normal = scroll->minimumWidth();
@@ -419,12 +431,8 @@ void PracticePanelTest::broken_exercise_file_is_refused_with_its_field() {
 
 void PracticePanelTest::readings_wait_for_the_playback() {
   MainWindow window;
-  window.open_action("grand");
-  window.resize(1400, 900);
-  window.show();
-  window.show_practice(true);
+  start_shown_exercise(window, 3);
   PracticePanel* panel = window.practice();
-  panel->start_seed("grand", 3, 1);
   QVERIFY(QTest::qWaitForWindowExposed(&window));
   QVERIFY(wait_until([&] { return !window.measurements()->busy(); }, 60000));
 
@@ -444,18 +452,38 @@ void PracticePanelTest::readings_wait_for_the_playback() {
   // (on a machine slower than the playback the readings come after it; then nothing was held)
   if (held) QVERIFY(!panel->readings_held());
 
-  // a step of the trainee's shows held readings first: the history keeps the session's order
+  // The rest with the playback paused as soon as a test starts: its readings must then wait
+  // (whatever the machine's speed).
+  pat::ui::PlaybackController* controller = window.controller();
+  auto run_paused = [&](pat::PracticeTest test) {
+    panel->run_test(test);
+    controller->pause();
+    return wait_until([&] { return !panel->runner()->running(); }, 60000);
+  };
+  // a test asked for while the one before still plays: that one's readings show, and the new
+  // one's wait for its own playback (the window's restart for it had ended it at once)
   panel->run_test(pat::PracticeTest::ForteBlow);
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  QVERIFY(run_paused(pat::PracticeTest::SlowPress));
+  QVERIFY2(panel->readings_held(), qPrintable(panel->status_text()));
+  // played on (at real time), they come once the frame reaches the slow press's 1.4 s
   const int listed = panel->symptom_lines().size();
-  if (panel->readings_held()) {
-    panel->request_hint();
-    QVERIFY(!panel->readings_held());
-    QVERIFY(panel->symptom_lines().size() > listed);
-  }
+  window.run_controls()->set_speed_index(0);
+  controller->play();
+  QVERIFY(wait_until([&] { return panel->symptom_lines().size() > listed; }, 20000));
+  QVERIFY2(controller->current_frame().t >= 1.4 - 1e-9,
+           qPrintable(QString("shown at t = %1 s").arg(controller->current_frame().t)));
+
+  // a step of the trainee's shows held readings first: the history keeps the session's order
+  QVERIFY(run_paused(pat::PracticeTest::ForteBlow));
+  QVERIFY(panel->readings_held());
+  const int before_hint = panel->symptom_lines().size();
+  panel->request_hint();
+  QVERIFY(!panel->readings_held());
+  QVERIFY(panel->symptom_lines().size() > before_hint);
   // leaving the practice mode shows them too (nothing is left waiting in a hidden form)
-  panel->run_test(pat::PracticeTest::ForteBlow);
-  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  QVERIFY(run_paused(pat::PracticeTest::ForteBlow));
+  QVERIFY(panel->readings_held());
   window.show_practice(false);
   QVERIFY(!panel->readings_held());
 }
