@@ -39,7 +39,7 @@ usage:
                         [--plot FILE] [--json]
   pianoaction study sensitivity --action A [--step MM] [--force N] [--set ADJUSTER=MM]...
                         [--out CSV] [--plot FILE] [--json]
-  pianoaction bench     [--duration S] [--plot FILE] [--json]
+  pianoaction bench     [--input SPEC] [--duration S] [--plot FILE] [--json]
   pianoaction bench --window [--action A] [--input SPEC] [--duration S] [--trials N]
                         [--plot FILE] [--json]
   pianoaction swing     --action A [--release-deg D] [--out CSV] [--plot FILE] [--json]
