@@ -19,7 +19,9 @@ PracticeRunner::~PracticeRunner() {
 }
 
 void PracticeRunner::reset_cache() {
+  ++generation_;
   regulated_cache_.clear();
+  if (future_.isFinished()) running_ = false;  // a queued delivery would have said so
 }
 
 void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
@@ -28,11 +30,14 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
   running_ = true;
   cancelled_.store(false);
   const int key = static_cast<int>(test);
+  const int generation = generation_;
   const auto cached = regulated_cache_.find(key);
   const bool have_regulated = cached != regulated_cache_.end();
   std::vector<Observation> regulated_seen =
       have_regulated ? cached->second : std::vector<Observation>{};
-  future_ = QtConcurrent::run(background_pool(), [this, hidden, regulated, test, key,
+  // its results come back through the window's event queue (queued even when the wait() of a
+  // new exercise runs a task not yet started in the window's own thread): never inside a call
+  future_ = QtConcurrent::run(background_pool(), [this, hidden, regulated, test, key, generation,
                                                   have_regulated, regulated_seen]() mutable {
     const QString stage = QString::fromStdString(test_name(test));
     const int runs = have_regulated ? 1 : 2;
@@ -45,8 +50,9 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
           const double overall = (run_index + f) / runs;
           if (overall - last_sent >= 0.01) {
             last_sent = overall;
-            QMetaObject::invokeMethod(this,
-                                      [this, overall, stage] { emit progress(overall, stage); });
+            QMetaObject::invokeMethod(
+                this, [this, overall, stage] { emit progress(overall, stage); },
+                Qt::QueuedConnection);
           }
           return !cancelled_.load();
         },
@@ -58,17 +64,25 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
         regulated_seen = run_test(*regulated, find_rest_state(*regulated), test, &reporter);
       }
       if (cancelled_.load()) throw Cancelled();
-      QMetaObject::invokeMethod(this, [this, key, seen, regulated_seen] {
-        running_ = false;
-        regulated_cache_[key] = regulated_seen;
-        emit observed(key, seen, regulated_seen);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, key, generation, seen, regulated_seen] {
+            if (generation != generation_) return;  // an exercise left behind
+            running_ = false;
+            regulated_cache_[key] = regulated_seen;
+            emit observed(key, seen, regulated_seen);
+          },
+          Qt::QueuedConnection);
     } catch (const std::exception& e) {
       const QString reason = QString::fromStdString(e.what());
-      QMetaObject::invokeMethod(this, [this, reason] {
-        running_ = false;
-        emit failed(reason);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, generation, reason] {
+            if (generation != generation_) return;
+            running_ = false;
+            emit failed(reason);
+          },
+          Qt::QueuedConnection);
     }
   });
 }
@@ -78,21 +92,31 @@ void PracticeRunner::measure(const PracticeSession& session) {
   running_ = true;
   cancelled_.store(false);
   auto copy = std::make_shared<PracticeSession>(session);
-  future_ = QtConcurrent::run(background_pool(), [this, copy] {
+  const int generation = generation_;
+  future_ = QtConcurrent::run(background_pool(), [this, copy, generation] {
     try {
-      QMetaObject::invokeMethod(this, [this] { emit progress(0.0, tr("measuring")); });
+      QMetaObject::invokeMethod(
+          this, [this] { emit progress(0.0, tr("measuring")); }, Qt::QueuedConnection);
       std::vector<CorrectionReading> readings = measure_corrections(*copy);
       if (cancelled_.load()) throw Cancelled();
-      QMetaObject::invokeMethod(this, [this, readings] {
-        running_ = false;
-        emit measured(readings);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, generation, readings] {
+            if (generation != generation_) return;  // an exercise left behind
+            running_ = false;
+            emit measured(readings);
+          },
+          Qt::QueuedConnection);
     } catch (const std::exception& e) {
       const QString reason = QString::fromStdString(e.what());
-      QMetaObject::invokeMethod(this, [this, reason] {
-        running_ = false;
-        emit failed(reason);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, generation, reason] {
+            if (generation != generation_) return;
+            running_ = false;
+            emit failed(reason);
+          },
+          Qt::QueuedConnection);
     }
   });
 }

@@ -27,7 +27,10 @@ class PracticeRunner : public QObject {
                std::shared_ptr<const ActionModel> regulated, PracticeTest test);
   /// Measures the settings the score needs (measure_corrections) on a copy of `session`.
   void measure(const PracticeSession& session);
-  /// Forgets the regulated action's cached observations (a new exercise).
+  /// Forgets the regulated action's cached observations (a new exercise), and the results of any
+  /// run started before: one already finished but not yet delivered (its signal queued for the
+  /// window's thread) is dropped, so that it cannot reach the new exercise. Call after cancel()
+  /// and wait().
   void reset_cache();
   void cancel() { cancelled_.store(true); }
   bool running() const { return running_; }
@@ -44,6 +47,7 @@ class PracticeRunner : public QObject {
  private:
   std::atomic<bool> cancelled_{false};
   bool running_ = false;
+  int generation_ = 0;  ///< of the exercise the runs are for (reset_cache() starts a new one)
   QFuture<void> future_;
   std::map<int, std::vector<Observation>> regulated_cache_;  ///< used in the window thread only
 };

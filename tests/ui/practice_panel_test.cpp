@@ -28,6 +28,7 @@
 #include "input_spec_form.h"
 #include "main_window.h"
 #include "measurement_service.h"
+#include "model/preset_loader.h"
 #include "playback_controller.h"
 #include "plot_stack.h"
 #include "practice/exercise.h"
@@ -54,6 +55,7 @@ class PracticePanelTest : public QObject {
   void larger_text_widens_the_practice_form();
   void readings_wait_for_the_playback();
   void correction_sliders_say_which_way_is_which();
+  void a_result_left_behind_by_a_new_exercise_is_dropped();
 };
 
 /// Answers the next question box that opens (modal: the click that opens it returns only once
@@ -502,6 +504,24 @@ void PracticePanelTest::correction_sliders_say_which_way_is_which() {
     auto* label = panel.findChild<QLabel*>(QString("direction_") + setting);
     QVERIFY2(label && label->text().contains("to the right (+)"), setting);
   }
+}
+
+// A test that finished as a new exercise began (its result queued for the window's thread) must
+// not reach the new exercise: it would record the old action's test in the new session and cache
+// the old action's regulated readings for the new comparison.
+void PracticePanelTest::a_result_left_behind_by_a_new_exercise_is_dropped() {
+  pat::ui::PracticeRunner runner;
+  auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  QSignalSpy observed(&runner, &pat::ui::PracticeRunner::observed);
+  runner.observe(model, model, pat::PracticeTest::Rest);
+  runner.wait();         // finished: its delivery waits in the event queue
+  runner.reset_cache();  // a new exercise
+  QTest::qWait(100);
+  QCOMPARE(observed.count(), 0);
+  QVERIFY(!runner.running());
+  // the new exercise's own test is delivered
+  runner.observe(model, model, pat::PracticeTest::Rest);
+  QVERIFY(observed.wait(60000));
 }
 
 QTEST_MAIN(PracticePanelTest)
