@@ -3,7 +3,7 @@
 // tests). Each benchmark reports per-iteration time and, where it simulates, `realtime` (simulated
 // seconds per wall-clock second: the figure of the 20x goal).
 //
-//   build/tests/benchmarks/engine_benchmarks                           everything (about 40 s)
+//   build/tests/benchmarks/engine_benchmarks                           everything (about half a minute)
 //   build/tests/benchmarks/engine_benchmarks --benchmark_filter=Rhs    one family
 //
 // The states the right-hand side is timed at are those of a real double blow (the cull of apart
