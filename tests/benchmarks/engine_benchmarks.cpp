@@ -3,8 +3,8 @@
 // tests). Each benchmark reports per-iteration time and, where it simulates, `realtime` (simulated
 // seconds per wall-clock second: the figure of the 20x goal).
 //
-//   build/tests/benchmarks/engine_benchmarks                           everything (about half a minute)
-//   build/tests/benchmarks/engine_benchmarks --benchmark_filter=Rhs    one family
+//   build/tests/benchmarks/engine_benchmarks                         all (about half a minute)
+//   build/tests/benchmarks/engine_benchmarks --benchmark_filter=Rhs  one family
 //
 // The states the right-hand side is timed at are those of a real double blow (the cull of apart
 // contacts, contact_cull.h, depends on how far consecutive states are from each other, so an
