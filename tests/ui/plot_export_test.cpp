@@ -275,7 +275,8 @@ void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
   const auto [lo, hi] = stack.angles()->x_range();
   QCOMPARE(lo, 0.0);
   QCOMPARE(hi, 1.5);
-  for (pat::ui::PlotPanel* panel : stack.panels()) QCOMPARE(panel->x_range(), stack.angles()->x_range());
+  for (pat::ui::PlotPanel* panel : stack.panels())
+    QCOMPARE(panel->x_range(), stack.angles()->x_range());
 }
 
 // The window's four plots exported at 1600x1000: the contact forces' legend (two rows under its
