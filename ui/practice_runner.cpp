@@ -64,27 +64,19 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
         regulated_seen = run_test(*regulated, find_rest_state(*regulated), test, &reporter);
       }
       if (cancelled_.load()) throw Cancelled();
-      QMetaObject::invokeMethod(
-          this,
-          [this, key, generation, seen, regulated_seen] {
-            if (generation != generation_) return;  // an exercise left behind
-            running_ = false;
-            regulated_cache_[key] = regulated_seen;
-            emit observed(key, seen, regulated_seen);
-          },
-          Qt::QueuedConnection);
+      deliver(generation, [this, key, seen, regulated_seen] {
+        regulated_cache_[key] = regulated_seen;
+        emit observed(key, seen, regulated_seen);
+      });
     } catch (const std::exception& e) {
-      const QString reason = QString::fromStdString(e.what());
-      QMetaObject::invokeMethod(
-          this,
-          [this, generation, reason] {
-            if (generation != generation_) return;
-            running_ = false;
-            emit failed(reason);
-          },
-          Qt::QueuedConnection);
+      report_failure(generation, e);
     }
   });
+}
+
+void PracticeRunner::report_failure(int generation, const std::exception& error) {
+  const QString reason = QString::fromStdString(error.what());
+  deliver(generation, [this, reason] { emit failed(reason); });
 }
 
 void PracticeRunner::measure(const PracticeSession& session) {
@@ -99,24 +91,9 @@ void PracticeRunner::measure(const PracticeSession& session) {
           this, [this] { emit progress(0.0, tr("measuring")); }, Qt::QueuedConnection);
       std::vector<CorrectionReading> readings = measure_corrections(*copy);
       if (cancelled_.load()) throw Cancelled();
-      QMetaObject::invokeMethod(
-          this,
-          [this, generation, readings] {
-            if (generation != generation_) return;  // an exercise left behind
-            running_ = false;
-            emit measured(readings);
-          },
-          Qt::QueuedConnection);
+      deliver(generation, [this, readings] { emit measured(readings); });
     } catch (const std::exception& e) {
-      const QString reason = QString::fromStdString(e.what());
-      QMetaObject::invokeMethod(
-          this,
-          [this, generation, reason] {
-            if (generation != generation_) return;
-            running_ = false;
-            emit failed(reason);
-          },
-          Qt::QueuedConnection);
+      report_failure(generation, e);
     }
   });
 }

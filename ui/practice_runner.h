@@ -4,9 +4,11 @@
 #pragma once
 
 #include <QFuture>
+#include <QMetaObject>
 #include <QObject>
 #include <QString>
 #include <atomic>
+#include <exception>
 #include <map>
 #include <memory>
 #include <vector>
@@ -45,6 +47,22 @@ class PracticeRunner : public QObject {
   void failed(const QString& reason);
 
  private:
+  /// From a worker: `result` (which emits the run's signal) runs in the window's thread, always
+  /// queued, with the run marked over, unless the run's exercise (`generation`) was left behind.
+  template <class Result>
+  void deliver(int generation, Result result) {
+    QMetaObject::invokeMethod(
+        this,
+        [this, generation, result] {
+          if (generation != generation_) return;  // an exercise left behind: dropped
+          running_ = false;
+          result();
+        },
+        Qt::QueuedConnection);
+  }
+  /// deliver()s failed(error's message).
+  void report_failure(int generation, const std::exception& error);
+
   std::atomic<bool> cancelled_{false};
   bool running_ = false;
   int generation_ = 0;  ///< of the exercise the runs are for (reset_cache() starts a new one)
