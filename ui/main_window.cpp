@@ -339,13 +339,11 @@ void MainWindow::build_menus() {
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
   exports->addAction(tr("&Window screenshot…"), this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Window screenshot"),
-                                                      export_folder(), tr("PNG images (*.png)"));
-    if (path.isEmpty()) return;
-    if (grab().save(path, "PNG"))
-      remember_export_folder(path);
-    else
-      statusBar()->showMessage(tr("Could not write %1").arg(path));
+    export_to_chosen_file(tr("the window screenshot"), tr("PNG images (*.png)"), false,
+                          [this](const QString& path) {
+                            if (!grab().save(path, "PNG"))
+                              throw InputError(path.toStdString() + ": could not write the PNG");
+                          });
   });
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -513,14 +511,10 @@ void MainWindow::set_practice_layout(bool practising) {
   view_->set_measurements_visible(!practising);
   plots_->setVisible(!practising);
   for (QAction* a : measurement_actions_) a->setEnabled(!practising);
-  enable_action_changes(!practising);
-}
-
-void MainWindow::enable_action_changes(bool on) {
-  // during an exercise another action or preset would leave its panel on the wrong action, and
-  // a saved preset of the hidden action gives its adjusters away
+  // another action or preset would leave the exercise's panel on the wrong action, and a saved
+  // preset of the hidden action gives its adjusters away
   for (QAction* a : {open_preset_action_, save_preset_action_, grand_action_, upright_action_})
-    a->setEnabled(on);
+    a->setEnabled(!practising);
 }
 
 void MainWindow::end_practice() {

@@ -130,8 +130,6 @@ class MainWindow : public QMainWindow {
   /// Plays a practice test on the hidden action from rest, at the slowest listed speed that
   /// shows its `duration_s` in at most 8 s of wall time.
   void show_practice_test(const QString& input, double duration_s);
-  /// Opening another action or preset, and saving one: off while an exercise runs.
-  void enable_action_changes(bool on);
   void end_practice();
   /// The status bar: what runs now and with which input, or where the run is paused.
   void show_run_status();
