@@ -656,6 +656,11 @@ void MainWindow::start(const std::string& spec) {
   controller_->play();
 }
 
+void MainWindow::hold_at_rest() {
+  controller_->pause();
+  show_run_status();
+}
+
 void MainWindow::show_run_status() {
   if (!model_) return;
   const QString name = QString::fromStdString(model_->name);
@@ -672,6 +677,11 @@ void MainWindow::show_run_status() {
     statusBar()->showMessage(tr("Stopped at t = %1 ms (%2 with %3): see the message above the "
                                 "action; Start from rest runs again")
                                  .arg(controller_->display_time() * 1e3, 0, 'f', 2)
+                                 .arg(name, input));
+  else if (t <= 0.0 && !controller_->replaying())
+    // the first frame of a run not yet played (the window's launch, a rewind to the start)
+    statusBar()->showMessage(tr("Ready, at rest (%1 with %2): Play or P runs it, Strike or the "
+                                "space bar strikes a blow, keys 1–5 strike pp to ff")
                                  .arg(name, input));
   else
     statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "

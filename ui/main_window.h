@@ -55,6 +55,9 @@ class MainWindow : public QMainWindow {
   void change_model(std::shared_ptr<const ActionModel> model);
   /// Starts a new run from rest under `spec`.
   void start(const std::string& spec);
+  /// Holds the run just started at its first frame, the action at rest, until Play or a strike
+  /// (the window's launch: a blow played before anyone looks teaches nothing).
+  void hold_at_rest();
 
   std::shared_ptr<const ActionModel> model() const { return model_; }
   PlaybackController* controller() const { return controller_; }

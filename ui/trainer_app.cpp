@@ -34,7 +34,10 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
   else if (!options.screenshot.empty())
     window.resize(1280, 800);
   window.show();
-  if (options.screenshot.empty()) return app.exec();
+  if (options.screenshot.empty()) {
+    window.hold_at_rest();
+    return app.exec();
+  }
 
   int code = 0;
   auto* demo = new ScreenshotDemo(&window, QString::fromStdString(options.screenshot));

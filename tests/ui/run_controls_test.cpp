@@ -38,6 +38,7 @@ class RunControlsTest : public QObject {
   Q_OBJECT
  private slots:
   void event_loop_stays_responsive_while_the_worker_runs();
+  void the_window_opens_at_rest_until_played();
   void pause_step_and_rewind();
   void moving_a_slider_changes_the_running_model();
   void a_diverging_run_pauses_and_shows_its_cause();
@@ -85,6 +86,27 @@ void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
   // long as the run.
   QVERIFY2(median_ms < 20.0, qPrintable(QString("median latency %1 ms").arg(median_ms)));
   QVERIFY2(worst_ms < 250.0, qPrintable(QString("worst latency %1 ms").arg(worst_ms)));
+}
+
+void RunControlsTest::the_window_opens_at_rest_until_played() {
+  // the launch (trainer_app): the action drawn at rest, held there until the class is looking
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.hold_at_rest();
+  PlaybackController* c = window.controller();
+  QVERIFY(wait_until([&] { return c->has_frame(); }));  // the first frame is drawn, paused
+  QVERIFY(!c->playing());
+  QCOMPARE(c->current_frame().t, 0.0);
+  QTest::qWait(300);  // at 1/10 a playing run would be 30 ms on
+  QCOMPARE(c->display_time(), 0.0);
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest") &&
+               window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
+           qPrintable(window.statusBar()->currentMessage()));
+  c->play();  // Play runs the input from rest
+  QVERIFY(wait_until([&] { return c->display_time() > 0.003; }));
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Running"),
+           qPrintable(window.statusBar()->currentMessage()));
 }
 
 void RunControlsTest::pause_step_and_rewind() {
