@@ -39,12 +39,16 @@ bool CommandLine::has(const std::string& option) const {
 std::string CommandLine::value(const std::string& option) const {
   const auto it = values_.find(option);
   if (it == values_.end()) throw InputError("missing option " + option);
+  // an option read as one value given twice: which one was meant is not ours to guess (the
+  // last one would win without a word)
+  if (it->second.size() > 1)
+    throw InputError(option + " is given " + std::to_string(it->second.size()) + " times ('" +
+                     it->second.front() + "' and '" + it->second.back() + "'): give it once");
   return it->second.back();
 }
 
 std::string CommandLine::value_or(const std::string& option, const std::string& fallback) const {
-  const auto it = values_.find(option);
-  return it == values_.end() ? fallback : it->second.back();
+  return has(option) ? value(option) : fallback;
 }
 
 std::vector<std::string> CommandLine::values(const std::string& option) const {

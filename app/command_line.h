@@ -19,7 +19,8 @@ class CommandLine {
               const std::set<std::string>& flags, const std::set<std::string>& list_options = {});
 
   bool has(const std::string& option) const;
-  /// The last value of an option; throws InputError when a required one is missing.
+  /// The value of an option given once; throws InputError when a required one is missing or
+  /// when it is given more than once (repeatable options are read with values()).
   std::string value(const std::string& option) const;
   std::string value_or(const std::string& option, const std::string& fallback) const;
   std::vector<std::string> values(const std::string& option) const;

@@ -191,6 +191,18 @@ expect_failure "--rtol with the fixed-step W-method" "--rtol|w2 takes a fixed --
 expect_failure "a setting given twice" "--set: let_off is given twice|'let_off=1' and 'let_off=2'" \
   simulate --action grand --input mass:1kg --duration 0.05 --set let_off=1 --set let_off=2 \
   --out out.csv
+expect_failure "an option read once given twice" "--duration is given 2 times|'0.05' and '0.1'" \
+  simulate --action grand --input mass:1kg --duration 0.05 --duration 0.1 --out out.csv
+expect_failure "two inputs" "--input is given 2 times|'mass:1kg' and 'force:const:5'" \
+  simulate --action grand --input mass:1kg --input force:const:5 --duration 0.05 --out out.csv
+# a step or tolerance under which the run could still end "ok" with numbers that mean nothing
+expect_failure "a w2 step longer than a felt contact" "--step 0.01|at most 0.001 s" \
+  simulate --action grand --input force:const:5 --duration 0.1 --step 0.01 --out out.csv
+expect_failure "a w2 step near the duration" "--step 0.001|at least 10 steps|--duration 0.005" \
+  simulate --action grand --input force:const:5 --duration 0.005 --step 0.001 --out out.csv
+expect_failure "a tolerance of 50 %" "--rtol 0.5|at most 0.1" \
+  simulate --action grand --input force:const:5 --duration 0.1 --integrator rodas --rtol 0.5 \
+  --out out.csv
 expect_failure "a press faster than any key" "motion:press:1e-9|at least 0.005 s" \
   simulate --action grand --input motion:press:1e-9 --duration 0.05 --out out.csv
 expect_failure "a chirp sweep given the steps' increment" "--step-hz|--rate" \
@@ -201,10 +213,10 @@ if grep -qF "study: study:" stderr.txt; then fail "the study's message repeats i
 expect_failure "a plot file without an extension" "no file extension to tell the plot format" \
   simulate --action grand --input mass:1kg --duration 0.05 --plot noextension
 
-# --- a run that blows up says so (a step far too long), it does not report "ok" -------------------
+# --- a run that blows up says so (a step too long for a 20 N press), it does not report "ok" ------
 cases=$((cases + 1))
 status=0
-"$exe" simulate --action grand --input force:const:20 --duration 0.1 --step 0.1 --json \
+"$exe" simulate --action grand --input force:const:20 --duration 0.1 --step 1e-3 --json \
   >stdout.txt 2>stderr.txt || status=$?
 if ! grep -q '"status": "stopped"' stdout.txt || ! grep -q "diverged" stdout.txt; then
   fail "a diverging run: not reported as stopped and diverged: $(cat stdout.txt stderr.txt)"
