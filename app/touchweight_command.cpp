@@ -50,6 +50,7 @@ int run_touchweight(const std::vector<std::string>& args) {
                        {"key_ratio", result.key_ratio},
                        {"strike_weight_g", result.strike_weight_g},
                        {"front_weight_g", result.front_weight_g},
+                       {"key_sinks_mm", result.key_sinks_mm},
                        {"action", model.kind}};
     std::cout << out.dump(1) << "\n";
   } else {
@@ -62,6 +63,8 @@ int run_touchweight(const std::vector<std::string>& args) {
               << format_fixed(result.key_ratio, 3) << ", strike weight "
               << grams(result.strike_weight_g) << ", front weight " << grams(result.front_weight_g)
               << "\n";
+    if (const std::string note = key_rest_note(result); !note.empty())
+      std::cout << "  " << note << "\n";
   }
   return 0;
 }

@@ -371,6 +371,10 @@ AnalysisEntry touchweight() {
                            "45–55 g down and 20–30 g up).")
                            .arg(number(r.downweight_g))
                            .arg(number(r.upweight_g));
+      if (QString note = QString::fromStdString(key_rest_note(r)); !note.isEmpty()) {
+        note[0] = note[0].toUpper();  // a sentence of its own after the summary's
+        result.summary += " " + note + ".";
+      }
       result.table = {{QObject::tr("downweight"), number(r.downweight_g), "g"},
                       {QObject::tr("upweight"), number(r.upweight_g), "g"},
                       {QObject::tr("balance weight"), number(r.balance_weight_g), "g"},

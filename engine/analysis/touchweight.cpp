@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -107,6 +108,75 @@ double key_arm(const ActionModel& model, ActionDynamics& dynamics, const DofVect
   return world_point.x() - pin.x();
 }
 
+/// A technician weighs a key off from its rest on the back rail. A key weighted at the front
+/// (lead) may lift off it and sink onto what stops it (the capstan lifting the whippen, the
+/// damper lift, the front-rail punching), or hover near its balance and never settle; dips
+/// measured from there would be another window of the stroke. It is weighed from where its back
+/// rail just touches instead, held there with the other parts in balance: a front-heavy key's
+/// balance weight comes out below 0 g (it must be held up). `settled`: the action's rest, when
+/// it found one; `sunk_mm`: how far the key front had sunk from the back rail by itself (0 when
+/// it rests there, NaN when it did not settle).
+RestState key_on_back_rail(const ActionModel& action, ActionDynamics& dynamics,
+                           const std::optional<RestState>& settled, double& sunk_mm) {
+  sunk_mm = 0.0;
+  const int back_rail = action.landmarks.key_rest_contact;
+  const int key = action.landmarks.key;
+  if (settled) {
+    if (back_rail < 0) return *settled;  // the preset names no back rail: its rest is the start
+    DynamicsReading reading;
+    dynamics.evaluate(0.0, settled->q, DofVector::Zero(settled->q.size()), reading);
+    if (reading.contacts[back_rail].active && reading.contacts[back_rail].normal_force > 0.0)
+      return *settled;
+  } else if (back_rail < 0) {
+    throw std::runtime_error(
+        "touchweight: the action does not come to rest, and its preset "
+        "names no back rail (landmarks.contacts.key_rest) to hold the key on");
+  }
+  // the other parts' rest with the key on its back rail: the same action with the key's weight
+  // moved as far behind its pin as its front lies before it, which settles there (the key's own
+  // weight does not enter the other parts' balance once the key is held)
+  ActionModel tail_heavy = action;
+  Body& tail_heavy_key = tail_heavy.bodies[key];
+  tail_heavy_key.com = 2.0 * tail_heavy_key.pivot - action.landmarks.key_front;
+  RestState start;
+  try {
+    start = find_rest_state(tail_heavy);
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(std::string("touchweight: with the key held on its back rail, ") +
+                             e.what());
+  }
+  // the key angle at which the back rail just touches (penetration 0), by bisection: the front
+  // lifted (angle down) presses the key's tail into the rail
+  std::vector<double> penetration;
+  const auto back_rail_penetration = [&](double key_angle) {
+    DofVector q = start.q;
+    q[key] = key_angle;
+    dynamics.contact_penetrations(q, penetration);
+    return penetration[back_rail];
+  };
+  double lifted = start.q[key];
+  for (int i = 0; i < 40 && back_rail_penetration(lifted) < 0.0; ++i) lifted -= 0.01;
+  for (int i = 0; i < 40 && back_rail_penetration(lifted + 0.01) >= 0.0; ++i) lifted += 0.01;
+  double open = lifted + 0.01;
+  if (back_rail_penetration(lifted) < 0.0 || back_rail_penetration(open) >= 0.0)
+    throw std::runtime_error("touchweight: the key never meets '" +
+                             action.contacts[back_rail].name + "' when lifted");
+  for (int i = 0; i < 60; ++i) {  // to 1e-18 rad of the 0.01 rad bracket, far below need
+    const double middle = 0.5 * (open + lifted);
+    (back_rail_penetration(middle) < 0.0 ? open : lifted) = middle;
+  }
+  if (!HeldKeyBalance(action, 0.0, lifted).solve(start.q))
+    throw std::runtime_error(
+        "touchweight: no static equilibrium with the key held on its back "
+        "rail ('" +
+        action.contacts[back_rail].name + "')");
+  sunk_mm = settled ? (dynamics.point_position(key, action.landmarks.key_front, start.q).y() -
+                       dynamics.point_position(key, action.landmarks.key_front, settled->q).y()) *
+                          1e3
+                    : std::nan("");
+  return start;
+}
+
 }  // namespace
 
 CsvTable TouchweightResult::table() const {
@@ -119,6 +189,19 @@ CsvTable TouchweightResult::table() const {
   return t;
 }
 
+std::string key_rest_note(const TouchweightResult& result) {
+  const std::string heavy =
+      result.balance_weight_g < 0.0 ? "the key is front-heavy (balance weight below 0 g): " : "";
+  if (std::isnan(result.key_sinks_mm))
+    return heavy +
+           "the action does not settle by itself (the key hovers near its balance); weighed from "
+           "the key's back rail, held there";
+  if (result.key_sinks_mm > 0.0)
+    return heavy + "left alone, the key front sinks " + format_fixed(result.key_sinks_mm, 2) +
+           " mm off its back rail; weighed from the back rail, held there";
+  return "";
+}
+
 TouchweightResult measure_touchweight(const ActionModel& action, const TouchweightOptions& options,
                                       const ProgressCallback& progress) {
   const int key = action.landmarks.key;
@@ -128,8 +211,16 @@ TouchweightResult measure_touchweight(const ActionModel& action, const Touchweig
     throw InputError(
         "touchweight: the measuring window must run from a positive dip to a "
         "larger one with at least two positions");
-  const RestState rest = find_rest_state(action);
+  std::optional<RestState> settled;
+  try {
+    settled = find_rest_state(action);
+  } catch (const std::runtime_error&) {
+    // a key weighted near its balance may hover and never settle: weighed from its back rail
+  }
   ActionDynamics rest_dynamics(action, nullptr);
+  TouchweightResult result;
+  // the measurement starts from the key on its back rail (a front-heavy key held up there)
+  const RestState rest = key_on_back_rail(action, rest_dynamics, settled, result.key_sinks_mm);
   const Body& key_body = action.bodies[key];
   const double front_arm =
       key_arm(action, rest_dynamics, rest.q,
@@ -140,7 +231,6 @@ TouchweightResult measure_touchweight(const ActionModel& action, const Touchweig
     throw InputError(action.source_file + ": the key front must lie in front of the balance pin");
   const Vec2 front0 = rest_dynamics.point_position(key, action.landmarks.key_front, rest.q);
 
-  TouchweightResult result;
   result.curve.resize(options.positions);
   ProgressReporter reporter(progress, options.positions);
   std::vector<std::string> failures(options.positions);

@@ -21,6 +21,7 @@
 // weight FW: the key alone on its pin, at the key front (positive: front heavy).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "analysis/progress.h"
@@ -52,12 +53,20 @@ struct TouchweightResult {
   double key_ratio = 0.0;
   double strike_weight_g = 0.0;
   double front_weight_g = 0.0;
+  /// How far the key front sinks by itself from its back rail (mm): 0 for a key that rests on
+  /// it; a front-heavy key is weighed from the back rail, held there (balance weight < 0 g).
+  double key_sinks_mm = 0.0;
   std::vector<TouchweightPoint> curve;
   /// dip_mm, downweight_g, upweight_g, balance_weight_g, friction_weight_g per position
   CsvTable table() const;
 };
 
-/// Measures the touchweight of `action` from its rest state. Positions run in parallel
+/// What a key that does not rest on its back rail by itself was weighed from, in a sentence
+/// ("" for a key that rests there): front-heavy or not, how far its front sinks alone.
+std::string key_rest_note(const TouchweightResult& result);
+
+/// Measures the touchweight of `action` from its rest state (a key that does not rest on its
+/// back rail by itself, from there: TouchweightResult::key_sinks_mm). Positions run in parallel
 /// (run_parallel); `progress` (may be empty) counts them and can cancel (throws Cancelled).
 /// Throws std::runtime_error when the held-key equilibrium cannot be found.
 TouchweightResult measure_touchweight(const ActionModel& action,

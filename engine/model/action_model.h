@@ -155,6 +155,7 @@ struct ActionLandmarks {
   int letoff_contact = -1;               ///< jack toe–let-off button
   int check_contact = -1;                ///< hammer–backcheck
   int key_bottom_contact = -1;           ///< key–front-rail punching
+  int key_rest_contact = -1;  ///< key–back rail: what the key rests on at the top (optional)
 };
 
 /// A regulation setting (DESIGN.md section 3): the adjuster of the same name, what is measured,

@@ -475,6 +475,8 @@ void read_landmarks(const PresetReader& r, const json& root, ActionModel& model)
   out.letoff_contact = contact_reference(r, model, c, "landmarks.contacts", "let_off");
   out.check_contact = contact_reference(r, model, c, "landmarks.contacts", "check");
   out.key_bottom_contact = contact_reference(r, model, c, "landmarks.contacts", "key_bottom");
+  if (c.contains("key_rest"))  // optional: touchweight checks the key starts from it
+    out.key_rest_contact = contact_reference(r, model, c, "landmarks.contacts", "key_rest");
 }
 
 std::string read_file(const std::string& path) {
