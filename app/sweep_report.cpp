@@ -58,6 +58,14 @@ nlohmann::json sweep_json(const SweepResult& r) {
        r.alternating_from_hz ? nlohmann::json(*r.alternating_from_hz) : nlohmann::json(nullptr)},
       {"simulated_s", r.simulated_s},
       {"wall_s", r.wall_s}};
+  // the judged cycles under the repeating range (a key moved too slowly), counted
+  if (const auto below = failures_below_range(r))
+    out["below_range"] = {{"range_from_hz", below->range_from_hz},
+                          {"judged", below->judged},
+                          {"double", below->doubles},
+                          {"missed", below->missed}};
+  else
+    out["below_range"] = nullptr;
   if (r.mode == SweepMode::chirp) {
     out["run_status"] = r.run_status;
     out["stop_cause"] =
@@ -138,7 +146,7 @@ std::string sweep_summary(const SweepResult& r) {
   if (!r.limit_found) {
     // the band's top, not a limit: the action repeats at least that fast
     text = r.max_frequency_hz
-               ? "no limit in the band: every cycle succeeds up to " +
+               ? "no limit in the band: the repeating range reaches its top, " +
                      format_number(*r.max_frequency_hz) + " Hz (the maximum is at least that)"
                // nothing failed, yet no steady window: too few judged cycles in the band
                : "no maximum: the band's " + std::to_string(judged_cycle_points(r).size()) +
@@ -153,6 +161,14 @@ std::string sweep_summary(const SweepResult& r) {
             " strikes, at " + format_number(f.frequency_hz) +
             " Hz, t = " + format_number(f.t_start_s) + " s)";
   }
+  // the cycles below the range that fail (a key moved too slowly) are not hidden by it
+  if (const auto below = failures_below_range(r); below && below->doubles + below->missed > 0)
+    text += "; below the repeating range (from " + format_number(below->range_from_hz) + " Hz) " +
+            std::to_string(below->doubles + below->missed) + " of " +
+            std::to_string(below->judged) + " judged cycles fail (" +
+            std::to_string(below->doubles) + " struck twice or more, " +
+            std::to_string(below->missed) +
+            " not at all: a key moved that slowly throws the hammer twice or too gently)";
   // a run that stopped (a contact beyond its travel, a diverging step): said, with its cause,
   // even when an earlier failure already set the maximum; in a chirp whose last cycle is the
   // stopped one, nothing above it was simulated

@@ -66,16 +66,26 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const s
     result.summary = QObject::tr("no repeating range: the key never made %1 strikes in a row.")
                          .arg(o.window_cycles);
   else if (!r.limit_found)
-    result.summary =
-        QObject::tr("repeats up to %1 Hz, the end of the sweep: no failure up to %2 Hz.")
-            .arg(number(*r.max_frequency_hz))
-            .arg(number(o.f_max_hz));
+    result.summary = QObject::tr("repeats up to %1 Hz, the end of the sweep: no limit up to %2 Hz.")
+                         .arg(number(*r.max_frequency_hz))
+                         .arg(number(o.f_max_hz));
   else
     result.summary = QObject::tr("maximum repetition frequency %1 Hz (%2 stroke); above it: %3.")
                          .arg(number(*r.max_frequency_hz))
                          .arg(stroke)
                          .arg(r.first_failure ? outcome_words(r.first_failure->outcome)
                                               : QObject::tr("a run stopped"));
+  // the failing cycles under the range (a key moved too slowly) are not hidden by it
+  if (const auto below = failures_below_range(r); below && below->doubles + below->missed > 0)
+    result.summary += QObject::tr(
+                          " Below the repeating range (from %1 Hz) %2 of %3 judged cycles "
+                          "fail (%4 struck twice or more, %5 not at all): a key moved that slowly "
+                          "throws the hammer twice or too gently.")
+                          .arg(number(below->range_from_hz))
+                          .arg(below->doubles + below->missed)
+                          .arg(below->judged)
+                          .arg(below->doubles)
+                          .arg(below->missed);
   if (r.alternating_from_hz)
     result.summary +=
         QObject::tr(

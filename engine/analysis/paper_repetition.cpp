@@ -33,8 +33,8 @@ std::string compare_with_paper(const SweepResult& result, const std::string& kin
                                             : " (README, Limits).";
   const double found = *result.max_frequency_hz;
   if (!result.limit_found) {
-    // no failure up to the band's end: only a lower bound
-    text += "this sweep found no failure up to " + format_number(f_max_hz) + " Hz";
+    // the repeating range runs to the band's end: only a lower bound
+    text += "this sweep's repeating range reaches its top, " + format_number(f_max_hz) + " Hz";
     if (f_max_hz > high + kPaperAgreementHz && !paper->experiment_at_least)
       return text + ", above both" + why;
     return text + (f_max_hz < low - kPaperAgreementHz ? ": raise the maximum frequency to compare."

@@ -65,6 +65,43 @@ std::vector<CyclePoint> judged_cycle_points(const SweepResult& result) {
   return points;
 }
 
+std::optional<FailuresBelowRange> failures_below_range(const SweepResult& result) {
+  if (!result.max_frequency_hz) return std::nullopt;
+  const double top = *result.max_frequency_hz + 1e-9;
+  FailuresBelowRange below;
+  const auto count = [&below](const CycleResult& c) {
+    if (!c.judged) return;
+    ++below.judged;
+    if (!c.success()) ++(c.outcome == CycleOutcome::double_strike ? below.doubles : below.missed);
+  };
+  if (result.mode == SweepMode::steps) {
+    // the range: the passing frequencies run up to the maximum
+    std::size_t end = result.frequencies.size();
+    for (std::size_t i = 0; i < result.frequencies.size(); ++i)
+      if (result.frequencies[i].passed && result.frequencies[i].frequency_hz <= top) end = i;
+    if (end == result.frequencies.size()) return std::nullopt;
+    std::size_t start = end;
+    while (start > 0 && result.frequencies[start - 1].passed) --start;
+    below.range_from_hz = result.frequencies[start].frequency_hz;
+    for (std::size_t i = 0; i < start; ++i)
+      for (const CycleResult& c : result.frequencies[i].cycles) count(c);
+    return below;
+  }
+  // chirp: the range's last cycle is the last success at the maximum (frequencies rise)
+  std::vector<const CycleResult*> judged;
+  for (const CycleResult& c : result.cycles)
+    if (c.judged) judged.push_back(&c);
+  std::size_t end = judged.size();
+  for (std::size_t i = 0; i < judged.size(); ++i)
+    if (judged[i]->success() && judged[i]->frequency_hz <= top) end = i;
+  if (end == judged.size()) return std::nullopt;
+  std::size_t start = end;
+  while (start > 0 && judged[start - 1]->success()) --start;
+  below.range_from_hz = judged[start]->frequency_hz;
+  for (std::size_t i = 0; i < start; ++i) count(*judged[i]);
+  return below;
+}
+
 std::vector<double> cycle_boundaries(Stroke stroke, double f0_hz, double rate_hz_per_s,
                                      double t_end_s) {
   // τ at which the phase reaches φ: π r τ² + 2π f0 τ − φ = 0

@@ -158,6 +158,17 @@ struct CyclePoint {
 /// Every judged cycle of a sweep (settling cycles left out).
 std::vector<CyclePoint> judged_cycle_points(const SweepResult& result);
 
+/// The judged cycles below the repeating range (a key moved too slowly: see the definitions),
+/// which a summary of the range must not hide.
+struct FailuresBelowRange {
+  double range_from_hz = 0.0;  ///< the repeating range's first judged cycle (its frequency)
+  int judged = 0;              ///< judged cycles below it
+  int doubles = 0;             ///< of them, failed with two or more strikes
+  int missed = 0;              ///< of them, failed with none (or stopped)
+};
+/// Empty when the sweep has no repeating range.
+std::optional<FailuresBelowRange> failures_below_range(const SweepResult& result);
+
 /// A strike candidate: impact time and hammer velocity (from the Simulator's events).
 struct Impact {
   double t_s = 0.0;

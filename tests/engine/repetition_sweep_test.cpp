@@ -162,32 +162,42 @@ TEST(RepetitionMaximum, ChirpTakesTheTopOfTheLongestRunOfSuccesses) {
   SweepResult r;
   // a settling miss; too slow: a miss, a lucky pair, a double strike; the repeating range
   // 7–10 Hz; a miss; a lucky pair above the limit
-  chirp_maximum(cycles_from({{2, O::missed},
-                             {3, O::missed},
-                             {4, ok},
-                             {5, ok},
-                             {6, O::double_strike},
-                             {7, ok},
-                             {8, ok},
-                             {9, ok},
-                             {10, ok},
-                             {11, O::missed},
-                             {12, ok},
-                             {13, ok},
-                             {14, O::missed}},
-                            1),
-                3, r);
+  r.cycles = cycles_from({{2, O::missed},
+                          {3, O::missed},
+                          {4, ok},
+                          {5, ok},
+                          {6, O::double_strike},
+                          {7, ok},
+                          {8, ok},
+                          {9, ok},
+                          {10, ok},
+                          {11, O::missed},
+                          {12, ok},
+                          {13, ok},
+                          {14, O::missed}},
+                         1);
+  chirp_maximum(r.cycles, 3, r);
   ASSERT_TRUE(r.max_frequency_hz.has_value());
   EXPECT_EQ(*r.max_frequency_hz, 10.0);
+  // the failures under the range are counted, not hidden by it: of the judged 3–6 Hz, a miss
+  // and a double strike (the settling miss at 2 Hz is not judged)
+  const auto below = failures_below_range(r);
+  ASSERT_TRUE(below.has_value());
+  EXPECT_EQ(below->range_from_hz, 7.0);
+  EXPECT_EQ(below->judged, 4);
+  EXPECT_EQ(below->doubles, 1);
+  EXPECT_EQ(below->missed, 1);
   EXPECT_TRUE(r.limit_found);
   ASSERT_TRUE(r.first_failure.has_value());
   EXPECT_EQ(r.first_failure->outcome, O::missed);
   EXPECT_EQ(r.first_failure->frequency_hz, 11.0);
 
-  chirp_maximum(cycles_from({{2, ok}, {3, ok}, {4, ok}}, 0), 2, r);
+  r.cycles = cycles_from({{2, ok}, {3, ok}, {4, ok}}, 0);
+  chirp_maximum(r.cycles, 2, r);
   EXPECT_EQ(*r.max_frequency_hz, 4.0);
   EXPECT_FALSE(r.limit_found);  // no failure up to the last frequency
   EXPECT_FALSE(r.first_failure.has_value());
+  EXPECT_EQ(failures_below_range(r)->judged, 0);  // the range starts at the first cycle
 
   chirp_maximum(cycles_from({{2, ok}, {3, O::missed}, {4, ok}, {5, O::missed}}, 0), 2, r);
   EXPECT_FALSE(r.max_frequency_hz.has_value());  // no run of two successes
@@ -229,6 +239,16 @@ TEST(RepetitionMaximum, StepsTakesTheTopOfTheLongestRunOfPassingFrequencies) {
                 r);
   EXPECT_EQ(*r.max_frequency_hz, 13.0);  // the longer run 12–13 Hz, not the lone 10 Hz
   EXPECT_EQ(r.first_failure->frequency_hz, 14.0);
+  // below the range 12–13 Hz: the cycles of 10 and 11 Hz, the one of 11 Hz missed
+  r.mode = SweepMode::steps;
+  r.frequencies = {frequency(10, true), frequency(11, false), frequency(12, true),
+                   frequency(13, true), frequency(14, false)};
+  const auto below = failures_below_range(r);
+  ASSERT_TRUE(below.has_value());
+  EXPECT_EQ(below->range_from_hz, 12.0);
+  EXPECT_EQ(below->judged, 2);
+  EXPECT_EQ(below->missed, 1);
+  EXPECT_EQ(below->doubles, 0);
 }
 
 // Cycles that each strike once, with the given first-strike speeds (m/s); the first `settle`
