@@ -60,4 +60,24 @@ Alignment align(const MeasuredTrial& trial, const ModelTrace& model, double max_
   return out;
 }
 
+Alignment referenced_to_rest(const Alignment& alignment, const std::vector<bool>& at_rest) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < alignment.residual.size() && i < at_rest.size(); ++i)
+    if (at_rest[i]) {
+      sum += alignment.residual[i];
+      ++count;
+    }
+  if (count < kMinRestSamplesForOffset) return alignment;
+  const double shift = sum / static_cast<double>(count);
+  Alignment out = alignment;
+  out.angle_offset_deg += shift;
+  out.rss = 0.0;
+  for (double& r : out.residual) {
+    r -= shift;
+    out.rss += r * r;
+  }
+  return out;
+}
+
 }  // namespace pat

@@ -9,6 +9,7 @@
 //   file's own key column runs on the file's clock).
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 #include "measured/measured_data.h"
@@ -24,5 +25,17 @@ struct Alignment {
 };
 
 Alignment align(const MeasuredTrial& trial, const ModelTrace& model, double max_shift_s = 10e-3);
+
+/// Samples at rest a trial needs before its angle offset is taken from them (5 ms at 2000 fps;
+/// with the noise σ the offset is then known to σ/√10 ≈ 0.3 σ).
+inline constexpr std::size_t kMinRestSamplesForOffset = 10;
+
+/// The same alignment with the angle offset taken where the model cannot be wrong but for the
+/// calibration, the action at rest (`at_rest`, one flag per sample): the mean residual there
+/// goes into δθ, and the residual and Σ r² follow. align()'s least-squares δθ is the mean of the
+/// whole residual, so a model wrong during the stroke (a flexing shank: 3.5° rms in the check)
+/// would show its mean error where it is right (5.1° "at rest"); that offset stays the one the
+/// fits use. Unchanged with fewer than kMinRestSamplesForOffset samples at rest.
+Alignment referenced_to_rest(const Alignment& alignment, const std::vector<bool>& at_rest);
 
 }  // namespace pat

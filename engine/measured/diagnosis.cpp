@@ -556,11 +556,21 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     if (!r.baseline.completed)
       throw InputError(r.path + ": the model stops under the input '" + r.input_spec +
                        "': " + r.baseline.stop_cause);
-    r.baseline_alignment = align(prepared[j].data, r.baseline, prepared[j].max_shift_s);
+    // the least-squares alignment is what the fits compare against; what is shown (the phases,
+    // the features, the traces) takes the angle offset at rest, where only the calibration can
+    // be wrong
+    const Alignment fitted = align(prepared[j].data, r.baseline, prepared[j].max_shift_s);
     r.noise_deg = estimate_noise(prepared[j].data.hammer_deg);
     r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
-    r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
-                                         r.measured_events, r.noise_deg);
+    r.discrepancies =
+        find_discrepancies(prepared[j].data, r.baseline, fitted, r.measured_events, r.noise_deg);
+    r.at_rest.resize(r.discrepancies.phase_of_sample.size());
+    for (std::size_t i = 0; i < r.at_rest.size(); ++i)
+      r.at_rest[i] = r.discrepancies.phase_of_sample[i] == "rest";
+    r.baseline_alignment = referenced_to_rest(fitted, r.at_rest);
+    if (r.baseline_alignment.angle_offset_deg != fitted.angle_offset_deg)
+      r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
+                                           r.measured_events, r.noise_deg);
     if (prepared[j].file_shift_s != 0.0) {  // times on the model's clock: say where in the file
       for (FeatureDiscrepancy& f : r.discrepancies.features)
         if (f.feature == "impact_time" && f.measured_known)
@@ -570,11 +580,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     }
     Evaluation baseline_evaluation;
     baseline_evaluation.ok = true;
-    baseline_evaluation.rss = r.baseline_alignment.rss;
-    baseline_evaluation.residual = r.baseline_alignment.residual;
+    baseline_evaluation.rss = fitted.rss;
+    baseline_evaluation.residual = fitted.residual;
     ev.remember("", 0.0, j, baseline_evaluation);
-    base_trial_rss[j] = r.baseline_alignment.rss;
-    base_rss += r.baseline_alignment.rss;
+    base_trial_rss[j] = fitted.rss;
+    base_rss += fitted.rss;
     total_samples += prepared[j].data.t.size();
     noise2 += r.noise_deg * r.noise_deg;
     d.trials.push_back(std::move(r));
@@ -685,7 +695,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
       d.trials[j].extended = simulate_trace(extended, prepared[j].spec,
                                             prepared[j].model_duration_s, 1e-4, &extended_rest);
       d.trials[j].extended_alignment =
-          align(prepared[j].data, d.trials[j].extended, prepared[j].max_shift_s);
+          referenced_to_rest(align(prepared[j].data, d.trials[j].extended, prepared[j].max_shift_s),
+                             d.trials[j].at_rest);
     }
   }
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;

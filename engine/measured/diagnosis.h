@@ -81,7 +81,10 @@ struct TrialReport {
   std::string input_spec;  ///< the input the model was driven with (estimated if unknown)
   bool input_estimated = false;
   double noise_deg = 0.0;
+  /// The baseline aligned with its angle offset taken at rest (referenced_to_rest; the fits and
+  /// the gain use align()'s least-squares offset): residual, offset and Σ r² as shown.
   Alignment baseline_alignment;
+  std::vector<bool> at_rest;  ///< the samples of the baseline's rest phase
   ModelTrace baseline;
   std::vector<MeasuredEvent> measured_events;
   TrialDiscrepancies discrepancies;

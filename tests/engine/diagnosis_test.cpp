@@ -13,6 +13,7 @@
 #include <random>
 
 #include "core/error.h"
+#include "measured/alignment.h"
 #include "measured/discrepancies.h"
 #include "measured/hidden_effects.h"
 #include "measured/measured_data.h"
@@ -232,6 +233,41 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
   const TrialDiscrepancies again = find_discrepancies(trial, m, al, {}, 0.01);
   EXPECT_EQ(again.phase_of_sample[static_cast<std::size_t>(std::lround(0.32 / 5e-4))],
             "acceleration");
+}
+
+TEST(Alignment, TheAngleOffsetIsTakenWhereTheActionRests) {
+  // a model at rest for 10 ms, then a rise of 20°; the "measurement" reads 0.2° high (its
+  // calibration) and, during the rise, a further 3° low (what the model gets wrong there)
+  ModelTrace m;
+  m.dt = 1e-4;
+  for (int i = 0; i <= 1000; ++i) {
+    const double t = i * m.dt;
+    m.hammer_deg.push_back(t < 0.01 ? 0.0 : 200.0 * (t - 0.01));
+    m.key_deg.push_back(0.0);
+  }
+  MeasuredTrial trial;
+  std::vector<bool> at_rest;
+  for (int i = 0; i <= 200; ++i) {
+    const double t = i * 5e-4;
+    trial.t.push_back(t);
+    trial.hammer_deg.push_back(m.hammer_at(t) + 0.2 - (t < 0.01 ? 0.0 : 3.0));
+    at_rest.push_back(t < 0.01);
+  }
+  // least squares takes the whole mean: 0.2 − 3·(181/201) = −2.50°, and shows +2.70° at rest
+  const Alignment fitted = align(trial, m, 0.0);
+  EXPECT_NEAR(fitted.angle_offset_deg, 0.2 - 3.0 * 181.0 / 201.0, 1e-9);
+  EXPECT_NEAR(fitted.residual.front(), 3.0 * 181.0 / 201.0, 1e-9);
+  // at rest: the calibration's 0.2°, the residual 0 there and the 3° where the model is wrong
+  // (exact: no noise, and the model trace is linear between its 0.1 ms points)
+  const Alignment shown = referenced_to_rest(fitted, at_rest);
+  EXPECT_NEAR(shown.angle_offset_deg, 0.2, 1e-9);
+  EXPECT_NEAR(shown.residual.front(), 0.0, 1e-9);
+  EXPECT_NEAR(shown.residual.back(), -3.0, 1e-9);
+  EXPECT_NEAR(shown.rss, 181.0 * 9.0, 1e-6);
+  // too few samples at rest to know the offset from: unchanged
+  std::vector<bool> few(at_rest.size(), false);
+  for (std::size_t i = 0; i + 1 < kMinRestSamplesForOffset; ++i) few[i] = true;
+  EXPECT_EQ(referenced_to_rest(fitted, few).angle_offset_deg, fitted.angle_offset_deg);
 }
 
 TEST(Discrepancies, EachPhaseHasItsOwnNoise) {
