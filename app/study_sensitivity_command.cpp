@@ -1,11 +1,11 @@
 // pianoaction study sensitivity: every regulation setting moved ±step, and what changes (the
 // table a teacher shows: which screw matters most). Issue 4; engine/analysis/sensitivity.h.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
-#include <utility>
 
 #include "action_setup.h"
 #include "analysis/sensitivity.h"
@@ -146,6 +146,23 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       std::cout << (i ? ", " : "") << ranks[i].setting << " " << std::setprecision(3)
                 << ranks[i].change;
     std::cout << (ranks.empty() ? "(no setting changes it measurably)\n" : "\n");
+  }
+  // the repetition limit is no smooth function of a screw: it can jump between two regimes
+  // (the grand's halfway stroke repeats to about 13 Hz, or to 22-24 Hz once let-off is closer:
+  // README, Limits, F4), and a chirp's limit is the frequency of one of its cycles, so variants
+  // can share a value. A change of several hertz to one side only is such a jump.
+  const auto repetition =
+      std::find(result.metrics.begin(), result.metrics.end(), "max_repetition_hz");
+  if (repetition != result.metrics.end()) {
+    const std::size_t m = static_cast<std::size_t>(repetition - result.metrics.begin());
+    std::string jumps;
+    for (const MetricJump& jump : jumps_beyond(result, m, kRepetitionJumpHz))
+      jumps += (jumps.empty() ? "" : ", ") + jump.setting + (jump.side < 0 ? " -" : " +") + " (" +
+               format_number(jump.value) + " Hz)";
+    if (!jumps.empty())
+      std::cout << "  max_repetition_hz jumps from " << format_number(result.baseline[m])
+                << " Hz to another regime with " << jumps
+                << ": which screws can tip it, not a slope (README, Limits: grand repetition)\n";
   }
   return 0;
 }

@@ -283,6 +283,23 @@ AnalysisEntry regulation_sensitivity() {
                         : QObject::tr("%1 changes the impact velocity most (%2 m/s over ±0.5 mm).")
                               .arg(setting_title(ranks.front().setting))
                               .arg(number(ranks.front().change));
+      // the repetition limit jumps between regimes rather than following a screw (README,
+      // Limits): the variants that tip it are named, not read as a slope
+      const auto repetition = std::find(r.metrics.begin(), r.metrics.end(), "max_repetition_hz");
+      if (repetition != r.metrics.end()) {
+        QStringList tipped;
+        for (const MetricJump& jump : jumps_beyond(
+                 r, static_cast<std::size_t>(repetition - r.metrics.begin()), kRepetitionJumpHz))
+          tipped << QObject::tr("%1 %2 (%3 Hz)")
+                        .arg(setting_title(jump.setting))
+                        .arg(jump.side < 0 ? "−" : "+")
+                        .arg(number(jump.value));
+        if (!tipped.isEmpty())
+          result.summary += QObject::tr(
+                                " The repetition limit jumps to another regime with %1: "
+                                "which screws can tip it, not a slope.")
+                                .arg(tipped.join(", "));
+      }
       return result;
     };
   };

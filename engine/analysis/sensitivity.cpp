@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "analysis/parallel_runs.h"
 #include "analysis/repetition_sweep.h"
@@ -96,6 +97,17 @@ SensitivityMetricGroup repetition_metrics() {
 
 std::vector<SensitivityMetricGroup> sensitivity_metric_groups(double key_force_n) {
   return {blow_metrics(key_force_n), touchweight_metrics(), repetition_metrics()};
+}
+
+std::vector<MetricJump> jumps_beyond(const SensitivityResult& r, std::size_t metric,
+                                     double threshold) {
+  std::vector<MetricJump> jumps;
+  const double base = r.baseline.at(metric);
+  for (const SensitivityRow& row : r.rows)
+    for (const auto& [value, side] :
+         {std::pair{row.minus.at(metric), -1}, std::pair{row.plus.at(metric), +1}})
+      if (std::abs(value - base) > threshold) jumps.push_back({row.setting, side, value});
+  return jumps;
 }
 
 SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,

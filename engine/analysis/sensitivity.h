@@ -74,6 +74,22 @@ struct SensitivityRank {
 /// and one whose change is at rounding level (at most 1e-6 of the largest, or none at all).
 std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::size_t metric);
 
+/// A variant whose metric lies more than a threshold from the baseline: for a metric that is no
+/// smooth function of the screws (the repetition limit jumps between regimes), which screws tip
+/// it, instead of a slope.
+struct MetricJump {
+  std::string setting;
+  int side = 0;  ///< −1: the adjuster at −step, +1: at +step
+  double value = 0.0;
+};
+/// A change of the repetition limit taken as a jump between regimes: several hertz to one side
+/// (ten chirp cycles' spacing at 13 Hz and 1 Hz/s), where the screws' smooth effects move it by
+/// tenths.
+inline constexpr double kRepetitionJumpHz = 3.0;
+/// Every such variant of metric `metric`, in the rows' order (− before +); NaN values left out.
+std::vector<MetricJump> jumps_beyond(const SensitivityResult& r, std::size_t metric,
+                                     double threshold);
+
 /// Runs every (setting × {−, 0, +}) × group case in parallel on the available cores. Settings
 /// are those of the model's regulation list. Cancels through `progress` (throws Cancelled).
 SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions& options,

@@ -180,6 +180,33 @@ TEST(Sensitivity, RanksTheSettingsByTheChangeOfAMetric) {
   EXPECT_TRUE(rank_by_change(unmoved, 1).empty());  // nothing changes: no rank at all
 }
 
+// A metric that jumps between regimes (the grand's halfway repetition limit: 13.2 Hz, or 24 Hz
+// with let-off 0.5 mm closer) is reported by which screws tip it, on which side.
+TEST(Sensitivity, JumpsBeyondAThresholdNameTheSettingAndSide) {
+  SensitivityResult r;
+  r.metrics = {"max_repetition_hz"};
+  r.baseline = {13.19};
+  auto row = [](const char* name, double minus, double plus) {
+    SensitivityRow out;
+    out.setting = name;
+    out.minus = {minus};
+    out.plus = {plus};
+    return out;
+  };
+  r.rows = {row("key_dip", 12.88, 16.25), row("let_off", 23.96, 12.88),
+            row("checking", 13.19, 13.19), row("drop", NAN, 40.0)};
+  const std::vector<MetricJump> jumps = jumps_beyond(r, 0, 3.0);
+  ASSERT_EQ(jumps.size(), 3u);
+  EXPECT_EQ(jumps[0].setting, "key_dip");  // +3.06 Hz: just beyond
+  EXPECT_EQ(jumps[0].side, +1);
+  EXPECT_EQ(jumps[1].setting, "let_off");
+  EXPECT_EQ(jumps[1].side, -1);
+  EXPECT_DOUBLE_EQ(jumps[1].value, 23.96);
+  EXPECT_EQ(jumps[2].setting, "drop");  // its unmeasurable side left out, not its jump
+  EXPECT_EQ(jumps[2].side, +1);
+  EXPECT_TRUE(jumps_beyond(r, 0, 20.0).size() == 1u);  // only the drop's 26.8 Hz
+}
+
 TEST(Sensitivity, RejectsANonPositiveStep) {
   SensitivityOptions options;
   options.step_mm = 0.0;
