@@ -180,6 +180,18 @@ CsvTable read_csv(const std::string& path) {
         }
         table.columns.emplace_back(name);
       }
+      // one header field holding several names: a file separated by semicolons or tabs (a
+      // spreadsheet's export in a decimal-comma locale), read here as one column
+      if (table.columns.size() == 1) {
+        for (const char separator : {';', '\t'}) {
+          if (table.columns.front().find(separator) == std::string::npos) continue;
+          throw InputError(
+              located_message(path, line_label(line_number),
+                              std::string("the columns are separated by ") +
+                                  (separator == ';' ? "semicolons" : "tabs") +
+                                  "; expected commas (time_s,key_angle_deg) and a decimal point"));
+        }
+      }
       if (all_numbers) {
         throw InputError(located_message(path, line_label(line_number),
                                          "expected a header row of column names (such as "

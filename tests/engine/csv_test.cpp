@@ -189,6 +189,17 @@ TEST_F(CsvTest, TextInANumberColumnNamesFileLineAndColumn) {
   EXPECT_TRUE(contains(empty, "line 2: column key_force_n is empty")) << empty;
 }
 
+TEST_F(CsvTest, SemicolonsOrTabsBetweenColumnsAreNamedAsSuch) {
+  // a spreadsheet's export in a decimal-comma locale: one header field "time_s;key_force_n",
+  // which had been reported as a value in a column of that name that is not a number
+  const std::string semicolons = read_error("time_s;key_force_n\n0;0\n0,01;5\n");
+  EXPECT_TRUE(contains(semicolons, "trace.csv: line 1: the columns are separated by semicolons"))
+      << semicolons;
+  EXPECT_TRUE(contains(semicolons, "expected commas")) << semicolons;
+  const std::string tabs = read_error("time_s\tkey_force_n\n0\t0\n");
+  EXPECT_TRUE(contains(tabs, "separated by tabs")) << tabs;
+}
+
 TEST_F(CsvTest, NonFiniteValuesAreRejected) {
   for (const std::string value : {"nan", "inf", "-inf", "1e999"}) {
     const std::string message = read_error("time_s,key_force_n\n0,0\n1," + value + "\n");
