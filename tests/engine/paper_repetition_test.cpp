@@ -75,6 +75,10 @@ TEST(PaperRepetition, ASweepWithoutAFailureIsALowerBound) {
   // no maximum, no paper figure: no sentence
   EXPECT_TRUE(compare_with_paper(sweep(Stroke::full, std::nullopt, false), "grand", 20).empty());
   EXPECT_TRUE(compare_with_paper(sweep(Stroke::half, 15, true), "upright", 25).empty());
+  // an upright's halfway stroke that repeats nothing: why (it has no repetition lever)
+  const std::string no_lever =
+      compare_with_paper(sweep(Stroke::half, std::nullopt, true), "upright", 20);
+  EXPECT_TRUE(has(no_lever, "An upright has no repetition lever")) << no_lever;
 }
 
 }  // namespace
