@@ -20,6 +20,7 @@
 #include <QShortcut>
 #include <QSplitter>
 #include <QStatusBar>
+#include <QStatusTipEvent>
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
@@ -654,6 +655,16 @@ void MainWindow::start(const std::string& spec) {
   run_controls_->input_form()->set_spec(spec);  // the form shows what runs
   controller_->restart(model_, spec);
   controller_->play();
+}
+
+bool MainWindow::event(QEvent* event) {
+  if (event->type() == QEvent::StatusTip) {
+    if (static_cast<QStatusTipEvent*>(event)->tip().isEmpty()) {
+      if (statusBar()->currentMessage().isEmpty()) show_run_status();
+      return true;
+    }
+  }
+  return QMainWindow::event(event);
 }
 
 void MainWindow::hold_at_rest() {

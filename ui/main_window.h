@@ -102,6 +102,9 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  /// A menu entry hovered sends its (empty) status tip, which would clear the run's status line
+  /// for good; those are dropped, and the run's status shown again.
+  bool event(QEvent* event) override;
 
  private:
   static constexpr double kClassTextScale = 1.35;  // large enough to read from the back of a room

@@ -10,6 +10,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
+#include <QStatusTipEvent>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -102,6 +103,11 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QCOMPARE(c->display_time(), 0.0);
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest") &&
                window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
+           qPrintable(window.statusBar()->currentMessage()));
+  // a menu entry hovered (its status tip empty) leaves the line as it was: it had cleared it
+  QStatusTipEvent hovered{QString()};
+  QCoreApplication::sendEvent(&window, &hovered);
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest"),
            qPrintable(window.statusBar()->currentMessage()));
   c->play();  // Play runs the input from rest
   QVERIFY(wait_until([&] { return c->display_time() > 0.003; }));
