@@ -10,7 +10,7 @@
 #include "analysis_entries.h"
 #include "core/error.h"
 #include "core/format.h"
-#include "model/model_edits.h"
+#include "regulation/measurements.h"
 
 namespace pat::ui {
 namespace {
@@ -260,8 +260,10 @@ AnalysisEntry repetition_sweep_entry() {
               const AnalysisSettings& settings) -> AnalysisTask {
     const SweepOptions options = sweep_options(settings);  // bad settings fail before the run
     return [model, options](const ProgressCallback& progress) {
+      // a result's difference from the paper's is put down to the settings only when they are
+      // out of tolerance (automatic regulation leaves micrometres)
       return sweep_result(run_repetition_sweep(*model, options, progress), options, model->kind,
-                          adjuster_settings_text(*model));
+                          regulation_state(*model));
     };
   };
   return e;

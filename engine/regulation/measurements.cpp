@@ -8,6 +8,7 @@
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
 #include "dynamics/action_dynamics.h"
+#include "model/model_edits.h"
 #include "regulation/technician_tests.h"
 #include "sim/key_travel.h"
 
@@ -162,6 +163,15 @@ std::vector<SettingReading> measure_settings(const ActionModel& model) {
   for (const SettingReading& r : readings)
     if (!r.problem.empty()) throw std::runtime_error(r.problem);
   return readings;
+}
+
+std::string regulation_state(const ActionModel& model) {
+  const std::string offsets = adjuster_settings_text(model);
+  if (offsets == "regulated") return offsets;
+  const std::vector<SettingReading> readings = read_settings(model, {}, 1);
+  const bool within = std::all_of(readings.begin(), readings.end(),
+                                  [](const SettingReading& r) { return r.within_tolerance(); });
+  return within ? "regulated" : offsets;
 }
 
 }  // namespace pat

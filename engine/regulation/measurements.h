@@ -58,4 +58,9 @@ std::vector<SettingReading> read_settings(const ActionModel& model,
 /// The same on one thread, throwing the first setting's problem (std::runtime_error) instead.
 std::vector<SettingReading> measure_settings(const ActionModel& model);
 
+/// "regulated" when the adjusters are at their regulated positions or every setting reads within
+/// its tolerance (automatic regulation leaves offsets of micrometres: still regulated); else the
+/// adjusters' offsets (adjuster_settings_text), to which a result's difference is put down.
+std::string regulation_state(const ActionModel& model);
+
 }  // namespace pat
