@@ -495,7 +495,9 @@ void ActionView::paint_frame(QPainter& painter) {
   painter.setPen(QPen(QColor(215, 215, 210), 1.0));
   painter.drawLine(QPointF(0, band), QPointF(width(), band));
   const double t_ms = frame_->t * 1e3;
-  const double gap_mm = frame_->hammer_string_gap_mm, finger_n = frame_->finger_force_n;
+  const double gap_mm = frame_->hammer_string_gap_mm;
+  // to 0.1 N, without a "-0.0" for a finger that barely holds a key led by the mouse
+  const double finger_n = std::abs(frame_->finger_force_n) < 0.05 ? 0.0 : frame_->finger_force_n;
   // the gap is read at a point fixed on the felt, which stands up to 0.3 mm behind the felt's
   // nearest point near the string (README, limits): while the felt presses the string the
   // readout says so, instead of a gap the drawing's string force contradicts

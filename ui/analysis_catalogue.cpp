@@ -21,6 +21,10 @@
 namespace pat::ui {
 
 QString number(double value, int precision) {
+  // for a class: no "nan" (a value the analysis could not find) and no "4.62e-05" or "-0" (a
+  // change at rounding level, in units of mm, g, ms or m/s)
+  if (!std::isfinite(value)) return QObject::tr("—");
+  if (std::abs(value) < 5e-4) return QStringLiteral("0");
   return QString::fromStdString(format_number(value, precision));
 }
 

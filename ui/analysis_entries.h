@@ -16,7 +16,8 @@ AnalysisEntry action_comparison_entry();
 /// Diagnosis of measured files against candidate extensions (diagnosis_analysis.cpp).
 AnalysisEntry diagnosis_entry();
 
-/// A number as the command line prints it (core/format.h), `precision` significant digits.
+/// A number as the command line prints it (core/format.h), `precision` significant digits; for
+/// a class, "—" where there is none (NaN) and 0 below 0.0005 (no "4.62e-05").
 QString number(double value, int precision = 3);
 /// A plot over time (s) of these series.
 AnalysisPlot time_plot(const QString& title, const QString& y_title,

@@ -164,7 +164,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     }
   });
   connect(view_, &ActionView::keyPlayed, controller_, &PlaybackController::play_key);
-  connect(view_, &ActionView::keyReleased, this, [this] { controller_->play_key(0.0); });
+  connect(view_, &ActionView::keyReleased, controller_, &PlaybackController::release_key);
   connect(run_controls_, &RunControls::startRequested, this, &MainWindow::start);
   connect(regulation_, &RegulationPanel::adjusterChanged, this, &MainWindow::set_adjuster);
   connect(regulation_, &RegulationPanel::resetRequested, this, [this] {

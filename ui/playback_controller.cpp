@@ -133,6 +133,14 @@ void PlaybackController::play_key(double angle_rad) {
   worker_->request_key_angle(std::clamp(angle_rad, 0.0, full_dip_rad_), transition);
 }
 
+void PlaybackController::release_key() {
+  if (stopped_ || replay_ || !key_played_) return;
+  worker_->request_blow("force:const:0");
+  key_played_ = false;
+  note_input(history_.last_time(), tr("the key let go"));
+  play();
+}
+
 void PlaybackController::play() {
   if (stopped_ || playing_) return;
   playing_ = true;

@@ -37,6 +37,10 @@ class PlaybackController : public QObject {
   /// The key played with the mouse: key angle (rad from rest, positive down), kept between
   /// rest and full dip; starts playing.
   void play_key(double angle_rad);
+  /// The mouse lets the key go: from now the key is free (no finger force), as a finger lifted
+  /// off it; it had been led back to rest and held there, pulling it up (−0.5 N) as the
+  /// hammer came down.
+  void release_key();
   /// Key angle at full dip (rad) of the current run.
   double full_dip_rad() const { return full_dip_rad_; }
 

@@ -2,9 +2,11 @@
 
 #include <QMetaObject>
 #include <QtConcurrent/QtConcurrentRun>
+#include <cmath>
 #include <exception>
 
 #include "background_pool.h"
+#include "setting_names.h"
 
 namespace pat::ui {
 
@@ -23,14 +25,25 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
   cancelled_.store(false);
   future_ = QtConcurrent::run(background_pool(), [this, model] {
     RegulationOptions options;
-    options.on_step = [this](const RegulationStep& s) {
+    options.on_step = [this, model](const RegulationStep& s) {
+      // as the panel reads: the setting in words, millimetres to 0.01 mm (a fraction to 0.001),
+      // the adjuster signed, and a setting that could not be read there said so
+      std::string unit = "mm";
+      for (const RegulationSetting& r : model->regulation)
+        if (r.name == s.setting) unit = r.unit;
+      const int decimals = unit == "mm" ? 2 : 3;
+      const QString suffix = unit == "mm" ? tr(" mm") : QString();
+      const auto reading = [&](double x) {
+        return std::isfinite(x) ? QString::number(x, 'f', decimals) + suffix : tr("no reading");
+      };
+      const double adjuster = std::abs(s.adjuster_mm) < 5e-4 ? 0.0 : s.adjuster_mm;
       const QString line =
-          tr("pass %1  %2: adjuster %3 mm → measured %4 (target %5)%6")
+          tr("pass %1  %2: adjuster %3 mm → reads %4 (target %5)%6")
               .arg(s.pass)
-              .arg(QString::fromStdString(s.setting))
-              .arg(s.adjuster_mm, 0, 'f', 3)
-              .arg(s.measured, 0, 'f', 3)
-              .arg(s.target, 0, 'f', 3)
+              .arg(setting_title(s.setting))
+              .arg(QString::number(adjuster, 'f', 3).prepend(adjuster > 0.0 ? "+" : ""))
+              .arg(reading(s.measured))
+              .arg(reading(s.target))
               .arg(s.note.empty() ? QString() : " — " + QString::fromStdString(s.note));
       QMetaObject::invokeMethod(this, [this, line] { emit stepDone(line); });
       return !cancelled_.load();

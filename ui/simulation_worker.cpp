@@ -44,6 +44,7 @@ void SimulationWorker::request_blow(const std::string& spec) {
   {
     std::lock_guard lock(pending_mutex_);
     pending_blow_ = spec;
+    pending_key_ = false;  // a blow (or the key let go) comes after the mouse's last move
     has_pending_.store(true);
   }
   schedule_compute();

@@ -120,6 +120,12 @@ void ActionViewTest::dragging_the_key_front_down_plays_the_key() {
                               .arg(view->frame()->angle_deg[key])
                               .arg(view->frame()->t)
                               .arg(window.banner_text())));
+  // let go, the key is free: no finger holds it (it had been led back to rest and held there,
+  // pulled up with −0.5 N as the hammer came down)
+  const double let_go_at = view->frame()->t;
+  QVERIFY(wait_until([&] { return view->frame()->t > let_go_at + 0.005; }));
+  QCOMPARE(view->frame()->finger_force_n, 0.0);
+  QVERIFY(window.controller()->inputs_text().contains("the key let go"));
 }
 
 namespace {
