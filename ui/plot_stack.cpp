@@ -131,6 +131,11 @@ void PlotStack::append(const std::vector<Frame>& frames) {
 }
 
 void PlotStack::show_time(double t) {
+  if (whole_run_) {  // the whole run, growing with it
+    fit_whole_run();
+    replot();
+    return;
+  }
   if (following_) {
     // zoomed on the data at first, then a window sliding with the time
     const double lo = std::max(0.0, t - window_s_ * 0.95);
@@ -149,24 +154,29 @@ void PlotStack::set_window(double seconds) {
 }
 
 void PlotStack::show_whole_run() {
-  const double lo = std::max(0.0, latest_t_ - kKeptSeconds);
-  const double hi = std::max(latest_t_, lo + 5e-3);
   if (following_) {
     following_ = false;
     emit followingChanged(false);
   }
+  whole_run_ = true;
+  fit_whole_run();
+  replot();
+}
+
+void PlotStack::fit_whole_run() {
+  const double lo = std::max(0.0, latest_t_ - kKeptSeconds);
+  const double hi = std::max(latest_t_, lo + 5e-3);
   for (PlotPanel* panel : panels()) {
     panel->set_x_range(lo, hi);
     panel->fit_values();
   }
-  replot();
 }
 
 void PlotStack::mark_time(double t) {
   marked_t_ = t;
   for (PlotPanel* panel : panels()) panel->set_time_mark(t);
   const auto [lo, hi] = angles_->x_range();
-  if (following_ && (t < lo || t > hi)) {
+  if (following_ && !whole_run_ && (t < lo || t > hi)) {
     show_time(t);  // stepped or rewound out of the window: it moves back to the shown time
     return;
   }
@@ -174,6 +184,7 @@ void PlotStack::mark_time(double t) {
 }
 
 void PlotStack::set_following(bool follow) {
+  if (follow) whole_run_ = false;
   if (follow == following_) return;
   following_ = follow;
   if (follow) show_time(latest_t_);
@@ -184,6 +195,7 @@ void PlotStack::sync_time_range(PlotPanel* source, double lo, double hi) {
   for (PlotPanel* panel : panels())
     if (panel != source) panel->set_x_range(lo, hi);
   for (PlotPanel* panel : panels()) panel->fit_values();
+  whole_run_ = false;  // zoomed or panned by hand: it stays where the user put it
   set_following(false);
   replot();
 }

@@ -38,8 +38,9 @@ class PlotStack : public QWidget {
   /// Width of the followed time window, s (0.25 s at first); applied at once when following.
   void set_window(double seconds);
   double window() const { return window_s_; }
-  /// The whole run kept (up to its last 60 s) on the time axes, values fitted to it; following
-  /// stops (a slow press's let-off and drop had scrolled away after 0.25 s).
+  /// The whole run kept (up to its last 60 s) on the time axes, values fitted to it, growing as
+  /// the run goes on until Follow or a zoom or pan by hand (a slow press's let-off and drop had
+  /// scrolled away after 0.25 s; the axes had then stayed put while new blows ran off them).
   void show_whole_run();
 
   std::vector<PlotPanel*> panels() const;
@@ -54,6 +55,8 @@ class PlotStack : public QWidget {
  private:
   void sync_time_range(PlotPanel* source, double lo, double hi);
   void replot();
+  /// The time axes over the whole run kept, values fitted.
+  void fit_whole_run();
 
   PlotPanel* angles_;
   PlotPanel* gap_;
@@ -62,6 +65,7 @@ class PlotStack : public QWidget {
   int key_body_ = 0, hammer_body_ = 0;
   std::vector<int> plotted_contacts_;  // contact index of each contact-force series
   bool following_ = true;
+  bool whole_run_ = false;  // show_whole_run: the time axes grow with the run
   double window_s_ = 0.25;
   double latest_t_ = 0.0;
   std::optional<double> marked_t_;

@@ -277,6 +277,20 @@ void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
   QCOMPARE(hi, 1.5);
   for (pat::ui::PlotPanel* panel : stack.panels())
     QCOMPARE(panel->x_range(), stack.angles()->x_range());
+  // the run goes on (another blow): the whole of it stays on the axes (they had stayed on
+  // 0–1.5 s while the new frames ran off them)
+  std::vector<pat::ui::Frame> later;
+  for (int i = 1501; i <= 2500; ++i) {
+    pat::ui::Frame f = frames.front();
+    f.t = 1e-3 * i;
+    later.push_back(f);
+  }
+  stack.append(later);
+  QCOMPARE(stack.angles()->x_range().second, 2.5);
+  QCOMPARE(stack.angles()->x_range().first, 0.0);
+  // Follow brings the sliding window back
+  stack.set_following(true);
+  QVERIFY2(std::abs(width() - 1.0) < 1e-9, qPrintable(QString::number(width())));
 }
 
 // The window's four plots exported at 1600x1000: the contact forces' legend (two rows under its
