@@ -124,7 +124,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                            .arg(QString::fromStdString(adjuster_settings_text(*frame.model)));
       show_run_status();
     }
-    if (!controller_->playing()) show_run_status();  // paused: a step or seek moves its time
+    // paused: a step or seek moves its time; playing frames recorded before (after a rewind),
+    // the input that drove them, as it changes
+    if (!controller_->playing() ||
+        (!controller_->replaying() && controller_->input_at(frame.t) != running_input_shown_))
+      show_run_status();
     if (practice_test_end_s_ >= 0.0 && frame.t >= practice_test_end_s_) end_practice_test_shown();
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
@@ -676,7 +680,12 @@ void MainWindow::show_run_status() {
   if (!model_) return;
   const QString name = QString::fromStdString(model_->name);
   if (controller_->playing()) {
-    statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_));
+    // what drives the frames shown: after a rewind those recorded before, not the last blow
+    const double shown_t =
+        controller_->has_frame() ? controller_->current_frame().t : controller_->display_time();
+    running_input_shown_ =
+        controller_->replaying() ? running_input_ : controller_->input_at(shown_t);
+    statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_shown_));
     return;
   }
   // paused or stopped: what drove the frame shown (after a rewind, not the last blow struck);

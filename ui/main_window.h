@@ -185,7 +185,8 @@ class MainWindow : public QMainWindow {
   std::vector<QAction*> measurement_actions_;  ///< plot exports and plot span: off in practice
   std::string input_before_practice_;          ///< the run input when an exercise began
   int speed_before_practice_ = 3;              ///< and the speed (index into RunControls::speeds)
-  QString running_input_;  ///< what drives the key (PlaybackController::inputChanged)
+  QString running_input_;        ///< what drives the key (PlaybackController::inputChanged)
+  QString running_input_shown_;  ///< what the status line names for the frames being played
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

@@ -172,6 +172,15 @@ void RunControlsTest::pause_step_and_rewind() {
     QCOMPARE(panel->time_mark().value_or(-1.0), 0.0);
     QVERIFY(panel->x_range().first <= 0.0);  // the followed window moved back to show it
   }
+  // played again from there, the status names what drove the frames played, not the last blow
+  // struck (a class read "with a blow struck (force:pulse:2:40)" under the replayed ff blow)
+  c->play();
+  QVERIFY(wait_until([&] { return c->current_frame().t > 0.002; }));
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Running") &&
+               window.statusBar()->currentMessage().contains("with force:pulse:20:40") &&
+               !window.statusBar()->currentMessage().contains("blow struck"),
+           qPrintable(window.statusBar()->currentMessage()));
+  c->pause();
   // replay from the history reaches the stepped time again with the same state
   const std::size_t i = c->history().index_at(stepped);
   c->seek(c->history().at(i).t);
