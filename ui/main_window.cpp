@@ -154,8 +154,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     running_input_ = what;
     show_run_status();
   });
-  connect(controller_, &PlaybackController::playingChanged, this, &MainWindow::show_run_status);
+  connect(controller_, &PlaybackController::playingChanged, this, [this](bool playing) {
+    if (playing) setting_waits_ = false;
+    show_run_status();
+  });
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
+    setting_waits_ = false;
     end_practice_test_shown();  // another run replaces the test on screen
     hide_banner();
     plots_->clear();
@@ -703,6 +707,12 @@ void MainWindow::show_run_status() {
     statusBar()->showMessage(tr("Ready, at rest (%1 with %2): Play or P runs it, Strike or the "
                                 "space bar strikes a blow, keys 1–5 strike pp to ff")
                                  .arg(name, input));
+  else if (setting_waits_)
+    // a screw turned while paused in a run: the parts move to it only as time goes on
+    statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): the setting just changed acts "
+                                "as the run goes on (Play), or from rest (Start from rest)")
+                                 .arg(t * 1e3, 0, 'f', 2)
+                                 .arg(name, input));
   else
     statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
                                 "Step back move one frame")
@@ -721,7 +731,21 @@ void MainWindow::set_adjuster(const std::string& name, double mm) {
 
 void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
-  controller_->change_model(model_);
+  // at rest, before anything was played (the window's launch, Start from rest while paused):
+  // the action settles with the new setting at once, as a technician sees it after a turn of
+  // the screw (a capstan turned up lifts the hammer); in a run paused later, it acts as the run
+  // goes on, which the status line says (the drawing stays as it was)
+  const bool at_rest = !practising_ && !controller_->playing() && !controller_->replaying() &&
+                       !controller_->run_stopped() && controller_->has_frame() &&
+                       controller_->current_frame().t <= 0.0;
+  if (at_rest) {
+    controller_->restart(model_, run_controls_->input_form()->spec());  // the form shows what runs
+    hold_at_rest();
+  } else {
+    controller_->change_model(model_);
+    setting_waits_ = !controller_->playing() && !controller_->replaying();
+    if (setting_waits_) show_run_status();
+  }
   measure_current_model();
 }
 

@@ -187,6 +187,7 @@ class MainWindow : public QMainWindow {
   int speed_before_practice_ = 3;              ///< and the speed (index into RunControls::speeds)
   QString running_input_;        ///< what drives the key (PlaybackController::inputChanged)
   QString running_input_shown_;  ///< what the status line names for the frames being played
+  bool setting_waits_ = false;   ///< a setting changed while paused in a run, not yet played
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

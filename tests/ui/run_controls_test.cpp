@@ -109,9 +109,26 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QCoreApplication::sendEvent(&window, &hovered);
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest"),
            qPrintable(window.statusBar()->currentMessage()));
+  // a screw turned before playing: the action settles with it at once (the capstan 1 mm up
+  // lifts the hammer 12 mm nearer the string), still at rest and waiting
+  const double gap_before = c->current_frame().hammer_string_gap_mm;
+  window.set_adjuster("hammer_blow", 1.0);
+  QVERIFY(wait_until([&] {
+    return c->has_frame() && c->current_frame().hammer_string_gap_mm < gap_before - 8.0;
+  }));
+  QVERIFY(!c->playing());
+  QCOMPARE(c->current_frame().t, 0.0);
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest"),
+           qPrintable(window.statusBar()->currentMessage()));
   c->play();  // Play runs the input from rest
   QVERIFY(wait_until([&] { return c->display_time() > 0.003; }));
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Running"),
+           qPrintable(window.statusBar()->currentMessage()));
+  // turned while paused in the run: it acts as the run goes on, and the status line says so
+  c->pause();
+  window.set_adjuster("hammer_blow", 0.0);
+  QVERIFY2(window.statusBar()->currentMessage().contains("the setting just changed acts as the "
+                                                         "run goes on"),
            qPrintable(window.statusBar()->currentMessage()));
 }
 
