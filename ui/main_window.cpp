@@ -25,6 +25,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 #include <algorithm>
+#include <cmath>
 #include <exception>
 
 #include "action_view.h"
@@ -261,34 +262,42 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(deregulation_runner_, &DeregulationRunner::progress, this,
           [this](double f) { progress_->setValue(int(100 * f)); });
-  connect(deregulation_runner_, &DeregulationRunner::finished, this,
-          [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
-            progress_->hide();
-            deregulate_button_->setText(tr("Deregulation demo"));
-            for (const DeregulationSample& s : result.samples)
-              regulation_->log(tr("t = %1 s  adjuster %2 mm  measured %3")
-                                   .arg(s.t, 0, 'f', 2)
-                                   .arg(s.adjuster_mm, 0, 'f', 2)
-                                   .arg(s.measured, 0, 'f', 2));
-            regulation_->log(result.stop_cause.empty()
-                                 ? tr("Deregulation: the action held to the end.")
-                                 : tr("Deregulation stopped at t = %1 s: %2")
-                                       .arg(result.stop_t, 0, 'f', 2)
-                                       .arg(QString::fromStdString(result.stop_cause)));
-            show_deregulation_result(result);
-            if (!frames.empty()) {
-              // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
-              // a slower speed than 1/10 becomes 1/10 (the class can slow it down again)
-              const auto& speeds = RunControls::speeds();
-              const auto tenth = std::find(speeds.begin(), speeds.end(), 0.1);
-              if (tenth != speeds.end() && controller_->speed() < 0.1)
-                run_controls_->set_speed_index(static_cast<int>(tenth - speeds.begin()));
-              controller_->replay(frames);
-              statusBar()->showMessage(
-                  tr("Replaying the deregulation demo; Start from rest "
-                     "returns to the live action."));
-            }
-          });
+  connect(
+      deregulation_runner_, &DeregulationRunner::finished, this,
+      [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
+        progress_->hide();
+        deregulate_button_->setText(tr("Deregulation demo"));
+        const std::string id = deregulation_setting_->currentData().toString().toStdString();
+        const int index = model_ ? model_->setting_index(id) : -1;
+        const bool mm = index < 0 || model_->regulation[index].unit == "mm";
+        for (const DeregulationSample& s : result.samples)
+          regulation_->log(tr("t = %1 s  adjuster %2 mm  %3 reads %4")
+                               .arg(s.t, 0, 'f', 2)
+                               .arg(std::abs(s.adjuster_mm) < 5e-3 ? 0.0 : s.adjuster_mm, 0, 'f', 2)
+                               .arg(setting_title(id))
+                               .arg(std::isfinite(s.measured)
+                                        ? QString::number(s.measured, 'f', mm ? 2 : 3) +
+                                              (mm ? tr(" mm") : QString())
+                                        : tr("no reading")));
+        regulation_->log(result.stop_cause.empty()
+                             ? tr("Deregulation: the action held to the end.")
+                             : tr("Deregulation stopped at t = %1 s: %2")
+                                   .arg(result.stop_t, 0, 'f', 2)
+                                   .arg(QString::fromStdString(result.stop_cause)));
+        show_deregulation_result(result);
+        if (!frames.empty()) {
+          // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
+          // a slower speed than 1/10 becomes 1/10 (the class can slow it down again)
+          const auto& speeds = RunControls::speeds();
+          const auto tenth = std::find(speeds.begin(), speeds.end(), 0.1);
+          if (tenth != speeds.end() && controller_->speed() < 0.1)
+            run_controls_->set_speed_index(static_cast<int>(tenth - speeds.begin()));
+          controller_->replay(frames);
+          statusBar()->showMessage(
+              tr("Replaying the deregulation demo; Start from rest "
+                 "returns to the live action."));
+        }
+      });
 
   build_practice();
   build_menus();
@@ -589,11 +598,12 @@ void MainWindow::open_action(const std::string& name_or_path) {
   regulation_->clear_log();
   analyses_->set_model(*model);
   {
-    const QString demo = deregulation_setting_->currentText();
+    // the settings in words, their identifiers as the items' data
+    const QString demo = deregulation_setting_->currentData().toString();
     deregulation_setting_->clear();
     for (const RegulationSetting& r : model->regulation)
-      deregulation_setting_->addItem(QString::fromStdString(r.name));
-    const int keep = deregulation_setting_->findText(demo.isEmpty() ? "hammer_blow" : demo);
+      deregulation_setting_->addItem(setting_title(r.name), QString::fromStdString(r.name));
+    const int keep = deregulation_setting_->findData(demo.isEmpty() ? "hammer_blow" : demo);
     deregulation_setting_->setCurrentIndex(std::max(0, keep));
   }
   fit_regulation_dock(false);
@@ -769,12 +779,12 @@ void MainWindow::regulate_automatically() {
 void MainWindow::run_deregulation_demo() {
   if (!model_ || deregulation_runner_->running()) return;
   DeregulationOptions options;
-  options.setting = deregulation_setting_->currentText().toStdString();
+  options.setting = deregulation_setting_->currentData().toString().toStdString();
   options.rate_mm_per_s = deregulation_rate_->value();
   options.frequency_hz = 3.0;
   options.duration_s = 10.0;
   options.step_interval_s = kDeregulationStepS;
-  regulation_->log(tr("Deregulation demo: %1 %2 mm/s, key at %3 Hz…")
+  regulation_->log(tr("Deregulation demo: %1, its adjuster %2 mm/s, key at %3 Hz…")
                        .arg(deregulation_setting_->currentText())
                        .arg(options.rate_mm_per_s, 0, 'f', 2)
                        .arg(options.frequency_hz));
@@ -785,15 +795,16 @@ void MainWindow::run_deregulation_demo() {
 }
 
 void MainWindow::set_deregulation_demo(const std::string& setting, double rate_mm_per_s) {
-  const int index = deregulation_setting_->findText(QString::fromStdString(setting));
+  const int index = deregulation_setting_->findData(QString::fromStdString(setting));
   if (index < 0) throw InputError("deregulation demo: unknown setting '" + setting + "'");
   deregulation_setting_->setCurrentIndex(index);
   deregulation_rate_->setValue(rate_mm_per_s);
 }
 
 void MainWindow::show_deregulation_result(const DeregulationResult& result) {
-  const QString setting = deregulation_setting_->currentText();
-  const int index = model()->setting_index(setting.toStdString());
+  const std::string id = deregulation_setting_->currentData().toString().toStdString();
+  const QString setting = setting_title(id);  // in words, as the panel names it
+  const int index = model()->setting_index(id);
   const QString unit =
       index >= 0 ? QString::fromStdString(model()->regulation[index].unit) : tr("mm");
   AnalysisResult shown;
@@ -809,11 +820,12 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
     measured.y.push_back(s.measured);
     gap.x.push_back(s.t);
     gap.y.push_back(s.hammer_string_gap_mm);
-    shown.table.push_back({tr("%1 at t = %2 s (adjuster %3 mm)")
-                               .arg(setting)
-                               .arg(s.t, 0, 'f', 2)
-                               .arg(s.adjuster_mm, 0, 'f', 2),
-                           QString::number(s.measured, 'f', 3), unit});
+    shown.table.push_back(
+        {tr("%1 at t = %2 s (adjuster %3 mm)")
+             .arg(setting)
+             .arg(s.t, 0, 'f', 2)
+             .arg(std::abs(s.adjuster_mm) < 5e-3 ? 0.0 : s.adjuster_mm, 0, 'f', 2),
+         std::isfinite(s.measured) ? QString::number(s.measured, 'f', 3) : tr("no reading"), unit});
   }
   // the adjuster as the run turned it, from its trace: steps of rate × interval (the paper's
   // 0.5 mm every 0.5 s); joined once per key cycle, as the readings are, it looked like a ramp

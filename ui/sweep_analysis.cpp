@@ -24,8 +24,8 @@ QString outcome_words(CycleOutcome outcome) {
       return QObject::tr("struck once");
     case CycleOutcome::missed:
       return QObject::tr("missed strike");
-    case CycleOutcome::double_strike:
-      return QObject::tr("double strike");
+    case CycleOutcome::double_strike:  // two or more: a cycle with three is no "double"
+      return QObject::tr("struck more than once");
     case CycleOutcome::stopped:
       return QObject::tr("run stopped");
   }

@@ -57,7 +57,7 @@ Exercise generate_exercise(const ActionModel& model, const std::string& action, 
   exercise.level = level;
   exercise.seed = seed;
   exercise.title =
-      model.kind + " action, seed " + std::to_string(seed) + ", level " + std::to_string(level);
+      model.kind + " action, exercise " + std::to_string(seed) + ", level " + std::to_string(level);
   SeedSequence random(seed);
   std::vector<std::string> candidates;
   for (const RegulationSetting& s : model.regulation) candidates.push_back(s.name);

@@ -188,10 +188,11 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
   QCOMPARE(window.controller()->history().size(), frame_count);
   QCOMPARE(window.controller()->speed(), 0.1);
   // the measured value over time is shown in the Analyses tab, titled with the chosen setting
-  QVERIFY2(window.analyses()->summary().contains("Deregulation of let_off"),
+  // in words (as the panel names it, not its identifier)
+  QVERIFY2(window.analyses()->summary().contains("Deregulation of let-off"),
            qPrintable(window.analyses()->summary()));
   // the selector above does not claim the result as one of its analyses
-  QVERIFY2(window.analyses()->description().startsWith("Shown: Deregulation of let_off"),
+  QVERIFY2(window.analyses()->description().startsWith("Shown: Deregulation of let-off"),
            qPrintable(window.analyses()->description()));
   window.start("");  // back to a live run
   QVERIFY(!window.controller()->replaying());
