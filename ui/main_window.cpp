@@ -331,8 +331,15 @@ void MainWindow::build_menus() {
     a->setCheckable(true);
     group->addAction(a);
   }
-  connect(grand_action_, &QAction::triggered, this, [this] { open_action("grand"); });
-  connect(upright_action_, &QAction::triggered, this, [this] { open_action("upright"); });
+  // another action opens at rest and waits, as the window does at launch
+  connect(grand_action_, &QAction::triggered, this, [this] {
+    open_action("grand");
+    hold_at_rest();
+  });
+  connect(upright_action_, &QAction::triggered, this, [this] {
+    open_action("upright");
+    hold_at_rest();
+  });
 
   QMenu* exports = menuBar()->addMenu(tr("&Export"));
   measurement_actions_.push_back(
@@ -907,6 +914,7 @@ void MainWindow::open_preset_from_menu() {
   if (path.isEmpty()) return;
   try {
     open_action(path.toStdString());
+    hold_at_rest();
   } catch (const std::exception& e) {
     // from a menu: a dialog is fine; the running action stays as it was
     QMessageBox::warning(this, tr("Cannot open the preset"), QString::fromStdString(e.what()));

@@ -4,6 +4,7 @@
 // grand/upright rebuilds the panel and the view.
 #include "run_controls.h"
 
+#include <QAction>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -130,6 +131,17 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QVERIFY2(window.statusBar()->currentMessage().contains("the setting just changed acts as the "
                                                          "run goes on"),
            qPrintable(window.statusBar()->currentMessage()));
+  // another action chosen from the menu opens at rest and waits too
+  QAction* upright = nullptr;
+  for (QAction* a : window.findChildren<QAction*>())
+    if (a->text() == "&Upright") upright = a;
+  QVERIFY(upright);
+  upright->trigger();
+  QCOMPARE(window.model()->kind, std::string("upright"));
+  QVERIFY(wait_until([&] { return c->has_frame(); }));
+  QTest::qWait(200);
+  QVERIFY(!c->playing());
+  QCOMPARE(c->display_time(), 0.0);
 }
 
 void RunControlsTest::pause_step_and_rewind() {
