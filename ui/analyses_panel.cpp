@@ -14,11 +14,14 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSplitter>
 #include <QTabWidget>
 #include <QTableWidget>
 #include <QTextStream>
+#include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "analysis_plots.h"
 #include "analysis_runner.h"
@@ -78,6 +81,14 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   summary_ = new QLabel(this);
   summary_->setWordWrap(true);
   summary_->setStyleSheet("font-weight: bold;");
+  summary_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+  // a long summary (a sweep's, with the paper's figures) scrolls within a few lines instead of
+  // squeezing the plots under it to a strip without its axis titles
+  summary_scroll_ = new QScrollArea(this);
+  summary_scroll_->setWidget(summary_);
+  summary_scroll_->setWidgetResizable(true);
+  summary_scroll_->setFrameShape(QFrame::NoFrame);
+  summary_scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   table_ = new QTableWidget(0, 3, this);
   table_->setHorizontalHeaderLabels({tr("quantity"), tr("value"), tr("unit")});
   table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
@@ -95,7 +106,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   results_->setStretchFactor(0, 1);
   results_->setStretchFactor(1, 3);
   results_->hide();  // until there is a result; the summary line says how to get one
-  summary_->setText(
+  set_summary(
       tr("Choose an analysis and press Run: it runs on the action in the window, "
          "as regulated there."));
   export_plots_ = new QPushButton(tr("Export plots…"), this);
@@ -129,7 +140,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   layout->addWidget(file_problems_);
   layout->addWidget(progress_);
   layout->addWidget(stage_);
-  layout->addWidget(summary_);
+  layout->addWidget(summary_scroll_);
   layout->addWidget(results_, 1);
   layout->addStretch(0);
   layout->addLayout(export_row);
@@ -160,12 +171,12 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
           });
   connect(runner_, &AnalysisRunner::cancelled, this, [this](const QString& title) {
     set_busy(false);
-    summary_->setText(tr("%1: cancelled.").arg(title));
+    set_summary(tr("%1: cancelled.").arg(title));
   });
   connect(runner_, &AnalysisRunner::failed, this,
           [this](const QString& title, const QString& message) {
             set_busy(false);
-            summary_->setText(tr("%1 failed: %2").arg(title, message));
+            set_summary(tr("%1 failed: %2").arg(title, message));
           });
   connect(export_plots_, &QPushButton::clicked, this,
           [this] { emit exportRequested(plots_, result_title_); });
@@ -188,7 +199,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
     try {
       write_report(folder);
       remember_export_folder(folder);
-      summary_->setText(summary_->text() + "\n" + tr("Report written to %1.").arg(folder));
+      set_summary(summary_->text() + "\n" + tr("Report written to %1.").arg(folder));
     } catch (const std::exception& e) {
       QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
     }
@@ -401,10 +412,10 @@ bool AnalysesPanel::run(const QString& name) {
   try {
     task = entry.make(model, settings());
   } catch (const std::exception& e) {  // settings that cannot run: said next to the form
-    summary_->setText(tr("%1: %2").arg(entry.name, QString::fromStdString(e.what())));
+    set_summary(tr("%1: %2").arg(entry.name, QString::fromStdString(e.what())));
     return false;
   }
-  summary_->setText(tr("%1: running…").arg(entry.name));
+  set_summary(tr("%1: running…").arg(entry.name));
   set_busy(true);
   running_action_ = entry.on_the_window_action ? QString::fromStdString(model->kind) : QString();
   runner_->start(entry.name, std::move(task));
@@ -455,7 +466,7 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
   result_title_ = title;
   // the result names its action: it stays on show when the window changes to the other one
   const QString heading = action.isEmpty() ? title : tr("%1 (%2)").arg(title, action);
-  summary_->setText(result.summary.isEmpty() ? heading : heading + ": " + result.summary);
+  set_summary(result.summary.isEmpty() ? heading : heading + ": " + result.summary);
   table_->setRowCount(static_cast<int>(result.table.size()));
   for (int r = 0; r < table_->rowCount(); ++r) {
     const AnalysisTableRow& row = result.table[r];
@@ -464,7 +475,10 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
     table_->item(r, 1)->setToolTip(row.value);  // long values (errors in words) in full
     table_->setItem(r, 2, new QTableWidgetItem(row.unit));
   }
-  table_->resizeColumnToContents(0);
+  for (int r = 0; r < table_->rowCount(); ++r)
+    table_->item(r, 0)->setToolTip(table_->item(r, 0)->text());
+  fit_table_columns();
+  QTimer::singleShot(0, this, [this] { fit_table_columns(); });  // once laid out
   for (const AnalysisPlot& p : result.plots) {
     PlotPanel* panel = make_analysis_plot_panel(p, plot_tabs_);
     plots_.push_back(panel);
@@ -561,6 +575,34 @@ QStringList AnalysesPanel::write_table_csv(const QString& path) const {
     written << grid_path;
   }
   return written;
+}
+
+void AnalysesPanel::set_summary(const QString& text) {
+  summary_->setText(text);
+  fit_summary();
+}
+
+void AnalysesPanel::fit_summary() {
+  const int width = summary_scroll_->viewport()->width() > 0 ? summary_scroll_->viewport()->width()
+                                                             : summary_scroll_->width();
+  const int lines = 6 * summary_->fontMetrics().lineSpacing();
+  summary_scroll_->setFixedHeight(std::min(summary_->heightForWidth(std::max(width, 100)), lines));
+}
+
+void AnalysesPanel::fit_table_columns() {
+  // the quantities' names take at most 55 % of the width, the values and units the rest (a long
+  // name cut, in full in its tooltip): sized to their contents, they had pushed the values to "…"
+  table_->resizeColumnToContents(2);
+  table_->resizeColumnToContents(0);
+  const int widest_name = table_->viewport()->width() * 11 / 20;
+  if (widest_name > 0 && table_->columnWidth(0) > widest_name)
+    table_->setColumnWidth(0, widest_name);
+}
+
+void AnalysesPanel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  fit_summary();
+  fit_table_columns();
 }
 
 }  // namespace pat::ui

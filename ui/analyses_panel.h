@@ -23,6 +23,8 @@ class QPushButton;
 class QSplitter;
 class QTableWidget;
 class QTabWidget;
+class QScrollArea;
+class QResizeEvent;
 
 namespace pat::ui {
 
@@ -76,6 +78,10 @@ class AnalysesPanel : public QWidget {
   /// its own columns. Returns the files written. Throws InputError naming the file.
   QStringList write_table_csv(const QString& path) const;
 
+ protected:
+  /// Refits the summary's height to the new width.
+  void resizeEvent(QResizeEvent* event) override;
+
  signals:
   /// The user asked to export these plots (the window owns the file dialog and the size).
   void exportRequested(const std::vector<pat::ui::PlotPanel*>& plots, const QString& what);
@@ -99,6 +105,12 @@ class AnalysesPanel : public QWidget {
   QProgressBar* progress_;
   QLabel* stage_;
   QLabel* summary_;
+  QScrollArea* summary_scroll_;  ///< holds the summary, at most a few lines high
+  /// Sets the summary, its scroll area as high as its text up to six lines.
+  void set_summary(const QString& text);
+  void fit_summary();
+  /// The table's name column as wide as its names, up to 55 % of the table.
+  void fit_table_columns();
   QTableWidget* table_;
   QTabWidget* plot_tabs_;
   QSplitter* results_;  ///< the table above the plot tabs

@@ -5,6 +5,7 @@
 #include "analyses_panel.h"
 
 #include <QFile>
+#include <QLabel>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -32,6 +33,7 @@ class AnalysesPanelTest : public QObject {
   void every_analysis_runs_from_the_window_for_both_actions();
   void cancel_from_the_panel_keeps_the_window_live();
   void table_exports_as_csv();
+  void long_names_and_summaries_leave_the_values_and_plots_readable();
 };
 
 void AnalysesPanelTest::runner_reports_progress_and_result() {
@@ -173,6 +175,39 @@ void AnalysesPanelTest::table_exports_as_csv() {
   QVERIFY2(lines.join('\n').contains("hammer blow,45.01 (target 45.00 ± 0.05),mm"),
            qPrintable(lines.join('\n')));
   QVERIFY_THROWS_EXCEPTION(pat::InputError, panel->write_table_csv("/nonexistent/dir/t.csv"));
+}
+
+// Upright vs grand in the dock's width: its long quantity names had pushed the values to "…",
+// and a sweep's long summary had squeezed the plots under it to a strip without axis titles.
+void AnalysesPanelTest::long_names_and_summaries_leave_the_values_and_plots_readable() {
+  pat::ui::AnalysesPanel panel([] { return std::shared_ptr<const pat::ActionModel>(); });
+  panel.resize(520, 640);
+  panel.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&panel));
+  pat::ui::AnalysisResult result;
+  result.summary = QString("a long summary sentence, ").repeated(40);
+  for (int i = 0; i < 4; ++i)
+    result.table.push_back({QString("grand: repetition limit, half stroke (chirp from 2 Hz at 1 "
+                                    "Hz/s, judged over a steady window of 8 cycles) %1")
+                                .arg(i),
+                            "13.2", "Hz"});
+  pat::ui::AnalysisPlot plot{"p", "time (s)", "time_s", "s", "angle (deg)", {}, {}, {}, {}};
+  plot.series.push_back({"a", "a", {0.0, 1.0}, {0.0, 1.0}, false});
+  result.plots.push_back(plot);
+  panel.show_result("Upright vs grand", result);
+  QTest::qWait(50);  // the columns fit once laid out
+  QTableWidget* table = panel.table();
+  const int value_width = table->columnWidth(1);
+  const int needed = table->fontMetrics().horizontalAdvance("13.2") + 12;
+  QVERIFY2(value_width >= needed, qPrintable(QString("value column %1 px").arg(value_width)));
+  QVERIFY(table->columnWidth(0) <= table->viewport()->width() * 11 / 20 + 1);
+  // the summary scrolls within six lines: the plots keep their height
+  QLabel* summary = nullptr;
+  for (QLabel* label : panel.findChildren<QLabel*>())
+    if (label->text().startsWith("Upright vs grand")) summary = label;
+  QVERIFY(summary);
+  QVERIFY(summary->parentWidget()->height() <= 6 * summary->fontMetrics().lineSpacing() + 2);
+  QVERIFY(panel.plots().front()->height() >= 150);
 }
 
 QTEST_MAIN(AnalysesPanelTest)
