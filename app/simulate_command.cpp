@@ -46,22 +46,25 @@ int run_simulate(const std::vector<std::string>& args) {
       cl.positive_number_or("--step", options.integrator_options.fixed_step_s);
   options.integrator_options.relative_tolerance =
       cl.positive_number_or("--rtol", options.integrator_options.relative_tolerance);
-  // absolute tolerance on angles (rad) and rates (rad/s): a hundredth of the relative one, as
-  // the bench's references take it
   // beyond these the run's numbers mean nothing although it may end "ok": a felt contact lasts a
   // few milliseconds (w2 at 1 ms already drives the capstan 63 mm into the whippen under 5 N),
-  // and a tolerance of more than 10 % lets cvode and rodas step through the felts
+  // and a tolerance of more than 10 % lets cvode and rodas step through the felts (each checked
+  // where it was given: the defaults are fine for any duration)
   constexpr double kLargestStepS = 1e-3, kLargestRtol = 0.1;
-  if (options.integrator_options.fixed_step_s > kLargestStepS)
-    throw InputError("--step " + cl.value("--step") +
-                     ": w2's step must be at most 0.001 s (1e-5 s is the default; a felt contact "
-                     "lasts a few milliseconds)");
-  if (options.integrator_options.fixed_step_s > 0.1 * options.duration_s)
-    throw InputError("--step " + cl.value("--step") +
-                     ": at least 10 steps must fit in --duration " + cl.value("--duration"));
-  if (options.integrator_options.relative_tolerance > kLargestRtol)
+  if (cl.has("--step")) {
+    if (options.integrator_options.fixed_step_s > kLargestStepS)
+      throw InputError("--step " + cl.value("--step") +
+                       ": w2's step must be at most 0.001 s (1e-5 s is the default; a felt "
+                       "contact lasts a few milliseconds)");
+    if (options.integrator_options.fixed_step_s > 0.1 * options.duration_s)
+      throw InputError("--step " + cl.value("--step") +
+                       ": at least 10 steps must fit in --duration " + cl.value("--duration"));
+  }
+  if (cl.has("--rtol") && options.integrator_options.relative_tolerance > kLargestRtol)
     throw InputError("--rtol " + cl.value("--rtol") +
                      ": a relative tolerance must be at most 0.1 (1e-6 is the default)");
+  // absolute tolerance on angles (rad) and rates (rad/s): a hundredth of the relative one, as
+  // the bench's references take it
   options.integrator_options.absolute_tolerance =
       1e-2 * options.integrator_options.relative_tolerance;
   options.sample_interval_s = cl.positive_number_or("--sample-interval", 1e-4);

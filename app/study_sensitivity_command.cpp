@@ -6,6 +6,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <utility>
 
 #include "action_setup.h"
 #include "analysis/sensitivity.h"
@@ -150,7 +151,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   // the repetition limit is no smooth function of a screw: it can jump between two regimes
   // (the grand's halfway stroke repeats to about 13 Hz, or to 22-24 Hz once let-off is closer:
   // README, Limits, F4), and a chirp's limit is the frequency of one of its cycles, so variants
-  // can share a value. A change of several hertz to one side only is such a jump.
+  // can share a value. A change of several hertz is such a jump.
   const auto repetition =
       std::find(result.metrics.begin(), result.metrics.end(), "max_repetition_hz");
   if (repetition != result.metrics.end()) {

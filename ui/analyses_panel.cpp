@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
+#include <QEvent>
 #include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -597,6 +598,11 @@ void AnalysesPanel::fit_table_columns() {
   const int widest_name = table_->viewport()->width() * 11 / 20;
   if (widest_name > 0 && table_->columnWidth(0) > widest_name)
     table_->setColumnWidth(0, widest_name);
+}
+
+void AnalysesPanel::changeEvent(QEvent* event) {
+  QWidget::changeEvent(event);
+  if (event->type() == QEvent::FontChange) fit_summary();  // the class text scale
 }
 
 void AnalysesPanel::resizeEvent(QResizeEvent* event) {

@@ -25,6 +25,7 @@ class QTableWidget;
 class QTabWidget;
 class QScrollArea;
 class QResizeEvent;
+class QEvent;
 
 namespace pat::ui {
 
@@ -81,6 +82,8 @@ class AnalysesPanel : public QWidget {
  protected:
   /// Refits the summary's height to the new width.
   void resizeEvent(QResizeEvent* event) override;
+  /// Refits the summary's height to a new font (View › Larger text).
+  void changeEvent(QEvent* event) override;
 
  signals:
   /// The user asked to export these plots (the window owns the file dialog and the size).

@@ -267,7 +267,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
         progress_->hide();
         deregulate_button_->setText(tr("Deregulation demo"));
-        const std::string id = deregulation_setting_->currentData().toString().toStdString();
+        const std::string& id = demo_setting_;  // as the demo ran, whatever is chosen now
         const int index = model_ ? model_->setting_index(id) : -1;
         const bool mm = index < 0 || model_->regulation[index].unit == "mm";
         for (const DeregulationSample& s : result.samples)
@@ -748,15 +748,15 @@ void MainWindow::set_adjuster(const std::string& name, double mm) {
 
 void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
-  // at rest, before anything was played (the window's launch, Start from rest while paused):
-  // the action settles with the new setting at once, as a technician sees it after a turn of
-  // the screw (a capstan turned up lifts the hammer); in a run paused later, it acts as the run
-  // goes on, which the status line says (the drawing stays as it was)
+  // at rest, before anything was played (the window's launch, an action opened, a restart
+  // still finding its rest): the action settles with the new setting at once, as a technician
+  // sees it after a turn of the screw (a capstan turned up lifts the hammer); in a run played
+  // and paused (even rewound to its start), it acts as the run goes on, which the status line
+  // says (the drawing and the recorded run stay as they were)
   const bool at_rest = !practising_ && !controller_->playing() && !controller_->replaying() &&
-                       !controller_->run_stopped() && controller_->has_frame() &&
-                       controller_->current_frame().t <= 0.0;
+                       !controller_->run_stopped() && controller_->at_start();
   if (at_rest) {
-    controller_->restart(model_, run_controls_->input_form()->spec());  // the form shows what runs
+    controller_->restart(model_, controller_->run_spec());  // the run's own input, not the form's
     hold_at_rest();
   } else {
     controller_->change_model(model_);
@@ -787,6 +787,7 @@ void MainWindow::run_deregulation_demo() {
   if (!model_ || deregulation_runner_->running()) return;
   DeregulationOptions options;
   options.setting = deregulation_setting_->currentData().toString().toStdString();
+  demo_setting_ = options.setting;
   options.rate_mm_per_s = deregulation_rate_->value();
   options.frequency_hz = 3.0;
   options.duration_s = 10.0;
@@ -809,7 +810,7 @@ void MainWindow::set_deregulation_demo(const std::string& setting, double rate_m
 }
 
 void MainWindow::show_deregulation_result(const DeregulationResult& result) {
-  const std::string id = deregulation_setting_->currentData().toString().toStdString();
+  const std::string& id = demo_setting_;
   const QString setting = setting_title(id);  // in words, as the panel names it
   const int index = model()->setting_index(id);
   const QString unit =

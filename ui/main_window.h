@@ -188,6 +188,7 @@ class MainWindow : public QMainWindow {
   QString running_input_;        ///< what drives the key (PlaybackController::inputChanged)
   QString running_input_shown_;  ///< what the status line names for the frames being played
   bool setting_waits_ = false;   ///< a setting changed while paused in a run, not yet played
+  std::string demo_setting_;     ///< the setting the running (or last) deregulation demo moves
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

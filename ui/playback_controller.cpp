@@ -42,6 +42,7 @@ PlaybackController::~PlaybackController() {
 void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
                                  const std::string& input_spec) {
   model_ = std::move(model);
+  run_spec_ = input_spec;
   ++run_id_;
   history_.clear();
   stopped_ = false;

@@ -26,6 +26,10 @@ class PlaybackController : public QObject {
 
   /// Starts a new run of `model` under `input_spec` ("" = no finger) from rest at t = 0.
   void restart(std::shared_ptr<const ActionModel> model, const std::string& input_spec);
+  /// The input SPEC the current run was started with.
+  const std::string& run_spec() const { return run_spec_; }
+  /// Nothing of the current run computed past its start yet (restarted, or held at rest).
+  bool at_start() const { return history_.empty() || history_.last_time() <= 0.0; }
   /// Plays recorded frames (an analysis result such as the deregulation demo) instead of a
   /// live run; playback stops at the last frame.
   void replay(std::vector<Frame> frames);
@@ -112,6 +116,7 @@ class PlaybackController : public QObject {
 
   FrameHistory history_;
   std::shared_ptr<const ActionModel> model_;
+  std::string run_spec_;
   int run_id_ = 0;
   double full_dip_rad_ = 0.0;
   bool playing_ = false;

@@ -275,11 +275,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
         const bool check = session_->tests_are_checks();
         held_readings_ = [this, name, symptoms, seen, used, check] {
           if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
-            // "nothing" as far as a technician's gauges tell (engine: noticeable_difference),
-            // which the regulation panel's ±0.05 mm tolerances are finer than: said, so that a
-            // correction 0.07 mm off is not read as exact
-            symptoms_->addItem(tr("%1: nothing differs from a regulated action as far as a gauge "
-                                  "tells (0.1 mm at rest, 0.25 mm in a slow press)%2.")
+            // "nothing" as far as a technician's gauge or eye tells (engine:
+            // noticeable_difference), which the regulation panel's ±0.05 mm tolerances are finer
+            // than: said, so that a correction 0.07 mm off is not read as exact
+            symptoms_->addItem(tr("%1: nothing differs from a regulated action as far as a "
+                                  "technician's gauge or eye tells%2.")
                                    .arg(name, readings_text(seen)));
           for (const Symptom& s : symptoms)
             symptoms_->addItem(name + ": " + QString::fromStdString(s.text));

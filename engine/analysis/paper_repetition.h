@@ -27,8 +27,9 @@ std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& 
 /// this sweep's 17.5 Hz is above both, a known limit of this model (README, Limits)." Within
 /// kPaperAgreementHz of the span of the two it "agrees"; above an "at least" experiment it
 /// agrees with that bound; a sweep that found no limit up to `f_max_hz` is compared by that
-/// bound. `settings`: the action's adjusters turned from regulation (adjuster_settings_text;
-/// "regulated" or empty when none): a deregulated action's difference is put down to them, not
+/// bound. `settings`: the action's adjusters turned from regulation (regulation_state:
+/// "regulated", or empty, when every setting reads within tolerance): a deregulated action's
+/// difference is put down to them, not
 /// to the model. Empty when the paper gives no figure or the sweep has no maximum, but for the
 /// upright's halfway stroke without one, which says why (no repetition lever).
 std::string compare_with_paper(const SweepResult& result, const std::string& kind, double f_max_hz,

@@ -82,8 +82,8 @@ struct MetricJump {
   int side = 0;  ///< −1: the adjuster at −step, +1: at +step
   double value = 0.0;
 };
-/// A change of the repetition limit taken as a jump between regimes: several hertz to one side
-/// (ten chirp cycles' spacing at 13 Hz and 1 Hz/s), where the screws' smooth effects move it by
+/// A change of the repetition limit taken as a jump between regimes: several hertz (about forty
+/// chirp cycles' spacing at 13 Hz and 1 Hz/s), where the screws' smooth effects move it by
 /// tenths.
 inline constexpr double kRepetitionJumpHz = 3.0;
 /// Every such variant of metric `metric`, in the rows' order (− before +); NaN values left out.

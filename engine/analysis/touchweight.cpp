@@ -114,10 +114,12 @@ double key_arm(const ActionModel& model, ActionDynamics& dynamics, const DofVect
 /// measured from there would be another window of the stroke. It is weighed from where its back
 /// rail just touches instead, held there with the other parts in balance: a front-heavy key's
 /// balance weight comes out below 0 g (it must be held up). `settled`: the action's rest, when
-/// it found one; `sunk_mm`: how far the key front had sunk from the back rail by itself (0 when
-/// it rests there, NaN when it did not settle).
+/// it found one, or why not (`unsettled`); `sunk_mm`: how far the key front had sunk from the
+/// back rail by itself (0 when it rests there or within 0.01 mm of it, NaN when it did not
+/// settle).
 RestState key_on_back_rail(const ActionModel& action, ActionDynamics& dynamics,
-                           const std::optional<RestState>& settled, double& sunk_mm) {
+                           const std::optional<RestState>& settled, const std::string& unsettled,
+                           double& sunk_mm) {
   sunk_mm = 0.0;
   const int back_rail = action.landmarks.key_rest_contact;
   const int key = action.landmarks.key;
@@ -129,8 +131,8 @@ RestState key_on_back_rail(const ActionModel& action, ActionDynamics& dynamics,
       return *settled;
   } else if (back_rail < 0) {
     throw std::runtime_error(
-        "touchweight: the action does not come to rest, and its preset "
-        "names no back rail (landmarks.contacts.key_rest) to hold the key on");
+        "touchweight: " + unsettled +
+        " (and the preset names no back rail, landmarks.contacts.key_rest, to hold the key on)");
   }
   // the other parts' rest with the key on its back rail: the same action with the key's weight
   // moved as far behind its pin as its front lies before it, which settles there (the key's own
@@ -174,6 +176,8 @@ RestState key_on_back_rail(const ActionModel& action, ActionDynamics& dynamics,
                        dynamics.point_position(key, action.landmarks.key_front, settled->q).y()) *
                           1e3
                     : std::nan("");
+  // micrometres (a back rail just unloaded) are no sinking to speak of
+  if (std::isfinite(sunk_mm) && sunk_mm < 0.01) sunk_mm = 0.0;
   return start;
 }
 
@@ -212,15 +216,20 @@ TouchweightResult measure_touchweight(const ActionModel& action, const Touchweig
         "touchweight: the measuring window must run from a positive dip to a "
         "larger one with at least two positions");
   std::optional<RestState> settled;
+  std::string unsettled;  // why no rest was found
   try {
     settled = find_rest_state(action);
-  } catch (const std::runtime_error&) {
+  } catch (const InputError&) {
+    throw;  // a broken model is said as such
+  } catch (const std::runtime_error& e) {
     // a key weighted near its balance may hover and never settle: weighed from its back rail
+    unsettled = e.what();
   }
   ActionDynamics rest_dynamics(action, nullptr);
   TouchweightResult result;
   // the measurement starts from the key on its back rail (a front-heavy key held up there)
-  const RestState rest = key_on_back_rail(action, rest_dynamics, settled, result.key_sinks_mm);
+  const RestState rest =
+      key_on_back_rail(action, rest_dynamics, settled, unsettled, result.key_sinks_mm);
   const Body& key_body = action.bodies[key];
   const double front_arm =
       key_arm(action, rest_dynamics, rest.q,

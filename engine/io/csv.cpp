@@ -185,11 +185,12 @@ CsvTable read_csv(const std::string& path) {
       if (table.columns.size() == 1) {
         for (const char separator : {';', '\t'}) {
           if (table.columns.front().find(separator) == std::string::npos) continue;
-          throw InputError(
-              located_message(path, line_label(line_number),
-                              std::string("the columns are separated by ") +
-                                  (separator == ';' ? "semicolons" : "tabs") +
-                                  "; expected commas (time_s,key_angle_deg) and a decimal point"));
+          throw InputError(located_message(
+              path, line_label(line_number),
+              separator == ';' ? "the columns are separated by semicolons; expected commas "
+                                 "(time_s,key_angle_deg) and a decimal point"
+                               : "the columns are separated by tabs; expected commas "
+                                 "(time_s,key_angle_deg)"));
         }
       }
       if (all_numbers) {

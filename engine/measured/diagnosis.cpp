@@ -568,6 +568,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     for (std::size_t i = 0; i < r.at_rest.size(); ++i)
       r.at_rest[i] = r.discrepancies.phase_of_sample[i] == "rest";
     r.baseline_alignment = referenced_to_rest(fitted, r.at_rest);
+    r.baseline_fitted_rss = fitted.rss;
     if (r.baseline_alignment.angle_offset_deg != fitted.angle_offset_deg)
       r.discrepancies = find_discrepancies(prepared[j].data, r.baseline, r.baseline_alignment,
                                            r.measured_events, r.noise_deg);

@@ -84,7 +84,8 @@ struct TrialReport {
   /// The baseline aligned with its angle offset taken at rest (referenced_to_rest; the fits and
   /// the gain use align()'s least-squares offset): residual, offset and Σ r² as shown.
   Alignment baseline_alignment;
-  std::vector<bool> at_rest;  ///< the samples of the baseline's rest phase
+  std::vector<bool> at_rest;         ///< the samples of the baseline's rest phase
+  double baseline_fitted_rss = 0.0;  ///< Σ r² with align()'s least-squares offset (the fits')
   ModelTrace baseline;
   std::vector<MeasuredEvent> measured_events;
   TrialDiscrepancies discrepancies;

@@ -96,7 +96,8 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"noise_deg", r.noise_deg},
          {"time_offset_ms", r.baseline_alignment.time_offset_s * 1e3},
          {"angle_offset_deg", r.baseline_alignment.angle_offset_deg},
-         {"baseline_rms_deg", std::sqrt(r.baseline_alignment.rss /
+         // as the whole diagnosis's baseline and gain take it: with the least-squares offset
+         {"baseline_rms_deg", std::sqrt(r.baseline_fitted_rss /
                                         static_cast<double>(r.baseline_alignment.residual.size()))},
          {"phases", phases},
          {"features", features},

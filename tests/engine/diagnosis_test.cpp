@@ -235,16 +235,23 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
             "acceleration");
 }
 
+// A model hammer at rest for `rest_s`, then rising at `rate_deg_per_s`: `samples` + 1 points
+// on a 0.1 ms grid, the key still.
+ModelTrace rest_then_rise(double rest_s, double rate_deg_per_s, int samples) {
+  ModelTrace m;
+  m.dt = 1e-4;
+  for (int i = 0; i <= samples; ++i) {
+    const double t = i * m.dt;
+    m.hammer_deg.push_back(t < rest_s ? 0.0 : rate_deg_per_s * (t - rest_s));
+    m.key_deg.push_back(0.0);
+  }
+  return m;
+}
+
 TEST(Alignment, TheAngleOffsetIsTakenWhereTheActionRests) {
   // a model at rest for 10 ms, then a rise of 20°; the "measurement" reads 0.2° high (its
   // calibration) and, during the rise, a further 3° low (what the model gets wrong there)
-  ModelTrace m;
-  m.dt = 1e-4;
-  for (int i = 0; i <= 1000; ++i) {
-    const double t = i * m.dt;
-    m.hammer_deg.push_back(t < 0.01 ? 0.0 : 200.0 * (t - 0.01));
-    m.key_deg.push_back(0.0);
-  }
+  const ModelTrace m = rest_then_rise(0.01, 200.0, 1000);
   MeasuredTrial trial;
   std::vector<bool> at_rest;
   for (int i = 0; i <= 200; ++i) {
@@ -275,13 +282,7 @@ TEST(Discrepancies, EachPhaseHasItsOwnNoise) {
   // against 0.02 deg): each phase's noise is estimated from its own samples. A model at rest for
   // 0.2 s, then rising at 100 deg/s; the measurement is the model plus seeded Gaussian noise of
   // 0.2 deg at rest and 0.02 deg after.
-  ModelTrace m;
-  m.dt = 1e-4;
-  for (int i = 0; i <= 4000; ++i) {
-    const double t = i * m.dt;
-    m.hammer_deg.push_back(t < 0.2 ? 0.0 : 100.0 * (t - 0.2));
-    m.key_deg.push_back(0.0);
-  }
+  ModelTrace m = rest_then_rise(0.2, 100.0, 4000);
   m.escapement_t = {0.5};  // after the trace: the rise is all acceleration
   MeasuredTrial trial;
   trial.path = "noisy_rest.csv";

@@ -131,6 +131,15 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QVERIFY2(window.statusBar()->currentMessage().contains("the setting just changed acts as the "
                                                          "run goes on"),
            qPrintable(window.statusBar()->currentMessage()));
+  // rewound to the start of the run played, a screw turned keeps the recorded run (it acts as
+  // the run goes on): only a run not yet played restarts at rest with it
+  c->rewind();
+  c->rewind();
+  QCOMPARE(c->current_frame().t, 0.0);
+  const double recorded = c->history().last_time();
+  window.set_adjuster("hammer_blow", 0.5);
+  QTest::qWait(100);
+  QVERIFY(c->history().last_time() >= recorded);
   // another action chosen from the menu opens at rest and waits too
   QAction* upright = nullptr;
   for (QAction* a : window.findChildren<QAction*>())
