@@ -262,42 +262,38 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
   connect(deregulation_runner_, &DeregulationRunner::progress, this,
           [this](double f) { progress_->setValue(int(100 * f)); });
-  connect(
-      deregulation_runner_, &DeregulationRunner::finished, this,
-      [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
-        progress_->hide();
-        deregulate_button_->setText(tr("Deregulation demo"));
-        const std::string& id = demo_setting_;  // as the demo ran, whatever is chosen now
-        const int index = model_ ? model_->setting_index(id) : -1;
-        const bool mm = index < 0 || model_->regulation[index].unit == "mm";
-        for (const DeregulationSample& s : result.samples)
-          regulation_->log(tr("t = %1 s  adjuster %2 mm  %3 reads %4")
-                               .arg(s.t, 0, 'f', 2)
-                               .arg(std::abs(s.adjuster_mm) < 5e-3 ? 0.0 : s.adjuster_mm, 0, 'f', 2)
-                               .arg(setting_title(id))
-                               .arg(std::isfinite(s.measured)
-                                        ? QString::number(s.measured, 'f', mm ? 2 : 3) +
-                                              (mm ? tr(" mm") : QString())
-                                        : tr("no reading")));
-        regulation_->log(result.stop_cause.empty()
-                             ? tr("Deregulation: the action held to the end.")
-                             : tr("Deregulation stopped at t = %1 s: %2")
-                                   .arg(result.stop_t, 0, 'f', 2)
-                                   .arg(QString::fromStdString(result.stop_cause)));
-        show_deregulation_result(result);
-        if (!frames.empty()) {
-          // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
-          // a slower speed than 1/10 becomes 1/10 (the class can slow it down again)
-          const auto& speeds = RunControls::speeds();
-          const auto tenth = std::find(speeds.begin(), speeds.end(), 0.1);
-          if (tenth != speeds.end() && controller_->speed() < 0.1)
-            run_controls_->set_speed_index(static_cast<int>(tenth - speeds.begin()));
-          controller_->replay(frames);
-          statusBar()->showMessage(
-              tr("Replaying the deregulation demo; Start from rest "
-                 "returns to the live action."));
-        }
-      });
+  connect(deregulation_runner_, &DeregulationRunner::finished, this,
+          [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
+            progress_->hide();
+            deregulate_button_->setText(tr("Deregulation demo"));
+            const std::string& id = demo_setting_;  // as the demo ran, whatever is chosen now
+            const int index = model_ ? model_->setting_index(id) : -1;
+            const std::string unit = index >= 0 ? model_->regulation[index].unit : "mm";
+            for (const DeregulationSample& s : result.samples)
+              regulation_->log(tr("t = %1 s  adjuster %2 mm  %3 reads %4")
+                                   .arg(s.t, 0, 'f', 2)
+                                   .arg(adjuster_mm_text(s.adjuster_mm, 2))
+                                   .arg(setting_title(id))
+                                   .arg(setting_value_text(s.measured, unit)));
+            regulation_->log(result.stop_cause.empty()
+                                 ? tr("Deregulation: the action held to the end.")
+                                 : tr("Deregulation stopped at t = %1 s: %2")
+                                       .arg(result.stop_t, 0, 'f', 2)
+                                       .arg(QString::fromStdString(result.stop_cause)));
+            show_deregulation_result(result);
+            if (!frames.empty()) {
+              // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
+              // a slower speed than 1/10 becomes 1/10 (the class can slow it down again)
+              const auto& speeds = RunControls::speeds();
+              const auto tenth = std::find(speeds.begin(), speeds.end(), 0.1);
+              if (tenth != speeds.end() && controller_->speed() < 0.1)
+                run_controls_->set_speed_index(static_cast<int>(tenth - speeds.begin()));
+              controller_->replay(frames);
+              statusBar()->showMessage(
+                  tr("Replaying the deregulation demo; Start from rest "
+                     "returns to the live action."));
+            }
+          });
 
   build_practice();
   build_menus();
@@ -832,7 +828,7 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
         {tr("%1 at t = %2 s (adjuster %3 mm)")
              .arg(setting)
              .arg(s.t, 0, 'f', 2)
-             .arg(std::abs(s.adjuster_mm) < 5e-3 ? 0.0 : s.adjuster_mm, 0, 'f', 2),
+             .arg(adjuster_mm_text(s.adjuster_mm, 2)),
          std::isfinite(s.measured) ? QString::number(s.measured, 'f', 3) : tr("no reading"), unit});
   }
   // the adjuster as the run turned it, from its trace: steps of rate × interval (the paper's

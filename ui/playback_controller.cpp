@@ -213,8 +213,9 @@ void PlaybackController::drain() {
   std::vector<Frame> frames = worker_->take_frames();
   for (Frame& f : frames)
     if (f.run == run_id_) history_.append(std::move(f));
-  // a single step waiting for its frame, or a run started paused waiting for its first one
-  if (!playing_ && !history_.empty() && (display_time_ > current_.t || !has_frame_) &&
+  // a single step waiting for its frame (a run started paused shows its first one in
+  // on_run_started)
+  if (!playing_ && !history_.empty() && display_time_ > current_.t &&
       history_.last_time() >= display_time_ - 1e-12)
     show_time(display_time_);
 }

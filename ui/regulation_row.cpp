@@ -16,18 +16,6 @@ namespace {
 
 constexpr double kSliderStepsPerMm = 100.0;  // 0.01 mm per slider step
 
-// A setting's value with its unit; a fraction (the upright's damper lift: of the hammer's
-// travel) reads as a percentage.
-QString format_value(double value, const std::string& unit) {
-  const bool fraction = unit == "fraction";
-  if (fraction) value *= 100.0;
-  const int decimals = fraction ? 1 : 2;
-  // a value that rounds to zero reads "0.00", not "-0.00"
-  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
-  const QString number = QString::number(value, 'f', decimals);
-  return number + " " + (fraction ? QStringLiteral("%") : QString::fromStdString(unit));
-}
-
 }  // namespace
 
 RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* setting,
@@ -70,8 +58,8 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
     // "10.00 ± 0.05 mm": the unit once, after the tolerance (the dock stays narrow)
     target_label_->setText(
         tr("%1 ± %2")
-            .arg(format_value(setting_->target, setting_->unit).section(' ', 0, 0))
-            .arg(format_value(setting_->tolerance, setting_->unit)));
+            .arg(setting_value_text(setting_->target, setting_->unit).section(' ', 0, 0))
+            .arg(setting_value_text(setting_->tolerance, setting_->unit)));
   else
     target_label_->setText(tr("no target"));
   target_label_->setToolTip(setting_ ? QString::fromStdString(setting_->source) : QString());
@@ -148,7 +136,7 @@ void RegulationRow::show_reading() {
   }
   const std::string unit = setting_ ? setting_->unit : std::string("mm");
   if (measured_) {
-    measured_label_->setText(format_value(*measured_, unit));
+    measured_label_->setText(setting_value_text(*measured_, unit));
     measured_label_->setToolTip(tr("Measured the way a technician measures it"));
     const bool bad = out_of_tolerance();
     measured_label_->setStyleSheet(

@@ -2,7 +2,6 @@
 
 #include <QMetaObject>
 #include <QtConcurrent/QtConcurrentRun>
-#include <cmath>
 #include <exception>
 
 #include "background_pool.h"
@@ -26,24 +25,19 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
   future_ = QtConcurrent::run(background_pool(), [this, model] {
     RegulationOptions options;
     options.on_step = [this, model](const RegulationStep& s) {
-      // as the panel reads: the setting in words, millimetres to 0.01 mm (a fraction to 0.001),
-      // the adjuster signed, and a setting that could not be read there said so
+      // as the panel reads: the setting in words, its reading as the panel shows it, the
+      // adjuster signed
       std::string unit = "mm";
       for (const RegulationSetting& r : model->regulation)
         if (r.name == s.setting) unit = r.unit;
-      const int decimals = unit == "mm" ? 2 : 3;
-      const QString suffix = unit == "mm" ? tr(" mm") : QString();
-      const auto reading = [&](double x) {
-        return std::isfinite(x) ? QString::number(x, 'f', decimals) + suffix : tr("no reading");
-      };
-      const double adjuster = std::abs(s.adjuster_mm) < 5e-4 ? 0.0 : s.adjuster_mm;
+      const QString adjuster = adjuster_mm_text(s.adjuster_mm, 3);
       const QString line =
           tr("pass %1  %2: adjuster %3 mm → reads %4 (target %5)%6")
               .arg(s.pass)
               .arg(setting_title(s.setting))
-              .arg(QString::number(adjuster, 'f', 3).prepend(adjuster > 0.0 ? "+" : ""))
-              .arg(reading(s.measured))
-              .arg(reading(s.target))
+              .arg((s.adjuster_mm >= 5e-4 ? "+" : "") + adjuster)
+              .arg(setting_value_text(s.measured, unit))
+              .arg(setting_value_text(s.target, unit))
               .arg(s.note.empty() ? QString() : " — " + QString::fromStdString(s.note));
       QMetaObject::invokeMethod(this, [this, line] { emit stepDone(line); });
       return !cancelled_.load();

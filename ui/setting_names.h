@@ -3,7 +3,9 @@
 // its description before the ':' that says which way is positive.
 #pragma once
 
+#include <QObject>
 #include <QString>
+#include <cmath>
 #include <string>
 
 #include "model/action_model.h"
@@ -13,6 +15,25 @@ namespace pat::ui {
 /// "key_dip" → "key dip", "let_off" → "let-off" (the technicians' spelling).
 inline QString setting_title(const std::string& name) {
   return QString::fromStdString(setting_words(name));
+}
+
+/// A setting's reading with its unit, as the regulation panel shows it: millimetres to 0.01 mm,
+/// a fraction (the upright's damper lift: of the hammer's travel) as a percentage to 0.1 %, a
+/// value that rounds to zero without a sign, and "no reading" where there is none (NaN).
+inline QString setting_value_text(double value, const std::string& unit) {
+  if (!std::isfinite(value)) return QObject::tr("no reading");
+  const bool fraction = unit == "fraction";
+  if (fraction) value *= 100.0;
+  const int decimals = fraction ? 1 : 2;
+  if (std::abs(value) < 0.5 * std::pow(10.0, -decimals)) value = 0.0;
+  const QString number = QString::number(value, 'f', decimals);
+  return number + " " + (fraction ? QStringLiteral("%") : QString::fromStdString(unit));
+}
+
+/// An adjuster's offset (mm) to `decimals` places, one that rounds to zero without a sign.
+inline QString adjuster_mm_text(double mm, int decimals) {
+  if (std::abs(mm) < 0.5 * std::pow(10.0, -decimals)) mm = 0.0;
+  return QString::number(mm, 'f', decimals);
 }
 
 /// The part the adjuster turns, from its description ("let-off button: + screws it down …" →
