@@ -5,14 +5,30 @@
 
 #include "analysis/action_comparison.h"
 #include "analysis_entries.h"
+#include "input_words.h"
 #include "model/preset_loader.h"
 
 namespace pat::ui {
 namespace {
 
-// The blows offered: the command line's default (mezzo-forte) first.
-const QStringList kInputs = {"force:pulse:10:100", "force:pulse:4:150", "force:pulse:25:80",
-                             "mass:1kg"};
+// The blows offered (SPECs): the command line's default (mezzo-forte) first.
+const char* const kInputs[] = {"force:pulse:10:100", "force:pulse:4:150", "force:pulse:25:80",
+                               "mass:1kg"};
+
+/// The choices as the panel shows them: the blows in words.
+QStringList input_choices() {
+  QStringList words;
+  for (const char* spec : kInputs) words << input_in_words(spec);
+  return words;
+}
+
+/// The SPEC of a chosen blow (its words, or a SPEC as settings saved before the words); the
+/// default one if none matches.
+std::string input_spec_of(const QString& choice) {
+  for (const char* spec : kInputs)
+    if (choice == input_in_words(spec) || choice == spec) return spec;
+  return kInputs[0];
+}
 
 QString limit_text(const std::optional<SweepResult>& sweep) {
   if (!sweep) return QObject::tr("not run");
@@ -24,7 +40,7 @@ QString limit_text(const std::optional<SweepResult>& sweep) {
 
 AnalysisResult comparison_result(const ComparisonResult& r, const ComparisonOptions& o) {
   AnalysisResult result;
-  const QString input = QString::fromStdString(o.input);
+  const QString input = input_in_words(o.input);
   struct Overlaid {
     const char* column;
     QString title, tab, y_title;
@@ -139,9 +155,9 @@ AnalysisEntry action_comparison_entry() {
       "can repeat (full and half stroke)");
   const AnalysisParameter input = AnalysisParameter::choice(
       "input", QObject::tr("Blow"),
-      QObject::tr("force:pulse:N:MS is N newtons on the key front for MS milliseconds; mass:1kg "
-                  "is a 1 kg mass laid on the key"),
-      kInputs);
+      QObject::tr("A force at the key front held a few milliseconds (a blow), or a 1 kg mass laid "
+                  "on the key"),
+      input_choices());
   const AnalysisParameter limits = AnalysisParameter::choice(
       "limits", QObject::tr("Repetition limits"),
       QObject::tr("also sweep each action's repetition frequency (a few seconds)"),
@@ -160,7 +176,7 @@ AnalysisEntry action_comparison_entry() {
   e.make = [](std::shared_ptr<const ActionModel> model,
               const AnalysisSettings& settings) -> AnalysisTask {
     ComparisonOptions options;
-    options.input = settings.value("input", kInputs.front()).toString().toStdString();
+    options.input = input_spec_of(settings.value("input").toString());
     options.repetition_limits = settings.value("limits").toString() != QObject::tr("without");
     options.f_max_full_hz = options.f_max_half_hz =
         settings.value("f_max_hz", options.f_max_half_hz).toDouble();

@@ -488,6 +488,10 @@ void MainWindow::build_shortcuts() {
   });
   shortcut(QKeySequence(Qt::Key_Right), [this] { controller_->step_forward(); });
   shortcut(QKeySequence(Qt::Key_Left), [this] { controller_->step_back(); });
+  shortcut(QKeySequence(Qt::SHIFT | Qt::Key_Right),
+           [this] { controller_->step_forward(PlaybackController::kLargeStepFrames); });
+  shortcut(QKeySequence(Qt::SHIFT | Qt::Key_Left),
+           [this] { controller_->step_back(PlaybackController::kLargeStepFrames); });
   shortcut(QKeySequence(Qt::Key_Home), [this] { controller_->rewind(); });
 }
 

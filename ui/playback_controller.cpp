@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "input_words.h"
+
 namespace pat::ui {
 namespace {
 
@@ -54,7 +56,7 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   worker_->set_sample_interval(sample_interval());
   key_played_ = false;
   inputs_.clear();
-  note_input(0.0, input_spec.empty() ? tr("no finger") : QString::fromStdString(input_spec));
+  note_input(0.0, input_in_words(input_spec), input_spec);
   const RunSetup setup{model_, input_spec, run_id_};
   QMetaObject::invokeMethod(
       worker_, [w = worker_, setup] { w->start_run(setup); }, Qt::QueuedConnection);
@@ -83,23 +85,27 @@ void PlaybackController::replay(std::vector<Frame> frames) {
   play();
 }
 
-void PlaybackController::note_input(double from_t, const QString& what) {
-  inputs_.push_back({from_t, what});
+void PlaybackController::note_input(double from_t, const QString& what, const std::string& spec) {
+  inputs_.push_back({from_t, what, spec});
   emit inputChanged(what);
 }
 
 QString PlaybackController::input_at(double t) const {
   // the last input that had started by t (the first, if t lies before every one)
-  QString what = inputs_.empty() ? QString() : inputs_.front().second;
-  for (const auto& [from_t, text] : inputs_)
-    if (from_t <= t) what = text;
+  QString what = inputs_.empty() ? QString() : inputs_.front().words;
+  for (const InputRecord& input : inputs_)
+    if (input.from_t <= t) what = input.words;
   return what;
 }
 
 QString PlaybackController::inputs_text() const {
   QStringList parts;
-  for (const auto& [from_t, text] : inputs_)
-    parts << (parts.isEmpty() ? text : tr("from t = %1 s %2").arg(from_t, 0, 'f', 4).arg(text));
+  for (const InputRecord& input : inputs_) {
+    QString text = input.words;
+    if (!input.spec.empty()) text += QString(" [%1]").arg(QString::fromStdString(input.spec));
+    parts << (parts.isEmpty() ? text
+                              : tr("from t = %1 s %2").arg(input.from_t, 0, 'f', 4).arg(text));
+  }
   return parts.join("; ");
 }
 
@@ -116,8 +122,7 @@ void PlaybackController::strike(const std::string& force_spec) {
   seek(history_.last_time());
   worker_->request_blow(force_spec);
   key_played_ = false;
-  note_input(history_.last_time(),
-             tr("a blow struck (%1)").arg(QString::fromStdString(force_spec)));
+  note_input(history_.last_time(), tr("%1, struck").arg(input_in_words(force_spec)), force_spec);
   play();
 }
 
@@ -138,7 +143,7 @@ void PlaybackController::release_key() {
   if (stopped_ || replay_ || !key_played_) return;
   worker_->request_blow("force:const:0");
   key_played_ = false;
-  note_input(history_.last_time(), tr("the key let go"));
+  note_input(history_.last_time(), tr("the key let go"), "force:const:0");
   play();
 }
 
@@ -156,24 +161,29 @@ void PlaybackController::pause() {
   emit playingChanged(false);
 }
 
-void PlaybackController::step_forward() {
+void PlaybackController::step_forward(int frames) {
   pause();
-  if (history_.empty()) return;
+  if (history_.empty() || frames < 1) return;
   const std::size_t i = history_.index_at(display_time_);
-  if (i + 1 < history_.size()) {
-    show_time(history_.at(i + 1).t);
+  const std::size_t wanted = i + static_cast<std::size_t>(frames);
+  if (wanted < history_.size()) {
+    show_time(history_.at(wanted).t);
   } else if (!stopped_ && !replay_) {
-    // the next frame is computed; drain() shows it when it arrives
-    display_time_ = history_.last_time() + sample_interval();
+    // the frames still missing are computed; drain() shows the last one when it arrives
+    const std::size_t missing = wanted - (history_.size() - 1);
+    display_time_ = history_.last_time() + static_cast<double>(missing) * sample_interval();
     worker_->set_target_time(display_time_);
+  } else {
+    show_time(history_.last_time());  // a stopped run or a replay: as far as it goes
   }
 }
 
-void PlaybackController::step_back() {
+void PlaybackController::step_back(int frames) {
   pause();
-  if (history_.empty()) return;
+  if (history_.empty() || frames < 1) return;
   const std::size_t i = history_.index_at(display_time_);
-  show_time(history_.at(i > 0 ? i - 1 : 0).t);
+  const std::size_t back = static_cast<std::size_t>(frames);
+  show_time(history_.at(i > back ? i - back : 0).t);
 }
 
 void PlaybackController::rewind() {
@@ -186,9 +196,9 @@ void PlaybackController::rewind() {
   const double first = history_.first_time();
   const double now = has_frame_ ? current_.t : display_time();
   double target = first;
-  for (const auto& entry : inputs_) {
-    const double before = entry.first - kLeadS;
-    if (entry.first > first && before > first && before < now - 1e-9)
+  for (const InputRecord& input : inputs_) {
+    const double before = input.from_t - kLeadS;
+    if (input.from_t > first && before > first && before < now - 1e-9)
       target = std::max(target, before);
   }
   show_time(target);
@@ -268,8 +278,8 @@ void PlaybackController::on_run_started(int run_id, double full_dip_rad, const Q
   full_dip_rad_ = full_dip_rad;
   // what the input's reading means (a CSV's ignored column, its held end) goes with its name
   if (!notes.isEmpty() && inputs_.size() == 1) {
-    inputs_.front().second += tr(" (%1)").arg(notes);
-    emit inputChanged(inputs_.front().second);
+    inputs_.front().words += tr(" (%1)").arg(notes);
+    emit inputChanged(inputs_.front().words);
   }
   drain();
   if (!history_.empty()) show_time(history_.first_time());

@@ -50,9 +50,13 @@ class PlaybackController : public QObject {
 
   void play();
   void pause();
-  /// Paused: one frame forward (computed if needed) or back.
-  void step_forward();
-  void step_back();
+  /// Paused: `frames` frames forward (computed if needed) or back. A frame is the recording
+  /// interval, from 0.01 ms at 1/1000 to 0.2 ms at 1/10 and faster (sample_interval()).
+  void step_forward(int frames = 1);
+  void step_back(int frames = 1);
+  /// The larger step (Shift with the step keys or buttons): enough to cross a blow's escapement,
+  /// drop and check (about 7 ms on the grand) in a few presses at 1/10.
+  static constexpr int kLargeStepFrames = 10;
   /// Paused, just before the last blow struck or key played before the frame shown (2 ms
   /// before it); again, the one before; at last the oldest frame kept.
   void rewind();
@@ -74,7 +78,9 @@ class PlaybackController : public QObject {
   /// What drove the key at simulated time `t` of this run, in inputChanged's words: the run's
   /// input, or a blow struck or the mouse's play from the time it began.
   QString input_at(double t) const;
-  /// Every input of this run in order: "force:pulse:20:40; from t = 1.2345 s a blow struck (…)".
+  /// Every input of this run in order, in words with the SPEC that runs it again where there is
+  /// one: "a 20 N blow held 40 ms [force:pulse:20:40]; from t = 1.2345 s a 12 N blow held 40 ms,
+  /// struck [force:pulse:12:40]".
   QString inputs_text() const;
   /// Redraw timer ticks that showed a new frame, and their count per wall second (measured).
   double redraw_rate_hz() const { return redraw_rate_hz_; }
@@ -103,8 +109,9 @@ class PlaybackController : public QObject {
 
  private:
   void drain();
-  /// Records what drives the key from simulated time `from_t` on, and says so (inputChanged).
-  void note_input(double from_t, const QString& what);
+  /// Records what drives the key from simulated time `from_t` on (in words, and the SPEC where
+  /// there is one), and says so (inputChanged).
+  void note_input(double from_t, const QString& what, const std::string& spec = {});
   void show_time(double t);
   double sample_interval() const;
 
@@ -123,7 +130,12 @@ class PlaybackController : public QObject {
   bool stopped_ = false;
   bool replay_ = false;      // frames from an analysis: no worker behind them
   bool key_played_ = false;  // the mouse drives the key since the last run start or blow
-  std::vector<std::pair<double, QString>> inputs_;  // (from simulated time, what), in order
+  struct InputRecord {
+    double from_t;  // simulated time, s
+    QString words;
+    std::string spec;  // "" where there is none (the mouse's play, a replay)
+  };
+  std::vector<InputRecord> inputs_;  // in order
   double speed_ = 0.1;
   double display_time_ = 0.0;
   double passed_time_ = -1.0;  // frames up to here went to framesPassed

@@ -3,6 +3,7 @@
 #include <QComboBox>
 #include <QEvent>
 #include <QFontMetrics>
+#include <QGuiApplication>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -62,15 +63,24 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   auto* rewind = tool_button(this, QStyle::SP_MediaSkipBackward, tr("Rewind"),
                              tr("Back to just before the last blow struck (Home); again: to the "
                                 "one before, then to the oldest frame kept"));
-  auto* back =
-      tool_button(this, QStyle::SP_MediaSeekBackward, tr("Step back"), tr("One frame back (Left)"));
+  const int large = PlaybackController::kLargeStepFrames;
+  auto* back = tool_button(this, QStyle::SP_MediaSeekBackward, tr("Step back"),
+                           tr("One frame back (Left); with Shift, %1 frames").arg(large));
   play_ = tool_button(this, QStyle::SP_MediaPlay, tr("Play"), tr("Play or pause (P)"));
-  auto* step =
-      tool_button(this, QStyle::SP_MediaSeekForward, tr("Step"), tr("One frame forward (Right)"));
+  auto* step = tool_button(this, QStyle::SP_MediaSeekForward, tr("Step"),
+                           tr("One frame forward (Right); with Shift, %1 frames").arg(large));
   for (QToolButton* b : {rewind, back, play_, step}) bottom->addWidget(b);
   connect(rewind, &QToolButton::clicked, controller_, &PlaybackController::rewind);
-  connect(back, &QToolButton::clicked, controller_, &PlaybackController::step_back);
-  connect(step, &QToolButton::clicked, controller_, &PlaybackController::step_forward);
+  // Shift held while clicking takes the larger step, as with the arrow keys
+  auto frames = [] {
+    return QGuiApplication::keyboardModifiers().testFlag(Qt::ShiftModifier)
+               ? PlaybackController::kLargeStepFrames
+               : 1;
+  };
+  connect(back, &QToolButton::clicked, controller_,
+          [this, frames] { controller_->step_back(frames()); });
+  connect(step, &QToolButton::clicked, controller_,
+          [this, frames] { controller_->step_forward(frames()); });
   connect(play_, &QToolButton::clicked, this, [this] {
     if (controller_->playing())
       controller_->pause();

@@ -103,7 +103,7 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QTest::qWait(300);  // at 1/10 a playing run would be 30 ms on
   QCOMPARE(c->display_time(), 0.0);
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Ready, at rest") &&
-               window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
+               window.statusBar()->currentMessage().contains("with a 20 N blow held 40 ms"),
            qPrintable(window.statusBar()->currentMessage()));
   // a menu entry hovered (its status tip empty) leaves the line as it was: it had cleared it
   QStatusTipEvent hovered{QString()};
@@ -177,6 +177,17 @@ void RunControlsTest::pause_step_and_rewind() {
   QVERIFY(stepped - paused_at < 1e-3);  // one frame, not a run
   c->step_back();
   QVERIFY(c->current_frame().t < stepped);
+  // the larger step (Shift): ten frames forward, computed as needed, and ten back to where it was
+  const double before_large = c->current_frame().t;
+  const std::size_t frame_index = c->history().index_at(before_large);
+  c->step_forward(PlaybackController::kLargeStepFrames);
+  QVERIFY(wait_until([&] {
+    return c->history().size() > frame_index + PlaybackController::kLargeStepFrames &&
+           c->current_frame().t ==
+               c->history().at(frame_index + PlaybackController::kLargeStepFrames).t;
+  }));
+  c->step_back(PlaybackController::kLargeStepFrames);
+  QCOMPARE(c->current_frame().t, before_large);
   // every plot marks the time the action view shows, also after a step back
   for (const PlotPanel* panel : window.plots()->panels())
     QCOMPARE(panel->time_mark().value_or(-1.0), c->current_frame().t);
@@ -187,20 +198,22 @@ void RunControlsTest::pause_step_and_rewind() {
   c->strike("force:pulse:10:20");
   QVERIFY(wait_until([&] { return c->display_time() > struck_at + 0.002; }));
   c->pause();
-  QVERIFY2(window.statusBar()->currentMessage().contains("with a blow struck (force:pulse:10:20)"),
+  QVERIFY2(window.statusBar()->currentMessage().contains("with a 10 N blow held 20 ms, struck"),
            qPrintable(window.statusBar()->currentMessage()));
-  // an exported plot's record names both inputs of its run, the blow with its start
+  // an exported plot's record names both inputs of its run, the blow with its start, in words
+  // and with the SPECs that run them again
   const std::string inputs = window.export_metadata(true).at("input");
-  QVERIFY2(inputs.rfind("force:pulse:20:40; from t = ", 0) == 0 &&
-               inputs.find(" s a blow struck (force:pulse:10:20)") != std::string::npos,
-           inputs.c_str());
+  QVERIFY2(
+      inputs.rfind("a 20 N blow held 40 ms [force:pulse:20:40]; from t = ", 0) == 0 &&
+          inputs.find(" s a 10 N blow held 20 ms, struck [force:pulse:10:20]") != std::string::npos,
+      inputs.c_str());
   // Rewind goes first to just before the blow struck (a class sees it again at once), ...
   c->rewind();
   QVERIFY2(c->current_frame().t < struck_at && c->current_frame().t > struck_at - 0.005,
            qPrintable(QString("rewound to %1 s, the blow struck at %2 s")
                           .arg(c->current_frame().t)
                           .arg(struck_at)));
-  QVERIFY2(window.statusBar()->currentMessage().contains("with force:pulse:20:40"),
+  QVERIFY2(window.statusBar()->currentMessage().contains("with a 20 N blow held 40 ms"),
            qPrintable(window.statusBar()->currentMessage()));
   // ... pressed again, to the run's start
   c->rewind();
@@ -215,8 +228,8 @@ void RunControlsTest::pause_step_and_rewind() {
   c->play();
   QVERIFY(wait_until([&] { return c->current_frame().t > 0.002; }));
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Running") &&
-               window.statusBar()->currentMessage().contains("with force:pulse:20:40") &&
-               !window.statusBar()->currentMessage().contains("blow struck"),
+               window.statusBar()->currentMessage().contains("with a 20 N blow held 40 ms") &&
+               !window.statusBar()->currentMessage().contains("struck"),
            qPrintable(window.statusBar()->currentMessage()));
   c->pause();
   // replay from the history reaches the stepped time again with the same state
@@ -315,7 +328,7 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   const std::map<std::string, std::string> exported = window.export_metadata(true);
   QCOMPARE(exported.at("action"), std::string("grand"));
   QCOMPARE(exported.at("settings"), std::string("let_off=0.5mm"));
-  QCOMPARE(exported.at("input"), std::string("force:pulse:20:40"));
+  QCOMPARE(exported.at("input"), std::string("a 20 N blow held 40 ms [force:pulse:20:40]"));
   QVERIFY(exported.at("preset").find("grand.json") != std::string::npos);
   // an analysis has no run input, and may have run before a slider moved
   QVERIFY(!window.export_metadata(false).count("input"));
