@@ -1,9 +1,11 @@
 #include "action_view.h"
 
 #include <QHash>
+#include <QHelpEvent>
 #include <QMouseEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
@@ -454,6 +456,7 @@ void ActionView::paint_frame(QPainter& painter) {
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
   active_contacts_ = 0;
+  drawn_arrows_.clear();
   for (std::size_t c = 0; c < reading_.contacts.size(); ++c) {
     const ContactReading& r = reading_.contacts[c];
     if (!r.active || r.normal_force <= kShownForceN) continue;
@@ -471,6 +474,7 @@ void ActionView::paint_frame(QPainter& painter) {
     painter.setBrush(Qt::white);
     painter.drawEllipse(at, 5.0, 5.0);
     draw_arrow(painter, at, tip, contact_colour());
+    drawn_arrows_.push_back({static_cast<int>(c), at, tip, r.normal_force, r.friction_force});
     if (r.normal_force >= 0.5 && measurements_)
       force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
                               contact_colour().darker(130), true, false, tip,
@@ -800,6 +804,46 @@ void ActionView::mouseReleaseEvent(QMouseEvent* event) {
     emit keyReleased();
     update();
   }
+}
+
+QString ActionView::arrow_tooltip(const QPointF& at) const {
+  constexpr double kReachPx = 8.0;  // the base circle's radius (5 px) and its pen, with a margin
+  const DrawnArrow* nearest = nullptr;
+  double nearest_px = kReachPx;
+  for (const DrawnArrow& arrow : drawn_arrows_) {
+    // distance from the pointer to the arrow's shaft (base to tip)
+    const QPointF shaft = arrow.tip - arrow.base;
+    const double length2 = QPointF::dotProduct(shaft, shaft);
+    const double along =
+        length2 > 0.0 ? std::clamp(QPointF::dotProduct(at - arrow.base, shaft) / length2, 0.0, 1.0)
+                      : 0.0;
+    const double px = QLineF(at, arrow.base + along * shaft).length();
+    if (px <= nearest_px) {
+      nearest_px = px;
+      nearest = &arrow;
+    }
+  }
+  if (!nearest || !model_ || nearest->contact >= static_cast<int>(model_->contacts.size()))
+    return {};
+  const QString name = QString::fromStdString(model_->contacts[nearest->contact].name);
+  if (!measurements_) return tr("%1: touching").arg(name);
+  QString text = tr("%1: %2 N pressing").arg(name).arg(nearest->normal_force_n, 0, 'f', 1);
+  if (std::abs(nearest->friction_force_n) >= 0.05)
+    text += tr(", %1 N friction").arg(std::abs(nearest->friction_force_n), 0, 'f', 1);
+  return text;
+}
+
+bool ActionView::event(QEvent* event) {
+  if (event->type() == QEvent::ToolTip) {
+    const auto* help = static_cast<QHelpEvent*>(event);
+    const QString text = arrow_tooltip(help->pos());
+    if (!text.isEmpty()) {
+      QToolTip::showText(help->globalPos(), text, this);
+      return true;
+    }
+    // elsewhere the view's own tooltip, if any
+  }
+  return QWidget::event(event);
 }
 
 void ActionView::mouseDoubleClickEvent(QMouseEvent*) {

@@ -74,6 +74,18 @@ class ActionView : public QWidget {
     bool names_part = false;         // a part's name (a fixture, an adjuster), not a force
     int body = -1;                   // a body's name: its index (its point is inside it)
   };
+  /// A force arrow the latest paint drew: its contact, from the contact point to its tip.
+  struct DrawnArrow {
+    int contact = -1;  // index into the model's contacts
+    QPointF base, tip;
+    double normal_force_n = 0.0, friction_force_n = 0.0;
+  };
+  const std::vector<DrawnArrow>& drawn_arrows() const { return drawn_arrows_; }
+  /// What the pointer at `at` (widget px) is over: the contact of the nearest force arrow within
+  /// a few pixels, named with its force ("capstan–whippen heel: 4.4 N pressing, 0.2 N friction";
+  /// the name alone when measurements are hidden), or "" when it is over none. The view's
+  /// tooltip.
+  QString arrow_tooltip(const QPointF& at) const;
   /// The time, gap and finger force readout the latest paint drew along the top.
   const QString& readout() const { return readout_; }
   /// The same labels with where they went, for tests.
@@ -94,6 +106,7 @@ class ActionView : public QWidget {
   void framePainted();
 
  protected:
+  bool event(QEvent* event) override;
   void paintEvent(QPaintEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
   void wheelEvent(QWheelEvent* event) override;
@@ -123,6 +136,7 @@ class ActionView : public QWidget {
   double scale_ = 1000.0;  // px per m
   QPointF offset_;         // widget position of the model origin
   int active_contacts_ = 0;
+  std::vector<DrawnArrow> drawn_arrows_;
   QStringList drawn_labels_;
   std::vector<DrawnLabel> drawn_label_details_;
   QString readout_;

@@ -732,7 +732,7 @@ void MainWindow::show_run_status() {
                                  .arg(name, input));
   else
     statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
-                                "Step back move one frame")
+                                "Step back move one frame, ten with Shift")
                                  .arg(t * 1e3, 0, 'f', 2)
                                  .arg(name, input));
 }

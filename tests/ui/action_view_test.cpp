@@ -70,8 +70,31 @@ void ActionViewTest::a_blow_shows_active_contacts() {
     const auto* f = window.view()->frame();
     return f && f->t > 0.01;
   }));
-  window.view()->repaint();
-  QVERIFY(window.view()->active_contact_count() >= 2);
+  window.controller()->pause();
+  ActionView* view = window.view();
+  view->repaint();
+  QVERIFY(view->active_contact_count() >= 2);
+  // hovering a force arrow names its contact and force; in a practice exercise the name alone
+  // (the newtons would read a hidden setting off), and away from every arrow nothing
+  const auto& arrows = view->drawn_arrows();
+  QCOMPARE(static_cast<int>(arrows.size()), view->active_contact_count());
+  const int capstan = [&] {
+    for (std::size_t c = 0; c < window.model()->contacts.size(); ++c)
+      if (window.model()->contacts[c].name == "capstan–whippen heel") return static_cast<int>(c);
+    return -1;
+  }();
+  const auto pressing = std::find_if(arrows.begin(), arrows.end(),
+                                     [&](const auto& a) { return a.contact == capstan; });
+  QVERIFY2(pressing != arrows.end(), "the capstan pushes the whippen during the press");
+  const QPointF on_shaft = (pressing->base + pressing->tip) / 2.0;
+  const QString tip = view->arrow_tooltip(on_shaft + QPointF(2.0, 0.0));
+  QVERIFY2(tip.startsWith("capstan–whippen heel: ") &&
+               tip.contains(QString("%1 N pressing").arg(pressing->normal_force_n, 0, 'f', 1)),
+           qPrintable(tip));
+  QVERIFY(view->arrow_tooltip(QPointF(2.0, view->height() - 2.0)).isEmpty());
+  view->set_measurements_visible(false);
+  view->repaint();
+  QCOMPARE(view->arrow_tooltip(on_shaft), QString("capstan–whippen heel: touching"));
 }
 
 void ActionViewTest::wheel_zooms_and_right_drag_pans() {
