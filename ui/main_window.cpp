@@ -24,12 +24,14 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <exception>
 
 #include "action_view.h"
 #include "analyses_panel.h"
+#include "background_pool.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
 #include "export_folder.h"
@@ -44,6 +46,7 @@
 #include "plot_panel.h"
 #include "plot_stack.h"
 #include "practice_panel.h"
+#include "regulation/deregulation.h"
 #include "regulation/regulation.h"
 #include "regulation_panel.h"
 #include "regulation_runner.h"
@@ -239,12 +242,23 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   deregulation_setting_->setToolTip(tr("The setting whose adjuster the demo moves"));
   deregulation_rate_ = new QDoubleSpinBox(demo_options);
   deregulation_rate_->setRange(-2.0, 2.0);
-  deregulation_rate_->setSingleStep(0.25);
+  deregulation_rate_->setSingleStep(0.05);
   deregulation_rate_->setValue(1.0);
   deregulation_rate_->setSuffix(tr(" mm/s"));
   deregulation_rate_->setToolTip(
       tr("How fast the adjuster moves (in steps every 0.5 s); the sign is the adjuster's own "
-         "direction"));
+         "direction. A setting chosen gets the speed that moves the setting itself about 2 mm a "
+         "second, a millimetre per turn: the adjusters' ratios differ (the grand's let-off "
+         "button moves the let-off about 6 mm per mm, its capstan the blow about 12)"));
+  demo_rate_watcher_ = new QFutureWatcher<double>(this);
+  connect(demo_rate_watcher_, &QFutureWatcherBase::finished, this, [this] {
+    if (demo_rate_request_running_ != demo_rate_request_) return;  // overridden or superseded
+    const double rate = demo_rate_watcher_->result();
+    if (std::isfinite(rate))
+      deregulation_rate_->setValue(std::copysign(rate, deregulation_rate_->value()));
+  });
+  connect(deregulation_setting_, &QComboBox::currentIndexChanged, this,
+          &MainWindow::suggest_demo_rate);
   demo_row->addWidget(new QLabel(tr("Demo moves"), demo_options));
   demo_row->addWidget(deregulation_setting_, 1);
   demo_row->addWidget(new QLabel(tr("at"), demo_options));
@@ -607,11 +621,15 @@ void MainWindow::open_action(const std::string& name_or_path) {
   {
     // the settings in words, their identifiers as the items' data
     const QString demo = deregulation_setting_->currentData().toString();
-    deregulation_setting_->clear();
-    for (const RegulationSetting& r : model->regulation)
-      deregulation_setting_->addItem(setting_title(r.name), QString::fromStdString(r.name));
-    const int keep = deregulation_setting_->findData(demo.isEmpty() ? "hammer_blow" : demo);
-    deregulation_setting_->setCurrentIndex(std::max(0, keep));
+    {
+      const QSignalBlocker quiet(deregulation_setting_);  // one rate suggestion, below
+      deregulation_setting_->clear();
+      for (const RegulationSetting& r : model->regulation)
+        deregulation_setting_->addItem(setting_title(r.name), QString::fromStdString(r.name));
+      const int keep = deregulation_setting_->findData(demo.isEmpty() ? "hammer_blow" : demo);
+      deregulation_setting_->setCurrentIndex(std::max(0, keep));
+    }
+    suggest_demo_rate();
   }
   fit_regulation_dock(false);
   // and again once the new rows have their fonts and sizes (their size requests are events of
@@ -790,7 +808,9 @@ void MainWindow::run_deregulation_demo() {
   demo_setting_ = options.setting;
   options.rate_mm_per_s = deregulation_rate_->value();
   options.frequency_hz = 3.0;
-  options.duration_s = 10.0;
+  // long enough for the suggested rates to reach what they show: the grand's capstan at 0.15
+  // mm/s jams the jack in the repetition lever's window after 10.5 s
+  options.duration_s = 15.0;
   options.step_interval_s = kDeregulationStepS;
   regulation_->log(tr("Deregulation demo: %1, its adjuster %2 mm/s, key at %3 Hz…")
                        .arg(deregulation_setting_->currentText())
@@ -806,7 +826,22 @@ void MainWindow::set_deregulation_demo(const std::string& setting, double rate_m
   const int index = deregulation_setting_->findData(QString::fromStdString(setting));
   if (index < 0) throw InputError("deregulation demo: unknown setting '" + setting + "'");
   deregulation_setting_->setCurrentIndex(index);
+  ++demo_rate_request_;  // the rate given, not the one suggested for the setting
   deregulation_rate_->setValue(rate_mm_per_s);
+}
+
+void MainWindow::suggest_demo_rate() {
+  const std::string setting = deregulation_setting_->currentData().toString().toStdString();
+  if (!model_ || setting.empty()) return;
+  demo_rate_request_running_ = ++demo_rate_request_;
+  demo_rate_watcher_->setFuture(
+      QtConcurrent::run(background_pool(), [model = model_, setting]() -> double {
+        try {
+          return demo_adjuster_rate(*model, setting);
+        } catch (const std::exception&) {
+          return std::nan("");  // the rate box keeps what it had
+        }
+      }));
 }
 
 void MainWindow::show_deregulation_result(const DeregulationResult& result) {

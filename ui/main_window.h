@@ -4,6 +4,7 @@
 // banner over the action, never in a dialog.
 #pragma once
 
+#include <QFutureWatcher>
 #include <QMainWindow>
 #include <QSize>
 #include <functional>
@@ -73,11 +74,16 @@ class MainWindow : public QMainWindow {
   /// Starts "Regulate automatically" (the button does the same).
   void regulate_automatically();
   /// The deregulation demo (paper section 7.2): the chosen setting's adjuster moved at the
-  /// chosen rate (default: hammer_blow, the capstan screwed up 1 mm/s) while the key plays a
+  /// chosen rate (default: hammer_blow, the capstan screwed up 0.15 mm/s) while the key plays a
   /// 3 Hz sine, then replayed, with the measured value over time in the Analyses tab.
   void run_deregulation_demo();
-  /// Chooses the demo's setting and rate (mm/s), as the controls next to its button do.
+  /// Chooses the demo's setting and rate (mm/s), as the controls next to its button do (the rate
+  /// given wins over the one suggested for the setting).
   void set_deregulation_demo(const std::string& setting, double rate_mm_per_s);
+  /// The demo's rate box: a setting chosen there gets the adjuster speed that moves it about
+  /// 2 mm a second (engine demo_adjuster_rate, computed in the background; the sign kept).
+  QDoubleSpinBox* deregulation_rate() const { return deregulation_rate_; }
+  bool demo_rate_pending() const { return demo_rate_watcher_->isRunning(); }
   DeregulationRunner* deregulation_runner() const { return deregulation_runner_; }
   /// The practice mode (issue 7): its dock, shown from the Practice menu.
   PracticePanel* practice() const { return practice_; }
@@ -160,6 +166,11 @@ class MainWindow : public QMainWindow {
   QPushButton* deregulate_button_;
   QComboBox* deregulation_setting_;
   QDoubleSpinBox* deregulation_rate_;
+  /// Suggests the demo's rate for the chosen setting (demo_adjuster_rate), in the background.
+  void suggest_demo_rate();
+  QFutureWatcher<double>* demo_rate_watcher_;
+  int demo_rate_request_ = 0;          ///< the latest suggestion asked for (or overridden)
+  int demo_rate_request_running_ = 0;  ///< the one the watcher's future computes
   QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;

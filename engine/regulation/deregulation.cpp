@@ -1,5 +1,6 @@
 #include "regulation/deregulation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -25,6 +26,29 @@ double measured_or_nan(const ActionModel& model, const std::string& setting,
 }
 
 }  // namespace
+
+double demo_adjuster_rate(const ActionModel& model, const std::string& setting) {
+  const int setting_index = model.setting_index(setting);
+  if (setting_index < 0) measure_setting(model, setting);             // throws, naming the settings
+  constexpr double kFallback = 1.0, kSlowest = 0.05, kFastest = 2.0;  // mm/s
+  constexpr double kSteps = 20.0;  // rounded to 1/20 mm/s (divided, so 0.35 is the double 0.35)
+  const RegulationSetting& target = model.regulation[static_cast<std::size_t>(setting_index)];
+  const double wanted =
+      target.unit == "mm" ? kDemoSettingRatePerS_mm : kDemoSettingRatePerS_fraction;
+  const Adjuster& adjuster = model.adjusters[model.adjuster_index(setting)];
+  const double here = measured_or_nan(model, setting, nullptr);
+  if (!std::isfinite(here)) return kFallback;
+  for (const double probe_mm : {kDemoProbe_mm, -kDemoProbe_mm}) {
+    const double moved = adjuster.value + probe_mm * 1e-3;
+    if (moved < adjuster.min || moved > adjuster.max) continue;
+    const double there = measured_or_nan(with_adjuster(model, setting, moved), setting, nullptr);
+    const double ratio = std::abs(there - here) / kDemoProbe_mm;  // setting unit per mm
+    if (!std::isfinite(ratio) || ratio < 1e-6) continue;
+    const double rate = std::clamp(wanted / ratio, kSlowest, kFastest);
+    return std::max(kSlowest, std::round(rate * kSteps) / kSteps);
+  }
+  return kFallback;
+}
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options) {
   const int setting_index = model.setting_index(options.setting);

@@ -47,6 +47,22 @@ struct DeregulationResult {
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options);
 
+/// How fast the setting itself should change in a demo a class can follow: 2 mm per second for
+/// a setting in mm (a millimetre per 0.5 s screw turn), 0.1 per second for a fraction (the
+/// upright's damper lift).
+inline constexpr double kDemoSettingRatePerS_mm = 2.0;
+inline constexpr double kDemoSettingRatePerS_fraction = 0.1;
+
+/// The adjuster speed (mm/s, positive: the adjuster's own + direction) at which setting
+/// `setting` of `model` changes by about the rate above: that rate over |Δm / Δa|, the change of
+/// the measured setting for a probe of kDemoProbe_mm of its adjuster from where it stands (+,
+/// or − where + cannot be read or changes nothing), within [0.05, 2] mm/s and rounded to
+/// 0.05 mm/s. The adjuster-to-setting ratios differ widely: about 1 for key dip, 6 for the
+/// grand's let-off (mm of hammer per mm of button), 12 for its hammer blow (capstan). 1 mm/s
+/// when the setting cannot be measured on this action. Throws InputError for an unknown setting.
+inline constexpr double kDemoProbe_mm = 0.25;
+double demo_adjuster_rate(const ActionModel& model, const std::string& setting);
+
 /// The adjuster's position over time as the run turned it, from the trace's time_s and
 /// adjuster_mm: a staircase (two points at the time of each turn, the old and the new position,
 /// and the last position held to the trace's end), for a plot. Empty without those columns.

@@ -620,5 +620,45 @@ TEST(DeregulationPlot, AdjusterStepsAreAStaircase) {
   EXPECT_TRUE(adjuster_steps(CsvTable{}).t_s.empty());  // no trace: nothing to draw
 }
 
+// The demo's default adjuster speed moves the setting itself about 2 mm per second (0.1 per
+// second for a fraction), whatever the adjuster's ratio to it: measured one second of screw
+// turns away (rate × 1 s of adjuster), the setting has moved by that much. The tolerance, 35 %,
+// covers the rate's rounding to 0.05 mm/s (up to 17 % at the slowest rate, 0.15 mm/s) and
+// the response's curvature between the 0.25 mm probe and the second's turn; where the rate is
+// held at its 2 mm/s limit, the setting moves less than asked. A setting that runs out of room
+// within the second (the upright's lost motion, 0.3 mm, closes to nothing, and then the blow
+// shrinks instead) reads the same after half the turns and after all of them: it must have got
+// there no faster than asked.
+TEST(Regulation, DemoRateMovesEachSettingAboutTwoMillimetresASecond) {
+  for (const char* action : {"grand", "upright"}) {
+    const ActionModel model = shipped(action);
+    for (const RegulationSetting& setting : model.regulation) {
+      const double rate = demo_adjuster_rate(model, setting.name);
+      const double wanted =
+          setting.unit == "mm" ? kDemoSettingRatePerS_mm : kDemoSettingRatePerS_fraction;
+      const double before = measure_setting(model, setting.name);
+      const double half = measure_at(model, setting.name, rate * 0.5);
+      const double after = measure_at(model, setting.name, rate * 1.0);
+      const double moved = std::abs(after - before);
+      const bool out_of_room = std::abs(after - half) < 0.05 * wanted;
+      std::printf("%s %s: %.2f mm/s moves it %.3f %s in 1 s%s\n", action, setting.name.c_str(),
+                  rate, moved, setting.unit.c_str(), out_of_room ? " (out of room)" : "");
+      EXPECT_GE(rate, 0.05);
+      EXPECT_LE(rate, 2.0);
+      if (rate < 2.0 && !out_of_room)
+        EXPECT_NEAR(moved, wanted, 0.35 * wanted) << action << " " << setting.name;
+      else
+        EXPECT_LE(moved, 1.35 * wanted) << action << " " << setting.name;
+    }
+  }
+  // the ratios differ as the adjusters do: the grand's let-off button moves the let-off about 6
+  // times its own travel, the capstan the blow about 12 times, the punchings the dip once
+  const ActionModel grand = shipped("grand");
+  EXPECT_LT(demo_adjuster_rate(grand, "let_off"), 0.5);
+  EXPECT_LT(demo_adjuster_rate(grand, "hammer_blow"), 0.25);
+  EXPECT_GT(demo_adjuster_rate(grand, "key_dip"), 1.5);
+  EXPECT_THROW(demo_adjuster_rate(grand, "bridle"), InputError);  // an upright setting
+}
+
 }  // namespace
 }  // namespace pat

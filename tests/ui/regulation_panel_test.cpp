@@ -4,6 +4,7 @@
 // broken preset is refused with a message naming the field.
 #include "regulation_panel.h"
 
+#include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
@@ -25,6 +26,7 @@
 #include "measurement_service.h"
 #include "model/preset_loader.h"
 #include "playback_controller.h"
+#include "regulation/deregulation.h"
 #include "regulation_runner.h"
 #include "run_controls.h"
 #include "ui_test_support.h"
@@ -42,6 +44,7 @@ class RegulationPanelTest : public QObject {
   void regulate_automatically_shows_steps_and_can_be_cancelled();
   void deregulation_demo_can_be_cancelled_and_replays();
   void deregulation_demo_shows_the_blow_shrinking();
+  void deregulation_demo_rate_follows_the_setting();
   void saved_state_loads_back();
   void broken_preset_names_the_field();
 };
@@ -323,6 +326,38 @@ void RegulationPanelTest::broken_preset_names_the_field() {
     QVERIFY2(message.contains("broken.json") && message.contains("mass_g"), e.what());
   }
   QCOMPARE(window.model().get(), before.get());  // the running action is kept
+}
+
+// A setting chosen for the demo gets the adjuster speed that moves it about 2 mm a second (the
+// engine's demo_adjuster_rate, measured on the window's action): the grand's let-off button
+// (about 6 mm of let-off per mm) slower than its punchings (about 1), keeping the sign the
+// teacher chose; a rate given with the setting (set_deregulation_demo) is kept.
+void RegulationPanelTest::deregulation_demo_rate_follows_the_setting() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  QDoubleSpinBox* rate = window.deregulation_rate();
+  QVERIFY(wait_until([&] { return !window.demo_rate_pending(); }));
+  QTest::qWait(50);  // the watcher's finished signal is queued
+  const pat::ActionModel& model = *window.model();
+  const double let_off = pat::demo_adjuster_rate(model, "let_off");
+  const double key_dip = pat::demo_adjuster_rate(model, "key_dip");
+  QCOMPARE(rate->value(), pat::demo_adjuster_rate(model, "hammer_blow"));
+  QComboBox* setting = nullptr;
+  for (QComboBox* box : window.findChildren<QComboBox*>())
+    if (box->findData("let_off") >= 0 && box->findData("checking") >= 0) setting = box;
+  QVERIFY(setting);
+  rate->setValue(-rate->value());  // the teacher turns it the other way
+  setting->setCurrentIndex(setting->findData("let_off"));
+  QVERIFY(wait_until([&] { return std::abs(rate->value() + let_off) < 1e-9; }));
+  setting->setCurrentIndex(setting->findData("key_dip"));
+  QVERIFY(wait_until([&] { return std::abs(rate->value() + key_dip) < 1e-9; }));
+  QVERIFY2(key_dip > 1.5 && let_off < 0.5, qPrintable(QString("%1, %2").arg(key_dip).arg(let_off)));
+  // a rate given with the setting wins over the suggestion still being computed
+  window.set_deregulation_demo("drop", 1.25);
+  QVERIFY(wait_until([&] { return !window.demo_rate_pending(); }));
+  QTest::qWait(50);
+  QCOMPARE(rate->value(), 1.25);
 }
 
 QTEST_MAIN(RegulationPanelTest)
