@@ -162,6 +162,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (playing) setting_waits_ = false;
     show_run_status();
   });
+  // moved through the run after a screw turned while paused: the status line names the step
+  // keys again (frames computed since act with the new setting; those before never had it)
+  connect(controller_, &PlaybackController::navigated, this, [this] {
+    if (!setting_waits_) return;
+    setting_waits_ = false;
+    show_run_status();
+  });
   connect(controller_, &PlaybackController::runRestarted, this, [this] {
     setting_waits_ = false;
     end_practice_test_shown();  // another run replaces the test on screen
@@ -737,10 +744,15 @@ void MainWindow::show_run_status() {
                                 "action; Start from rest runs again")
                                  .arg(controller_->display_time() * 1e3, 0, 'f', 2)
                                  .arg(name, input));
-  else if (t <= 0.0 && !controller_->replaying())
-    // the first frame of a run not yet played (the window's launch, a rewind to the start)
+  else if (t <= 0.0 && !controller_->replaying() && controller_->at_start())
+    // the first frame of a run not yet played (the window's launch, an action opened)
     statusBar()->showMessage(tr("Ready, at rest (%1 with %2): Play or P runs it, Strike or the "
                                 "space bar strikes a blow, keys 1–5 strike pp to ff")
+                                 .arg(name, input));
+  else if (t <= 0.0 && !controller_->replaying())
+    // a run played and rewound to its start: Play shows it again from the recorded frames
+    statusBar()->showMessage(tr("Rewound to the start (%1 with %2): Play or P plays the run "
+                                "again, Step moves one frame, ten with Shift")
                                  .arg(name, input));
   else if (setting_waits_)
     // a screw turned while paused in a run: the parts move to it only as time goes on

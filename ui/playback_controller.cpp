@@ -114,7 +114,7 @@ void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) 
   model_ = model;
   worker_->request_model(std::move(model));
   // a paused run still shows the change: compute one frame further
-  if (!playing_ && !stopped_) step_forward();
+  if (!playing_ && !stopped_) advance(1);
 }
 
 void PlaybackController::strike(const std::string& force_spec) {
@@ -162,6 +162,11 @@ void PlaybackController::pause() {
 }
 
 void PlaybackController::step_forward(int frames) {
+  advance(frames);
+  emit navigated();
+}
+
+void PlaybackController::advance(int frames) {
   pause();
   if (history_.empty() || frames < 1) return;
   const std::size_t i = history_.index_at(display_time_);
@@ -184,6 +189,7 @@ void PlaybackController::step_back(int frames) {
   const std::size_t i = history_.index_at(display_time_);
   const std::size_t back = static_cast<std::size_t>(frames);
   show_time(history_.at(i > back ? i - back : 0).t);
+  emit navigated();
 }
 
 void PlaybackController::rewind() {
@@ -202,11 +208,13 @@ void PlaybackController::rewind() {
       target = std::max(target, before);
   }
   show_time(target);
+  emit navigated();
 }
 
 void PlaybackController::seek(double t) {
   if (history_.empty()) return;
   show_time(std::clamp(t, history_.first_time(), history_.last_time()));
+  emit navigated();
 }
 
 void PlaybackController::set_speed(double speed) {

@@ -100,6 +100,9 @@ class PlaybackController : public QObject {
   /// The run could not start (its input or model refused); the message says why.
   void runRefused(const QString& message);
   void realtimeFactorChanged(double factor);
+  /// The user moved through the run while paused (a step, a step back, a rewind or a seek), not
+  /// the one frame computed to show a changed setting.
+  void navigated();
 
  private slots:
   void tick();
@@ -109,6 +112,8 @@ class PlaybackController : public QObject {
 
  private:
   void drain();
+  /// Paused: `frames` frames forward, computed if needed (step_forward without its navigated()).
+  void advance(int frames);
   /// Records what drives the key from simulated time `from_t` on (in words, and the SPEC where
   /// there is one), and says so (inputChanged).
   void note_input(double from_t, const QString& what, const std::string& spec = {});

@@ -131,11 +131,20 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QVERIFY2(window.statusBar()->currentMessage().contains("the setting just changed acts as the "
                                                          "run goes on"),
            qPrintable(window.statusBar()->currentMessage()));
+  // stepping on from there, the line names the step keys again (it had kept the screw's words
+  // through every step and rewind)
+  QTest::qWait(100);  // the frame computed to show the change
+  c->step_forward();
+  QVERIFY2(window.statusBar()->currentMessage().contains("Step and Step back move one frame"),
+           qPrintable(window.statusBar()->currentMessage()));
   // rewound to the start of the run played, a screw turned keeps the recorded run (it acts as
   // the run goes on): only a run not yet played restarts at rest with it
   c->rewind();
   c->rewind();
   QCOMPARE(c->current_frame().t, 0.0);
+  // not "Ready, at rest" as at launch: the run was played, and Play shows it again
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("Rewound to the start"),
+           qPrintable(window.statusBar()->currentMessage()));
   const double recorded = c->history().last_time();
   window.set_adjuster("hammer_blow", 0.5);
   QTest::qWait(100);
