@@ -20,6 +20,14 @@ bool field(const QStringList& fields, int i, QString& shown) {
   return ok;
 }
 
+/// "a" or "an" before a number as it is read aloud: "an 8 N blow", "an 11 N blow", "an 18 kg",
+/// but "a 1 kg mass", "a 110 N", "a 0.5 kg".
+QString article_for(const QString& number) {
+  const QString whole = number.section('.', 0, 0);
+  const bool vowel = number.startsWith('8') || whole == "11" || whole == "18";
+  return vowel ? QStringLiteral("an") : QStringLiteral("a");
+}
+
 QString stroke_words(const QStringList& fields, int i) {
   return fields.value(i) == "half" ? tr("half stroke, between full dip and half release")
                                    : tr("full stroke");
@@ -43,12 +51,15 @@ QString input_in_words(const std::string& spec) {
     value.chop(grams ? 1 : 2);
     bool ok = false;
     const double kg = value.toDouble(&ok) * (grams ? 1e-3 : 1.0);
-    if (ok) return tr("a %1 kg mass laid on the key").arg(QString::number(kg, 'g', 3));
+    if (ok) {
+      const QString shown = QString::number(kg, 'g', 3);
+      return tr("%1 %2 kg mass laid on the key").arg(article_for(shown), shown);
+    }
   } else if (kind == "force:const" && f.size() == 3 && field(f, 2, a)) {
     if (a == "0") return tr("the key let go");
     return tr("a steady %1 N on the key").arg(a);
   } else if (kind == "force:pulse" && f.size() == 4 && field(f, 2, a) && field(f, 3, b)) {
-    return tr("a %1 N blow held %2 ms").arg(a, b);
+    return tr("%1 %2 N blow held %3 ms").arg(article_for(a), a, b);
   } else if (kind == "force:double" && f.size() == 5 && field(f, 2, a) && field(f, 3, b) &&
              field(f, 4, c)) {
     return tr("two %1 N blows held %2 ms, %3 ms apart").arg(a, b, c);
@@ -59,7 +70,7 @@ QString input_in_words(const std::string& spec) {
     return tr("the key played ever faster, %1 to %2 times a second over %3 s (%4)")
         .arg(a, b, c, stroke_words(f, 5));
   } else if (kind == "motion:press" && f.size() == 3 && field(f, 2, a)) {
-    return tr("a slow press to the bottom in %1 s, held there").arg(a);
+    return tr("a slow press to the bottom in %1 s, held there").arg(a);  // "a slow": no number
   }
   return text;
 }

@@ -16,6 +16,13 @@ class InputWordsTest : public QObject {
     QCOMPARE(input_in_words("force:const:5"), QString("a steady 5 N on the key"));
     QCOMPARE(input_in_words("force:const:0"), QString("the key let go"));
     QCOMPARE(input_in_words("force:pulse:20:40"), QString("a 20 N blow held 40 ms"));
+    // the article as the number is read aloud
+    QCOMPARE(input_in_words("force:pulse:8:80"), QString("an 8 N blow held 80 ms"));
+    QCOMPARE(input_in_words("force:pulse:11:40"), QString("an 11 N blow held 40 ms"));
+    QCOMPARE(input_in_words("force:pulse:18.5:40"), QString("an 18.5 N blow held 40 ms"));
+    QCOMPARE(input_in_words("force:pulse:110:40"), QString("a 110 N blow held 40 ms"));
+    QCOMPARE(input_in_words("mass:0.8kg"), QString("a 0.8 kg mass laid on the key"));
+    QCOMPARE(input_in_words("mass:8kg"), QString("an 8 kg mass laid on the key"));
     QCOMPARE(input_in_words("force:double:20:30:60"),
              QString("two 20 N blows held 30 ms, 60 ms apart"));
     QCOMPARE(input_in_words("motion:sine:12.5:half"),
