@@ -13,6 +13,7 @@
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QProgressBar>
+#include <QProgressDialog>
 #include <QPushButton>
 #include <QScreen>
 #include <QScrollArea>
@@ -31,6 +32,7 @@
 
 #include "action_view.h"
 #include "analyses_panel.h"
+#include "animation_export.h"
 #include "background_pool.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
@@ -377,6 +379,8 @@ void MainWindow::build_menus() {
             tr("the run trace"), tr("CSV (*.csv)"), true,
             [this](const QString& path) { export_run_trace(path.toStdString()); });
       }));
+  exports->addAction(tr("Action &animation (PNG pictures)…"), this,
+                     [this] { export_animation_from_menu(); });
   exports->addAction(tr("Export &size…"), this,
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
@@ -976,6 +980,61 @@ void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QS
       run_plots, [&](const QString& path) {
         export_plots(plots, path, export_size_, export_metadata(run_plots));
       });
+}
+
+AnimationOptions MainWindow::animation_options() const {
+  AnimationOptions options;
+  // what the plots show (the time span followed, or the whole run), at the speed chosen: played
+  // at 25 pictures a second, the sequence runs as the window played it
+  const auto [from, to] = plots_->panels().front()->x_range();
+  options.from_s = from;
+  options.to_s = to;
+  options.interval_s = std::max(controller_->speed() / kAnimationPicturesPerS, 1e-5);
+  options.size = export_size_;
+  options.focus = view_->focus();
+  options.labels = view_->labels_visible();
+  options.measurements = view_->measurements_visible();
+  return options;
+}
+
+int MainWindow::export_animation(const QString& folder,
+                                 const std::function<bool(int, int)>& progress) {
+  return export_action_animation(controller_->history(), animation_options(), folder, progress);
+}
+
+void MainWindow::export_animation_from_menu() {
+  const bool was_playing = controller_->playing();
+  if (was_playing) controller_->pause();  // the run as it was when Export was chosen
+  const QString folder = QFileDialog::getExistingDirectory(
+      this, tr("Export the action's animation into an empty folder"), export_folder());
+  if (folder.isEmpty()) {
+    if (was_playing) controller_->play();
+    return;
+  }
+  try {
+    const AnimationOptions options = animation_options();
+    const int total = static_cast<int>(animation_times(controller_->history(), options).size());
+    QProgressDialog progress(tr("Drawing the action's pictures…"), tr("Stop"), 0, total, this);
+    progress.setWindowModality(Qt::WindowModal);
+    progress.setMinimumDuration(300);
+    const int written = export_animation(folder, [&progress](int done, int) {
+      progress.setValue(done);  // (processes the window's events: it stays responsive)
+      return !progress.wasCanceled();
+    });
+    progress.setValue(total);
+    remember_export_folder(folder);
+    statusBar()->showMessage(
+        tr("Exported %1 pictures of the action (t = %2 to %3 ms, every %4 "
+           "ms; at 25 a second they play at the speed chosen) and frames.csv "
+           "to %5")
+            .arg(written)
+            .arg(options.from_s * 1e3, 0, 'f', 1)
+            .arg((options.from_s + (written - 1) * options.interval_s) * 1e3, 0, 'f', 1)
+            .arg(options.interval_s * 1e3, 0, 'g', 3)
+            .arg(folder));
+  } catch (const std::exception& e) {
+    QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
+  }
 }
 
 void MainWindow::export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,

@@ -12,6 +12,7 @@
 #include <memory>
 #include <string>
 
+#include "animation_export.h"
 #include "model/action_model.h"
 
 class QAction;
@@ -105,6 +106,13 @@ class MainWindow : public QMainWindow {
   /// Writes the run's frames with every trace column (run_trace_export.h) to `path`. Throws
   /// InputError (no frames, a path that cannot be written).
   void export_run_trace(const std::string& path) const;
+  /// The action's animation (Export menu) into an existing empty folder, without the dialogs:
+  /// the time span the plots show, one picture every speed/25 of simulated time (played at 25 a
+  /// second they run at the speed chosen), at the export size, framed and labelled as the view.
+  /// Throws InputError (animation_export.h). Returns the pictures written.
+  int export_animation(const QString& folder,
+                       const std::function<bool(int done, int total)>& progress = {});
+  static constexpr double kAnimationPicturesPerS = 25.0;
 
  protected:
   void closeEvent(QCloseEvent* event) override;
@@ -124,6 +132,8 @@ class MainWindow : public QMainWindow {
   void open_preset_from_menu();
   /// Asks for a file and exports `plots` to it; `run_plots`: the run's plots (the run pauses
   /// while the file is chosen, and a CSV names the input), not an analysis result's.
+  AnimationOptions animation_options() const;
+  void export_animation_from_menu();
   void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
                         bool run_plots);
   /// Asks for a file (filter `filter`; the run paused meanwhile when `pause_run`), writes it

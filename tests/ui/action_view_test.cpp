@@ -3,14 +3,21 @@
 // escapement and the checking.
 #include "action_view.h"
 
+#include <QDateTime>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QImage>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <algorithm>
 #include <cmath>
 #include <map>
 #include <optional>
 
+#include "core/error.h"
 #include "dynamics/action_dynamics.h"
 #include "frame_history.h"
 #include "label_placer.h"
@@ -38,6 +45,7 @@ class ActionViewTest : public QObject {
   void close_up_labels_name_their_own_part_and_hold_still();
   void larger_text_for_a_class_enlarges_the_plots_and_panels();
   void the_readout_says_when_the_felt_is_on_the_string();
+  void the_animation_exports_numbered_pictures();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -540,6 +548,49 @@ void ActionViewTest::the_readout_says_when_the_felt_is_on_the_string() {
   view.grab();
   QVERIFY2(view.readout().contains(" mm") && !view.readout().contains("felt on the string"),
            qPrintable(view.readout()));
+}
+
+// Export > Action animation: the time span the plots show, one picture every speed/25 of
+// simulated time at the export size, numbered, with frames.csv; a folder that holds an earlier
+// sequence is refused before anything is written (nothing overwritten), as is a missing folder.
+void ActionViewTest::the_animation_exports_numbered_pictures() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.start("force:pulse:20:40");
+  pat::ui::PlaybackController* controller = window.controller();
+  QVERIFY(wait_until([&] { return controller->history().last_time() > 0.03; }, 60000));
+  controller->pause();
+  QTemporaryDir dir;
+  const int written = window.export_animation(dir.path());
+  const QStringList pictures = QDir(dir.path()).entryList({"frame_*.png"}, QDir::Files, QDir::Name);
+  QCOMPARE(pictures.size(), written);
+  QVERIFY2(written >= 8, qPrintable(QString::number(written)));  // 30 ms and more, every 4 ms
+  QCOMPARE(pictures.front(), QString("frame_0000.png"));
+  const QImage first(dir.filePath(pictures.front())), last(dir.filePath(pictures.back()));
+  QCOMPARE(first.size(), QSize(1600, 1000));  // the export size, whatever the screen's ratio
+  QVERIFY(first != last);                     // the hammer has moved
+  QFile table(dir.filePath("frames.csv"));
+  QVERIFY(table.open(QIODevice::ReadOnly | QIODevice::Text));
+  const QStringList rows = QString::fromUtf8(table.readAll()).trimmed().split('\n');
+  table.close();
+  QCOMPARE(rows.size(), written + 1);
+  QCOMPARE(rows.front(), QString("frame,time_s"));
+  // at 1/10, 25 pictures a second play it at the speed chosen: 4 ms apart
+  const double t1 = rows[1].section(',', 1).toDouble(), t2 = rows[2].section(',', 1).toDouble();
+  QVERIFY2(std::abs((t2 - t1) - controller->speed() / 25.0) < 1e-12,
+           qPrintable(QString("%1 s apart").arg(t2 - t1)));
+  // again into the same folder: refused, naming what is in the way, and nothing rewritten
+  const QDateTime written_at = QFileInfo(dir.filePath("frame_0000.png")).lastModified();
+  QTest::qWait(20);
+  try {
+    window.export_animation(dir.path());
+    QFAIL("an export over an earlier one was not refused");
+  } catch (const pat::InputError& e) {
+    QVERIFY2(QString(e.what()).contains("frames.csv: already there"), e.what());
+  }
+  QCOMPARE(QFileInfo(dir.filePath("frame_0000.png")).lastModified(), written_at);
+  QVERIFY_THROWS_EXCEPTION(pat::InputError, window.export_animation(dir.filePath("no_such")));
 }
 
 QTEST_MAIN(ActionViewTest)
