@@ -838,9 +838,15 @@ bool ActionView::event(QEvent* event) {
     const auto* help = static_cast<QHelpEvent*>(event);
     const QString text = arrow_tooltip(help->pos());
     if (!text.isEmpty()) {
-      QToolTip::showText(help->globalPos(), text, this);
+      // kept only while the pointer stays near where it was asked for (the arrows move as the
+      // run plays)
+      constexpr int kStayPx = 8;
+      QToolTip::showText(
+          help->globalPos(), text, this,
+          QRect(help->pos() - QPoint(kStayPx, kStayPx), QSize(2 * kStayPx, 2 * kStayPx)));
       return true;
     }
+    QToolTip::hideText();  // an arrow's name shown before does not stay over empty space
     // elsewhere the view's own tooltip, if any
   }
   return QWidget::event(event);

@@ -5,6 +5,7 @@
 
 #include "analysis/action_comparison.h"
 #include "analysis_entries.h"
+#include "core/error.h"
 #include "input_words.h"
 #include "model/preset_loader.h"
 
@@ -22,12 +23,12 @@ QStringList input_choices() {
   return words;
 }
 
-/// The SPEC of a chosen blow (its words, or a SPEC as settings saved before the words); the
-/// default one if none matches.
+/// The SPEC of a chosen blow (its words, as the panel offers them). Throws InputError for words
+/// that name none (the panel shows it).
 std::string input_spec_of(const QString& choice) {
   for (const char* spec : kInputs)
-    if (choice == input_in_words(spec) || choice == spec) return spec;
-  return kInputs[0];
+    if (choice == input_in_words(spec)) return spec;
+  throw InputError("Upright vs grand: '" + choice.toStdString() + "' is none of the blows offered");
 }
 
 QString limit_text(const std::optional<SweepResult>& sweep) {

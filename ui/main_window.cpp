@@ -263,8 +263,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   connect(demo_rate_watcher_, &QFutureWatcherBase::finished, this, [this] {
     if (demo_rate_request_running_ != demo_rate_request_) return;  // overridden or superseded
     const double rate = demo_rate_watcher_->result();
-    if (std::isfinite(rate))
-      deregulation_rate_->setValue(std::copysign(rate, deregulation_rate_->value()));
+    if (!std::isfinite(rate)) return;
+    applying_demo_rate_ = true;
+    deregulation_rate_->setValue(std::copysign(rate, deregulation_rate_->value()));
+    applying_demo_rate_ = false;
+  });
+  // a rate the teacher sets while a suggestion is on its way wins over it
+  connect(deregulation_rate_, &QDoubleSpinBox::valueChanged, this, [this] {
+    if (!applying_demo_rate_) ++demo_rate_request_;
   });
   connect(deregulation_setting_, &QComboBox::currentIndexChanged, this,
           &MainWindow::suggest_demo_rate);
@@ -327,7 +333,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   restore_settings();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow() {
+  // the demo rate's measurement holds no pointer into the window, but the engine must not still
+  // be working when the program's statics go at exit
+  demo_rate_watcher_->waitForFinished();
+}
 
 void MainWindow::show_analyses() {
   analyses_dock_->raise();
@@ -754,8 +764,9 @@ void MainWindow::show_run_status() {
                                 "space bar strikes a blow, keys 1–5 strike pp to ff")
                                  .arg(name, input));
   else if (t <= 0.0 && !controller_->replaying())
-    // a run played and rewound to its start: Play shows it again from the recorded frames
-    statusBar()->showMessage(tr("Rewound to the start (%1 with %2): Play or P plays the run "
+    // a run played (or stepped) and taken back to its start: Play shows it again from the
+    // recorded frames
+    statusBar()->showMessage(tr("At the start of the run (%1 with %2): Play or P plays it "
                                 "again, Step moves one frame, ten with Shift")
                                  .arg(name, input));
   else if (setting_waits_)
@@ -819,6 +830,8 @@ void MainWindow::regulate_automatically() {
 
 void MainWindow::run_deregulation_demo() {
   if (!model_ || deregulation_runner_->running()) return;
+  ++demo_rate_request_;  // the demo runs at the rate shown; a suggestion still on its way is
+                         // dropped
   DeregulationOptions options;
   options.setting = deregulation_setting_->currentData().toString().toStdString();
   demo_setting_ = options.setting;
@@ -1067,9 +1080,15 @@ std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) c
   if (run_plots) {
     metadata["settings"] =
         practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
-    // every input of the run the plots hold: a blow struck into it is part of its record
-    metadata["input"] =
-        (controller_->replaying() ? running_input_ : controller_->inputs_text()).toStdString();
+    // every input of the run the plots hold: a blow struck into it is part of its record. By
+    // their SPECs (a run of one input gives one SPEC, which `diagnose` reads back from an
+    // exported trace), and in words beside them
+    if (controller_->replaying()) {
+      metadata["input"] = running_input_.toStdString();
+    } else {
+      metadata["input"] = controller_->inputs_text().toStdString();
+      metadata["input_words"] = controller_->inputs_text(true).toStdString();
+    }
   }
   return metadata;
 }

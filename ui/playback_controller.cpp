@@ -47,6 +47,7 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   run_spec_ = input_spec;
   ++run_id_;
   history_.clear();
+  frames_to_step_ = 0;
   stopped_ = false;
   replay_ = false;
   has_frame_ = false;
@@ -98,11 +99,12 @@ QString PlaybackController::input_at(double t) const {
   return what;
 }
 
-QString PlaybackController::inputs_text() const {
+QString PlaybackController::inputs_text(bool in_words) const {
   QStringList parts;
   for (const InputRecord& input : inputs_) {
-    QString text = input.words;
-    if (!input.spec.empty()) text += QString(" [%1]").arg(QString::fromStdString(input.spec));
+    // the SPEC where there is one (what runs it again), else the words (the mouse's play)
+    const QString text =
+        in_words || input.spec.empty() ? input.words : QString::fromStdString(input.spec);
     parts << (parts.isEmpty() ? text
                               : tr("from t = %1 s %2").arg(input.from_t, 0, 'f', 4).arg(text));
   }
@@ -143,12 +145,13 @@ void PlaybackController::release_key() {
   if (stopped_ || replay_ || !key_played_) return;
   worker_->request_blow("force:const:0");
   key_played_ = false;
-  note_input(history_.last_time(), tr("the key let go"), "force:const:0");
+  note_input(history_.last_time(), input_in_words("force:const:0"), "force:const:0");
   play();
 }
 
 void PlaybackController::play() {
   if (stopped_ || playing_) return;
+  frames_to_step_ = 0;
   playing_ = true;
   last_tick_ns_ = wall_.nsecsElapsed();
   emit playingChanged(true);
@@ -163,20 +166,28 @@ void PlaybackController::pause() {
 
 void PlaybackController::step_forward(int frames) {
   advance(frames);
-  emit navigated();
+  if (!history_.empty()) emit navigated();
 }
 
 void PlaybackController::advance(int frames) {
   pause();
   if (history_.empty() || frames < 1) return;
+  if (display_time_ > history_.last_time() + 1e-12 && !stopped_ && !replay_) {
+    // a step still being computed: this one goes on from where that one will be
+    frames_to_step_ += frames;
+    return;
+  }
   const std::size_t i = history_.index_at(display_time_);
   const std::size_t wanted = i + static_cast<std::size_t>(frames);
   if (wanted < history_.size()) {
     show_time(history_.at(wanted).t);
   } else if (!stopped_ && !replay_) {
-    // the frames still missing are computed; drain() shows the last one when it arrives
-    const std::size_t missing = wanted - (history_.size() - 1);
-    display_time_ = history_.last_time() + static_cast<double>(missing) * sample_interval();
+    // the frames still missing are computed one at a time (the worker lands exactly on a time it
+    // is asked for and records a frame there; asked for several frames' time at once, it could
+    // stop a fraction of a step short of the last one's place on its own grid); drain() asks for
+    // each next one, and shows the last
+    frames_to_step_ = static_cast<int>(wanted - (history_.size() - 1)) - 1;
+    display_time_ = history_.last_time() + sample_interval();
     worker_->set_target_time(display_time_);
   } else {
     show_time(history_.last_time());  // a stopped run or a replay: as far as it goes
@@ -231,11 +242,19 @@ void PlaybackController::drain() {
   std::vector<Frame> frames = worker_->take_frames();
   for (Frame& f : frames)
     if (f.run == run_id_) history_.append(std::move(f));
-  // a single step waiting for its frame (a run started paused shows its first one in
-  // on_run_started)
+  // a step waiting for its frame (a run started paused shows its first one in on_run_started):
+  // shown, or with more frames to step, the next one asked for
   if (!playing_ && !history_.empty() && display_time_ > current_.t &&
-      history_.last_time() >= display_time_ - 1e-12)
-    show_time(display_time_);
+      history_.last_time() >= display_time_ - 1e-12) {
+    if (frames_to_step_ > 0 && !stopped_) {
+      --frames_to_step_;
+      display_time_ = history_.last_time() + sample_interval();
+      worker_->set_target_time(display_time_);
+    } else {
+      frames_to_step_ = 0;
+      show_time(display_time_);
+    }
+  }
 }
 
 void PlaybackController::tick() {

@@ -78,10 +78,12 @@ class PlaybackController : public QObject {
   /// What drove the key at simulated time `t` of this run, in inputChanged's words: the run's
   /// input, or a blow struck or the mouse's play from the time it began.
   QString input_at(double t) const;
-  /// Every input of this run in order, in words with the SPEC that runs it again where there is
-  /// one: "a 20 N blow held 40 ms [force:pulse:20:40]; from t = 1.2345 s a 12 N blow held 40 ms,
-  /// struck [force:pulse:12:40]".
-  QString inputs_text() const;
+  /// Every input of this run in order, by the SPECs that run them again (the words where there is
+  /// none: the key played with the mouse): "force:pulse:20:40; from t = 1.2345 s
+  /// force:pulse:12:40"; a run of one input gives its SPEC alone, which `diagnose` reads back
+  /// from an exported trace. `in_words`: "a 20 N blow held 40 ms; from t = 1.2345 s a 12 N blow
+  /// held 40 ms, struck".
+  QString inputs_text(bool in_words = false) const;
   /// Redraw timer ticks that showed a new frame, and their count per wall second (measured).
   double redraw_rate_hz() const { return redraw_rate_hz_; }
 
@@ -135,6 +137,7 @@ class PlaybackController : public QObject {
   bool stopped_ = false;
   bool replay_ = false;      // frames from an analysis: no worker behind them
   bool key_played_ = false;  // the mouse drives the key since the last run start or blow
+  int frames_to_step_ = 0;   // frames of a step still to compute after the one awaited
   struct InputRecord {
     double from_t;  // simulated time, s
     QString words;

@@ -53,6 +53,9 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
 inline constexpr double kDemoSettingRatePerS_mm = 2.0;
 inline constexpr double kDemoSettingRatePerS_fraction = 0.1;
 
+/// The adjuster travel (mm) of demo_adjuster_rate's probe.
+inline constexpr double kDemoProbe_mm = 0.25;
+
 /// The adjuster speed (mm/s, positive: the adjuster's own + direction) at which setting
 /// `setting` of `model` changes by about the rate above: that rate over |Δm / Δa|, the change of
 /// the measured setting for a probe of kDemoProbe_mm of its adjuster from where it stands (+,
@@ -60,7 +63,6 @@ inline constexpr double kDemoSettingRatePerS_fraction = 0.1;
 /// 0.05 mm/s. The adjuster-to-setting ratios differ widely: about 1 for key dip, 6 for the
 /// grand's let-off (mm of hammer per mm of button), 12 for its hammer blow (capstan). 1 mm/s
 /// when the setting cannot be measured on this action. Throws InputError for an unknown setting.
-inline constexpr double kDemoProbe_mm = 0.25;
 double demo_adjuster_rate(const ActionModel& model, const std::string& setting);
 
 /// The adjuster's position over time as the run turned it, from the trace's time_s and

@@ -229,13 +229,13 @@ void AnalysisStudiesTest::comparison_overlays_both_actions() {
   // short sweeps (four chirps of 6 s) in which the grand's half stroke and the upright's full
   // stroke already have a repeating range
   QVERIFY(panel->set_parameter("f_max_hz", 8.0));
-  // the blows are offered in words (they had read "force:pulse:10:100"); the first is the
-  // command line's default
-  QVERIFY(panel->set_parameter("input", "a 10 N blow held 100 ms"));
+  // the blows are offered in words (they had read "force:pulse:10:100"), and the one chosen is
+  // the one run: not the default (the command line's 10 N for 100 ms)
+  QVERIFY(panel->set_parameter("input", "a 25 N blow held 80 ms"));
   QVERIFY(panel->run(kCompare));
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 120000));
   QVERIFY2(!panel->summary().contains("failed"), qPrintable(panel->summary()));
-  // both actions strike under the mezzo-forte pulse; the grand's hammer is lighter and its
+  // both actions strike under the forte pulse; the grand's hammer is lighter and its
   // key ratio differs, so the two impact times differ
   bool ok_grand = false, ok_upright = false;
   const double t_grand = table_value(panel, "grand: impact time").toDouble(&ok_grand);
@@ -254,7 +254,7 @@ void AnalysisStudiesTest::comparison_overlays_both_actions() {
     QCOMPARE(plot->series_label(1), QString("upright"));
     QVERIFY(plot->point_count(0) > 1000 && plot->point_count(1) > 1000);
     QCOMPARE(plot->marker_count(), 2);  // each action's impact
-    QVERIFY2(plot->title().contains("under a 10 N blow held 100 ms"), qPrintable(plot->title()));
+    QVERIFY2(plot->title().contains("under a 25 N blow held 80 ms"), qPrintable(plot->title()));
   }
   // every action appears in the limits plot: as a point (a limit found, or a lower bound in a
   // series of its own), or named in the title when a stroke has no repeating range

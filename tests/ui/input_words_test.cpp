@@ -35,13 +35,18 @@ class InputWordsTest : public QObject {
                      "stroke)"));
     QCOMPARE(input_in_words("motion:press:1.5"),
              QString("a slow press to the bottom in 1.5 s, held there"));
+    // numbers as typed, without rounding or an exponent; a SPEC trimmed as the engine reads it
+    QCOMPARE(input_in_words("force:pulse:12.25:1000"), QString("a 12.25 N blow held 1000 ms"));
+    QCOMPARE(input_in_words("  force:pulse:20:40 "), QString("a 20 N blow held 40 ms"));
     QCOMPARE(input_in_words("csv:/home/teacher/measured/blow 3.csv"),
              QString("the key input from blow 3.csv"));
   }
 
   void a_spec_not_understood_is_shown_as_it_is() {
-    for (const char* spec : {"force:pulse:20", "force:pulse:x:40", "motion:wobble:3", "mass:lots",
-                             "force:double:1:2:3:4"})
+    for (const char* spec :
+         {"force:pulse:20", "force:pulse:x:40", "motion:wobble:3", "mass:lots",
+          "force:double:1:2:3:4", "motion:sine:3:bogus", "motion:chirp:2:20:10:sideways",
+          "force:pulse:nan:40", "force:pulse:-5:40", "force:const:inf", "mass:-1kg"})
       QCOMPARE(input_in_words(spec), QString(spec));
   }
 };

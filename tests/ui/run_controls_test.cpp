@@ -24,6 +24,7 @@
 #include "input_spec_form.h"
 #include "io/csv.h"
 #include "main_window.h"
+#include "measured/measured_data.h"
 #include "playback_controller.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
@@ -143,7 +144,7 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   c->rewind();
   QCOMPARE(c->current_frame().t, 0.0);
   // not "Ready, at rest" as at launch: the run was played, and Play shows it again
-  QVERIFY2(window.statusBar()->currentMessage().startsWith("Rewound to the start"),
+  QVERIFY2(window.statusBar()->currentMessage().startsWith("At the start of the run"),
            qPrintable(window.statusBar()->currentMessage()));
   const double recorded = c->history().last_time();
   window.set_adjuster("hammer_blow", 0.5);
@@ -186,15 +187,26 @@ void RunControlsTest::pause_step_and_rewind() {
   QVERIFY(stepped - paused_at < 1e-3);  // one frame, not a run
   c->step_back();
   QVERIFY(c->current_frame().t < stepped);
-  // the larger step (Shift): ten frames forward, computed as needed, and ten back to where it was
+  // the larger step (Shift): ten frames forward and back; from the last frame recorded, the ten
+  // are computed first (the worker keeps a few ms ahead of a paused run, which a step within
+  // them only shows)
+  c->seek(c->history().last_time());
   const double before_large = c->current_frame().t;
   const std::size_t frame_index = c->history().index_at(before_large);
+  QCOMPARE(frame_index, c->history().size() - 1);
   c->step_forward(PlaybackController::kLargeStepFrames);
-  QVERIFY(wait_until([&] {
+  const bool stepped_ten = wait_until([&] {
     return c->history().size() > frame_index + PlaybackController::kLargeStepFrames &&
-           c->current_frame().t ==
-               c->history().at(frame_index + PlaybackController::kLargeStepFrames).t;
-  }));
+           std::abs(c->current_frame().t -
+                    c->history().at(frame_index + PlaybackController::kLargeStepFrames).t) < 1e-9;
+  });
+  QVERIFY2(stepped_ten, qPrintable(QString("from %1 s (frame %2) to %3 s; %4 frames, the last at "
+                                           "%5 s")
+                                       .arg(before_large)
+                                       .arg(frame_index)
+                                       .arg(c->current_frame().t)
+                                       .arg(c->history().size())
+                                       .arg(c->history().last_time())));
   c->step_back(PlaybackController::kLargeStepFrames);
   QCOMPARE(c->current_frame().t, before_large);
   // every plot marks the time the action view shows, also after a step back
@@ -209,13 +221,16 @@ void RunControlsTest::pause_step_and_rewind() {
   c->pause();
   QVERIFY2(window.statusBar()->currentMessage().contains("with a 10 N blow held 20 ms, struck"),
            qPrintable(window.statusBar()->currentMessage()));
-  // an exported plot's record names both inputs of its run, the blow with its start, in words
-  // and with the SPECs that run them again
+  // an exported plot's record names both inputs of its run, the blow with its start: by the
+  // SPECs that run them again, and in words
   const std::string inputs = window.export_metadata(true).at("input");
-  QVERIFY2(
-      inputs.rfind("a 20 N blow held 40 ms [force:pulse:20:40]; from t = ", 0) == 0 &&
-          inputs.find(" s a 10 N blow held 20 ms, struck [force:pulse:10:20]") != std::string::npos,
-      inputs.c_str());
+  QVERIFY2(inputs.rfind("force:pulse:20:40; from t = ", 0) == 0 &&
+               inputs.find(" s force:pulse:10:20") != std::string::npos,
+           inputs.c_str());
+  const std::string words = window.export_metadata(true).at("input_words");
+  QVERIFY2(words.rfind("a 20 N blow held 40 ms; from t = ", 0) == 0 &&
+               words.find(" s a 10 N blow held 20 ms, struck") != std::string::npos,
+           words.c_str());
   // Rewind goes first to just before the blow struck (a class sees it again at once), ...
   c->rewind();
   QVERIFY2(c->current_frame().t < struck_at && c->current_frame().t > struck_at - 0.005,
@@ -337,7 +352,8 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   const std::map<std::string, std::string> exported = window.export_metadata(true);
   QCOMPARE(exported.at("action"), std::string("grand"));
   QCOMPARE(exported.at("settings"), std::string("let_off=0.5mm"));
-  QCOMPARE(exported.at("input"), std::string("a 20 N blow held 40 ms [force:pulse:20:40]"));
+  QCOMPARE(exported.at("input"), std::string("force:pulse:20:40"));
+  QCOMPARE(exported.at("input_words"), std::string("a 20 N blow held 40 ms"));
   QVERIFY(exported.at("preset").find("grand.json") != std::string::npos);
   // an analysis has no run input, and may have run before a slider moved
   QVERIFY(!window.export_metadata(false).count("input"));
@@ -466,6 +482,10 @@ void RunControlsTest::the_run_trace_export_holds_every_column() {
     QCOMPARE(table.metadata.at("action"), std::string(action));
     QVERIFY(table.metadata.at("input").find("force:pulse:20:40") != std::string::npos);
     QVERIFY(table.metadata.count("settings") && table.metadata.count("frames"));
+    // read back as measured data (diagnose), with the SPEC that runs its input again (its words
+    // had made "unknown input SPEC" of the window's own export)
+    const pat::MeasuredTrial trial = pat::read_measured(path.toStdString(), action);
+    QCOMPARE(trial.input_spec, std::string("force:pulse:20:40"));
     // the values are the frames': a contact the plots do not show, the strap's tension
     const std::size_t last = c->history().size() - 1;
     const pat::ui::Frame& frame = c->history().at(last);
