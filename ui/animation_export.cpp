@@ -5,6 +5,7 @@
 #include <QFileInfo>
 #include <QImage>
 #include <QTextStream>
+#include <algorithm>
 #include <cmath>
 
 #include "action_view.h"
@@ -13,6 +14,11 @@
 
 namespace pat::ui {
 namespace {
+
+// A picture wider than this is the view laid out at this width and drawn larger, text included,
+// as the plot export does (plot_export.cpp): at 1600 px the labels would otherwise be a slide's
+// small print.
+constexpr double kLayoutWidth = 800.0;
 
 QString frame_name(int index) {
   return QStringLiteral("frame_%1.png").arg(index, 4, 10, QLatin1Char('0'));
@@ -63,9 +69,11 @@ int export_action_animation(const FrameHistory& history, const AnimationOptions&
       throw InputError(text(dir.filePath(frame_name(i))) +
                        ": already there; choose an empty folder, nothing was written");
 
+  const double scale = std::max(1.0, options.size.width() / kLayoutWidth);
   ActionView view;
   view.setAttribute(Qt::WA_DontShowOnScreen);
-  view.resize(options.size);
+  view.resize(QSize(static_cast<int>(std::lround(options.size.width() / scale)),
+                    static_cast<int>(std::lround(options.size.height() / scale))));
   view.set_focus(options.focus);
   view.set_labels_visible(options.labels);
   view.set_measurements_visible(options.measurements);
@@ -79,10 +87,12 @@ int export_action_animation(const FrameHistory& history, const AnimationOptions&
   for (const double t : times) {
     view.show_frame(history.interpolated(t));
     // drawn into an image of the size asked for (grab() would multiply it by a HiDPI screen's
-    // device pixel ratio)
+    // device pixel ratio), the layout scaled up to it
     QImage picture(options.size, QImage::Format_RGB32);
+    picture.setDevicePixelRatio(scale);
     picture.fill(Qt::white);
     view.render(&picture);
+    picture.setDevicePixelRatio(1.0);  // saved as the pixels it has
     const QString path = dir.filePath(frame_name(written));
     if (!picture.save(path, "PNG")) throw InputError(text(path) + ": could not write the PNG");
     rows << written << ',' << QString::number(t, 'g', 10) << '\n';
