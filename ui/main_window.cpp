@@ -1026,7 +1026,8 @@ void MainWindow::export_animation_from_menu() {
   }
   try {
     const AnimationOptions options = animation_options();
-    const int total = static_cast<int>(animation_times(controller_->history(), options).size());
+    const std::vector<double> times = animation_times(controller_->history(), options);
+    const int total = static_cast<int>(times.size());
     QProgressDialog progress(tr("Drawing the action's pictures…"), tr("Stop"), 0, total, this);
     progress.setWindowModality(Qt::WindowModal);
     progress.setMinimumDuration(300);
@@ -1036,18 +1037,21 @@ void MainWindow::export_animation_from_menu() {
     });
     progress.setValue(total);
     remember_export_folder(folder);
+    const QString stopped = written < total
+                                ? tr("Stopped after %1 of %2 pictures. ").arg(written).arg(total)
+                                : QString();
     statusBar()->showMessage(
-        tr("Exported %1 pictures of the action (t = %2 to %3 ms, every %4 "
-           "ms; at 25 a second they play at the speed chosen) and frames.csv "
-           "to %5")
-            .arg(written)
-            .arg(options.from_s * 1e3, 0, 'f', 1)
-            .arg((options.from_s + (written - 1) * options.interval_s) * 1e3, 0, 'f', 1)
-            .arg(options.interval_s * 1e3, 0, 'g', 3)
-            .arg(folder));
+        stopped + tr("Exported %1 pictures of the action (t = %2 to %3 ms, every %4 ms; at 25 a "
+                     "second they play at the speed chosen) and frames.csv to %5")
+                      .arg(written)
+                      .arg(times.front() * 1e3, 0, 'f', 1)
+                      .arg(times[std::max(written, 1) - 1] * 1e3, 0, 'f', 1)
+                      .arg(options.interval_s * 1e3, 0, 'g', 3)
+                      .arg(folder));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
   }
+  if (was_playing) controller_->play();  // as the other exports do
 }
 
 void MainWindow::export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
