@@ -29,6 +29,15 @@ constexpr double kShownForceN = 1e-3;
 // the named points of the bodies are a group of their own (LabelPlacer::NamedStyle::group)
 constexpr int kBodyGroup = 1;
 
+// Distance (px) from p to the segment from a to b.
+double distance_to_segment(const QPointF& p, const QPointF& a, const QPointF& b) {
+  const QPointF ab = b - a;
+  const double length2 = QPointF::dotProduct(ab, ab);
+  const double u =
+      length2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return QLineF(p, a + u * ab).length();
+}
+
 // A point well inside a polygon (screen): of a 20 × 20 grid over its bounds, the one inside it
 // and inside `within` that lies farthest from its edges (depth counted up to kDeepEnoughPx: of
 // equally deep points in a long bar, the one nearest its middle); empty when none does.
@@ -48,14 +57,9 @@ std::optional<QPointF> deepest_point(const QPolygonF& polygon, const QRectF& wit
                       bounds.top() + bounds.height() * (j + 0.5) / kGrid);
       if (!within.contains(p) || !polygon.containsPoint(p, Qt::OddEvenFill)) continue;
       double depth = std::numeric_limits<double>::infinity();
-      for (qsizetype k = 0; k < polygon.size(); ++k) {
-        const QPointF a = polygon[k], b = polygon[(k + 1) % polygon.size()];
-        const QPointF ab = b - a;
-        const double length2 = QPointF::dotProduct(ab, ab);
-        const double u =
-            length2 > 0.0 ? std::clamp(QPointF::dotProduct(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-        depth = std::min(depth, QLineF(p, a + u * ab).length());
-      }
+      for (qsizetype k = 0; k < polygon.size(); ++k)
+        depth =
+            std::min(depth, distance_to_segment(p, polygon[k], polygon[(k + 1) % polygon.size()]));
       const double score =
           std::min(depth, kDeepEnoughPx) - kPerPxFromMiddle * QLineF(p, middle).length();
       if (score > best_depth) {
@@ -811,13 +815,7 @@ QString ActionView::arrow_tooltip(const QPointF& at) const {
   const DrawnArrow* nearest = nullptr;
   double nearest_px = kReachPx;
   for (const DrawnArrow& arrow : drawn_arrows_) {
-    // distance from the pointer to the arrow's shaft (base to tip)
-    const QPointF shaft = arrow.tip - arrow.base;
-    const double length2 = QPointF::dotProduct(shaft, shaft);
-    const double along =
-        length2 > 0.0 ? std::clamp(QPointF::dotProduct(at - arrow.base, shaft) / length2, 0.0, 1.0)
-                      : 0.0;
-    const double px = QLineF(at, arrow.base + along * shaft).length();
+    const double px = distance_to_segment(at, arrow.base, arrow.tip);  // to the arrow's shaft
     if (px <= nearest_px) {
       nearest_px = px;
       nearest = &arrow;

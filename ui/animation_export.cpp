@@ -4,6 +4,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QImage>
+#include <QStringList>
 #include <QTextStream>
 #include <algorithm>
 #include <cmath>
@@ -11,14 +12,10 @@
 #include "action_view.h"
 #include "core/error.h"
 #include "frame_history.h"
+#include "plot_export.h"
 
 namespace pat::ui {
 namespace {
-
-// A picture wider than this is the view laid out at this width and drawn larger, text included,
-// as the plot export does (plot_export.cpp): at 1600 px the labels would otherwise be a slide's
-// small print.
-constexpr double kLayoutWidth = 800.0;
 
 QString frame_name(int index) {
   return QStringLiteral("frame_%1.png").arg(index, 4, 10, QLatin1Char('0'));
@@ -59,17 +56,17 @@ int export_action_animation(const FrameHistory& history, const AnimationOptions&
   // nothing overwritten: a folder that holds an earlier sequence is refused before anything is
   // written
   const QString table = dir.filePath("frames.csv");
-  for (const QString& path : {table, dir.filePath(frame_name(0))})
+  QStringList to_write{table};
+  for (int i = 0; i < static_cast<int>(times.size()); ++i) to_write << dir.filePath(frame_name(i));
+  for (const QString& path : to_write)
     if (QFileInfo::exists(path))
       throw InputError(text(path) +
                        ": already there (an earlier export?); choose an empty folder, nothing "
                        "was written");
-  for (int i = 1; i < static_cast<int>(times.size()); ++i)
-    if (QFileInfo::exists(dir.filePath(frame_name(i))))
-      throw InputError(text(dir.filePath(frame_name(i))) +
-                       ": already there; choose an empty folder, nothing was written");
 
-  const double scale = std::max(1.0, options.size.width() / kLayoutWidth);
+  // wider than the plots' layout width, the view laid out at it and drawn larger, text included,
+  // as the plot export does: at 1600 px the labels would otherwise be a slide's small print
+  const double scale = std::max(1.0, options.size.width() / kExportLayoutWidth);
   ActionView view;
   view.setAttribute(Qt::WA_DontShowOnScreen);
   view.resize(QSize(static_cast<int>(std::lround(options.size.width() / scale)),

@@ -264,14 +264,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (demo_rate_request_running_ != demo_rate_request_) return;  // overridden or superseded
     const double rate = demo_rate_watcher_->result();
     if (!std::isfinite(rate)) return;
-    applying_demo_rate_ = true;
+    const QSignalBlocker own_change(deregulation_rate_);  // not the teacher's setting (below)
     deregulation_rate_->setValue(std::copysign(rate, deregulation_rate_->value()));
-    applying_demo_rate_ = false;
   });
   // a rate the teacher sets while a suggestion is on its way wins over it
-  connect(deregulation_rate_, &QDoubleSpinBox::valueChanged, this, [this] {
-    if (!applying_demo_rate_) ++demo_rate_request_;
-  });
+  connect(deregulation_rate_, &QDoubleSpinBox::valueChanged, this,
+          [this] { ++demo_rate_request_; });
   connect(deregulation_setting_, &QComboBox::currentIndexChanged, this,
           &MainWindow::suggest_demo_rate);
   demo_row->addWidget(new QLabel(tr("Demo moves"), demo_options));

@@ -181,7 +181,6 @@ class MainWindow : public QMainWindow {
   QFutureWatcher<double>* demo_rate_watcher_;
   int demo_rate_request_ = 0;          ///< the latest suggestion asked for (or overridden)
   int demo_rate_request_running_ = 0;  ///< the one the watcher's future computes
-  bool applying_demo_rate_ = false;    ///< the suggestion is being put in the rate box
   QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;

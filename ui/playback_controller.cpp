@@ -187,11 +187,15 @@ void PlaybackController::advance(int frames) {
     // stop a fraction of a step short of the last one's place on its own grid); drain() asks for
     // each next one, and shows the last
     frames_to_step_ = static_cast<int>(wanted - (history_.size() - 1)) - 1;
-    display_time_ = history_.last_time() + sample_interval();
-    worker_->set_target_time(display_time_);
+    ask_next_frame();
   } else {
     show_time(history_.last_time());  // a stopped run or a replay: as far as it goes
   }
+}
+
+void PlaybackController::ask_next_frame() {
+  display_time_ = history_.last_time() + sample_interval();
+  worker_->set_target_time(display_time_);
 }
 
 void PlaybackController::step_back(int frames) {
@@ -248,8 +252,7 @@ void PlaybackController::drain() {
       history_.last_time() >= display_time_ - 1e-12) {
     if (frames_to_step_ > 0 && !stopped_) {
       --frames_to_step_;
-      display_time_ = history_.last_time() + sample_interval();
-      worker_->set_target_time(display_time_);
+      ask_next_frame();
     } else {
       frames_to_step_ = 0;
       show_time(display_time_);

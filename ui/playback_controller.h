@@ -116,6 +116,8 @@ class PlaybackController : public QObject {
   void drain();
   /// Paused: `frames` frames forward, computed if needed (step_forward without its navigated()).
   void advance(int frames);
+  /// Paused: has the worker compute the frame after the last one recorded, for drain() to show.
+  void ask_next_frame();
   /// Records what drives the key from simulated time `from_t` on (in words, and the SPEC where
   /// there is one), and says so (inputChanged).
   void note_input(double from_t, const QString& what, const std::string& spec = {});

@@ -16,8 +16,6 @@
 namespace pat::ui {
 namespace {
 
-// the width (px) large exports lay their plots out at before drawing them larger
-constexpr double kLayoutWidth = 800.0;
 // the least height (layout units) a stacked plot is laid out at when the picture allows it:
 // title, plot area, ticks and axis title
 constexpr double kMinimumPlotUnits = 150.0;
@@ -119,7 +117,7 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
   for (const PlotPanel* plot : plots) legends += plot->legend_height_below();
   const double tall_enough =
       size.height() / (kMinimumPlotUnits * static_cast<double>(plots.size()) + legends);
-  const double scale = std::max(1.0, std::min(size.width() / kLayoutWidth, tall_enough));
+  const double scale = std::max(1.0, std::min(size.width() / kExportLayoutWidth, tall_enough));
   const QSize layout(static_cast<int>(size.width() / scale),
                      static_cast<int>(size.height() / scale));
   switch (format) {

@@ -15,6 +15,10 @@ class PlotPanel;
 
 enum class ExportFormat { Png, Pdf, Svg, Csv };
 
+/// The width (px) a large export is laid out at before it is drawn larger, text included: the
+/// plots here, the action view's pictures (animation_export.h).
+inline constexpr double kExportLayoutWidth = 800.0;
+
 /// The format of a file name's extension (.png .pdf .svg .csv, any case). Throws InputError
 /// naming the file for any other extension.
 ExportFormat export_format(const QString& path);

@@ -30,12 +30,11 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
       std::string unit = "mm";
       for (const RegulationSetting& r : model->regulation)
         if (r.name == s.setting) unit = r.unit;
-      const QString adjuster = adjuster_mm_text(s.adjuster_mm, 3);
       const QString line =
           tr("pass %1  %2: adjuster %3 mm → reads %4 (target %5)%6")
               .arg(s.pass)
               .arg(setting_title(s.setting))
-              .arg((s.adjuster_mm >= 5e-4 ? "+" : "") + adjuster)
+              .arg(adjuster_mm_text(s.adjuster_mm, 3, true))
               .arg(setting_value_text(s.measured, unit))
               .arg(setting_value_text(s.target, unit))
               .arg(s.note.empty() ? QString() : " — " + QString::fromStdString(s.note));

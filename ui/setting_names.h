@@ -30,10 +30,11 @@ inline QString setting_value_text(double value, const std::string& unit) {
   return number + " " + (fraction ? QStringLiteral("%") : QString::fromStdString(unit));
 }
 
-/// An adjuster's offset (mm) to `decimals` places, one that rounds to zero without a sign.
-inline QString adjuster_mm_text(double mm, int decimals) {
+/// An adjuster's offset (mm) to `decimals` places, one that rounds to zero without a sign;
+/// `plus`: a positive one with its "+".
+inline QString adjuster_mm_text(double mm, int decimals, bool plus = false) {
   if (std::abs(mm) < 0.5 * std::pow(10.0, -decimals)) mm = 0.0;
-  return QString::number(mm, 'f', decimals);
+  return (plus && mm > 0.0 ? QStringLiteral("+") : QString()) + QString::number(mm, 'f', decimals);
 }
 
 /// The part the adjuster turns, from its description ("let-off button: + screws it down …" →

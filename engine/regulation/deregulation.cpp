@@ -44,8 +44,8 @@ double demo_adjuster_rate(const ActionModel& model, const std::string& setting) 
     const double there = measured_or_nan(with_adjuster(model, setting, moved), setting, nullptr);
     const double ratio = std::abs(there - here) / kDemoProbe_mm;  // setting unit per mm
     if (!std::isfinite(ratio) || ratio < 1e-6) continue;
-    const double rate = std::clamp(wanted / ratio, kSlowest, kFastest);
-    return std::max(kSlowest, std::round(rate * kSteps) / kSteps);
+    // clamped, then rounded: the bounds are whole twentieths, so rounding stays within them
+    return std::round(std::clamp(wanted / ratio, kSlowest, kFastest) * kSteps) / kSteps;
   }
   return kFallback;
 }
