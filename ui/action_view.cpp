@@ -77,6 +77,9 @@ Vec2 string_point_struck(const ActionLandmarks& marks) {
          marks.string_normal.dot(marks.strike_point - marks.string_point) * marks.string_normal;
 }
 
+// a close-up's labels grow with its scale, but stay small enough for this many lines of them to
+// fit the view's height below the readout
+constexpr double kLabelLinesInView = 14.0;
 // a part named by a label in a close-up lies at least this far inside the view (px)
 constexpr double kNamedPointMarginPx = 4.0;
 /// The time and gap readout's font: the view's, 3 pt larger, bold.
@@ -336,8 +339,16 @@ void ActionView::paint_frame(QPainter& painter) {
   // labels grow in a close-up (about 1.5 px/mm when the whole action fits a 770 px view), up to
   // half as large again, so that they stay readable from the back of a classroom
   const double zoom = std::clamp(std::sqrt(scale_ / kWholeActionScale), 1.0, 1.5);
-  label_font.setPointSizeF(std::max(9.0, label_font.pointSizeF()) * zoom);
+  const double unzoomed_pt = std::max(9.0, label_font.pointSizeF());
+  label_font.setPointSizeF(unzoomed_pt * zoom);
   label_font.setBold(true);
+  // but not so large that the close-up holds fewer than kLabelLinesInView lines of them below
+  // the readout: with the class's larger text a 580 px wide close-up lost its force values first
+  const double below_readout = height() - readout_band_px(QFontMetricsF(readout_font(font())));
+  if (const double line = QFontMetricsF(label_font).height();
+      zoom > 1.0 && line > below_readout / kLabelLinesInView)
+    label_font.setPointSizeF(
+        std::max(unzoomed_pt, label_font.pointSizeF() * below_readout / kLabelLinesInView / line));
   painter.setFont(label_font);
 
   // the drawn fixtures and bodies, which the rails' and fixtures' labels keep off
@@ -456,6 +467,7 @@ void ActionView::paint_frame(QPainter& painter) {
                                      // the label had to move away from it
     QString key = {};                // names it from frame to frame (default: its text)
     int body = -1;                   // the body it names (a part's name over its shape)
+    double force_n = 0.0;            // a force value's force: the larger placed first
   };
   std::vector<Label> labels;  // in placement priority
   std::vector<Label> force_labels, fixture_labels;
@@ -482,8 +494,12 @@ void ActionView::paint_frame(QPainter& painter) {
     if (r.normal_force >= 0.5 && measurements_)
       force_labels.push_back({tip + QPointF(4, 4), QString::number(r.normal_force, 'f', 1) + " N",
                               contact_colour().darker(130), true, false, tip,
-                              QStringLiteral("force %1").arg(c)});
+                              QStringLiteral("force %1").arg(c), -1, r.normal_force});
   }
+  // the largest forces first: where two arrows meet at one part (the jack and the repetition
+  // lever under the knuckle) the push that drives the action keeps its value
+  std::stable_sort(force_labels.begin(), force_labels.end(),
+                   [](const Label& a, const Label& b) { return a.force_n > b.force_n; });
   // key front: where the finger presses (drag it to play the key)
   const QPointF key_front = to_screen(body_point(model.landmarks.key, model.landmarks.key_front));
   painter.setPen(QPen(QColor(0, 110, 200), playing_key_ ? 4.0 : 2.5));
@@ -703,6 +719,17 @@ void ActionView::paint_frame(QPainter& painter) {
     std::erase_if(fixture_labels, at_edge);
     std::erase_if(rail_labels, at_edge);
     std::erase_if(labels, at_edge);  // the bodies' names and the knuckle's or butt's
+  }
+  // in a close-up the push of the jack on the knuckle or butt comes right after their name: the
+  // other names took its place in the escapement close-up of the class's larger text
+  if (close_up && escapement >= 0 && !labels.empty()) {
+    const QString escapement_force = QStringLiteral("force %1").arg(escapement);
+    const auto push = std::find_if(force_labels.begin(), force_labels.end(),
+                                   [&](const Label& l) { return l.key == escapement_force; });
+    if (push != force_labels.end()) {
+      labels.insert(labels.begin() + 1, *push);
+      force_labels.erase(push);
+    }
   }
   labels.insert(labels.end(), fixture_labels.begin(), fixture_labels.end());
   labels.insert(labels.end(), force_labels.begin(), force_labels.end());

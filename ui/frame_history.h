@@ -22,8 +22,9 @@ class FrameHistory {
 
   /// Index of the last frame at or before t (0 when t is before the first frame).
   std::size_t index_at(double t) const;
-  /// The frame at t, with q and v interpolated linearly between the two recorded frames around
-  /// it (slow motion between samples); other fields from the earlier frame.
+  /// The frame at t, with q, v and the readings (angles, gap, finger, contact forces, strap
+  /// tensions) interpolated linearly between the two recorded frames around it (slow motion
+  /// between samples); the model and run from the earlier frame, and no events.
   Frame interpolated(double t) const;
 
  private:

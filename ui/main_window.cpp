@@ -15,6 +15,7 @@
 #include <QProgressBar>
 #include <QProgressDialog>
 #include <QPushButton>
+#include <QResizeEvent>
 #include <QScreen>
 #include <QScrollArea>
 #include <QSettings>
@@ -55,6 +56,7 @@
 #include "run_controls.h"
 #include "run_trace_export.h"
 #include "setting_names.h"
+#include "status_fit.h"
 
 namespace pat::ui {
 
@@ -478,7 +480,10 @@ void MainWindow::set_large_text(bool on) {
   QApplication::setFont(font);
   // the dock follows its columns, which grow or shrink with the text once the layouts have taken
   // the new font (their size requests are events of their own)
-  QTimer::singleShot(0, this, [this] { fit_regulation_dock(true); });
+  QTimer::singleShot(0, this, [this] {
+    fit_regulation_dock(true);
+    refit_run_status();  // the status line's text grew or shrank with the rest
+  });
   QSettings().setValue("view/large_text", on);
 }
 
@@ -729,6 +734,16 @@ bool MainWindow::event(QEvent* event) {
   return QMainWindow::event(event);
 }
 
+void MainWindow::resizeEvent(QResizeEvent* event) {
+  QMainWindow::resizeEvent(event);
+  refit_run_status();
+}
+
+void MainWindow::refit_run_status() {
+  if (!run_status_shown_.isEmpty() && statusBar()->currentMessage() == run_status_shown_)
+    show_run_status();
+}
+
 void MainWindow::hold_at_rest() {
   controller_->pause();
   show_run_status();
@@ -737,47 +752,60 @@ void MainWindow::hold_at_rest() {
 void MainWindow::show_run_status() {
   if (!model_) return;
   const QString name = QString::fromStdString(model_->name);
+  QString state, input, hint;
   if (controller_->playing()) {
     // what drives the frames shown: after a rewind those recorded before, not the last blow
     const double shown_t =
         controller_->has_frame() ? controller_->current_frame().t : controller_->display_time();
     running_input_shown_ =
         controller_->replaying() ? running_input_ : controller_->input_at(shown_t);
-    statusBar()->showMessage(tr("Running %1 with %2").arg(name, running_input_shown_));
-    return;
+    state = tr("Running");
+    input = running_input_shown_;
+  } else {
+    // paused or stopped: what drove the frame shown (after a rewind, not the last blow struck);
+    // a replay's own words carry the settings of the frame shown
+    const double t =
+        controller_->has_frame() ? controller_->current_frame().t : controller_->display_time();
+    input = controller_->replaying() ? running_input_ : controller_->input_at(t);
+    const QString paused_at = tr("Paused at t = %1 ms").arg(t * 1e3, 0, 'f', 2);
+    if (controller_->run_stopped()) {
+      state = tr("Stopped at t = %1 ms").arg(controller_->display_time() * 1e3, 0, 'f', 2);
+      hint = tr("see the message above the action; Start from rest runs again");
+    } else if (t <= 0.0 && !controller_->replaying() && controller_->at_start()) {
+      // the first frame of a run not yet played (the window's launch, an action opened)
+      state = tr("Ready, at rest");
+      hint =
+          tr("Play or P runs it, Strike or the space bar strikes a blow, keys 1–5 strike pp "
+             "to ff");
+    } else if (t <= 0.0 && !controller_->replaying()) {
+      // a run played (or stepped) and taken back to its start: Play shows it again from the
+      // recorded frames
+      state = tr("At the start of the run");
+      hint = tr("Play or P plays it again, Step moves one frame, ten with Shift");
+    } else if (setting_waits_) {
+      // a screw turned while paused in a run: the parts move to it only as time goes on
+      state = paused_at;
+      hint =
+          tr("the setting just changed acts as the run goes on (Play), or from rest (Start "
+             "from rest)");
+    } else {
+      state = paused_at;
+      hint = tr("Play or P goes on, Step and Step back move one frame, ten with Shift");
+    }
   }
-  // paused or stopped: what drove the frame shown (after a rewind, not the last blow struck);
-  // a replay's own words carry the settings of the frame shown
-  const double t =
-      controller_->has_frame() ? controller_->current_frame().t : controller_->display_time();
-  const QString input = controller_->replaying() ? running_input_ : controller_->input_at(t);
-  if (controller_->run_stopped())
-    statusBar()->showMessage(tr("Stopped at t = %1 ms (%2 with %3): see the message above the "
-                                "action; Start from rest runs again")
-                                 .arg(controller_->display_time() * 1e3, 0, 'f', 2)
-                                 .arg(name, input));
-  else if (t <= 0.0 && !controller_->replaying() && controller_->at_start())
-    // the first frame of a run not yet played (the window's launch, an action opened)
-    statusBar()->showMessage(tr("Ready, at rest (%1 with %2): Play or P runs it, Strike or the "
-                                "space bar strikes a blow, keys 1–5 strike pp to ff")
-                                 .arg(name, input));
-  else if (t <= 0.0 && !controller_->replaying())
-    // a run played (or stepped) and taken back to its start: Play shows it again from the
-    // recorded frames
-    statusBar()->showMessage(tr("At the start of the run (%1 with %2): Play or P plays it "
-                                "again, Step moves one frame, ten with Shift")
-                                 .arg(name, input));
-  else if (setting_waits_)
-    // a screw turned while paused in a run: the parts move to it only as time goes on
-    statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): the setting just changed acts "
-                                "as the run goes on (Play), or from rest (Start from rest)")
-                                 .arg(t * 1e3, 0, 'f', 2)
-                                 .arg(name, input));
-  else
-    statusBar()->showMessage(tr("Paused at t = %1 ms (%2 with %3): Play or P goes on, Step and "
-                                "Step back move one frame, ten with Shift")
-                                 .arg(t * 1e3, 0, 'f', 2)
-                                 .arg(name, input));
+  show_fitted_status(run_status_wordings(state, name, input, hint));
+  run_status_shown_ = statusBar()->currentMessage();
+}
+
+void MainWindow::show_fitted_status(const QStringList& wordings) {
+  // the message's room: the bar less its size grip and margins
+  constexpr double kStatusMarginsPx = 32.0;
+  const QString shown = fit_status(wordings, QFontMetricsF(statusBar()->font()),
+                                   statusBar()->width() - kStatusMarginsPx);
+  statusBar()->showMessage(shown);
+  // the whole message when a shorter one had to be shown
+  statusBar()->setToolTip(wordings.isEmpty() || shown == wordings.front() ? QString()
+                                                                          : wordings.front());
 }
 
 void MainWindow::set_adjuster(const std::string& name, double mm) {

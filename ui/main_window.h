@@ -119,6 +119,8 @@ class MainWindow : public QMainWindow {
   /// A menu entry hovered sends its (empty) status tip, which would clear the run's status line
   /// for good; those are dropped, and the run's status shown again.
   bool event(QEvent* event) override;
+  /// The run's status line is worded again for the new width (status_fit.h).
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   static constexpr double kClassTextScale = 1.35;  // large enough to read from the back of a room
@@ -155,6 +157,11 @@ class MainWindow : public QMainWindow {
   void end_practice();
   /// The status bar: what runs now and with which input, or where the run is paused.
   void show_run_status();
+  /// Shows the first of `wordings` that fits the status bar (status_fit.h), the full one as the
+  /// bar's tooltip when it does not.
+  void show_fitted_status(const QStringList& wordings);
+  /// The run's status again, if the status line still shows it (a new width or font).
+  void refit_run_status();
   /// Shares the height between the action view and the plots by the action's shape: a tall
   /// upright gets more of it than a flat grand.
   void fit_split_to_action(const ActionModel& model);
@@ -165,6 +172,7 @@ class MainWindow : public QMainWindow {
   PlotStack* plots_;
   double base_point_size_ = 0.0;  // the application font's size at start, pt
   bool large_text_ = false;
+  QString run_status_shown_;  // the run's status as last shown (fitted)
   QAction* large_text_action_ = nullptr;
   RegulationPanel* regulation_;
   AnalysesPanel* analyses_;

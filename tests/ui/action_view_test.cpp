@@ -44,6 +44,7 @@ class ActionViewTest : public QObject {
   void labels_avoid_each_other_and_kept_clear_ones_the_drawing();
   void close_up_labels_name_their_own_part_and_hold_still();
   void larger_text_for_a_class_enlarges_the_plots_and_panels();
+  void the_escapement_close_up_keeps_its_forces_in_larger_text();
   void the_readout_says_when_the_felt_is_on_the_string();
   void the_animation_exports_numbered_pictures();
 };
@@ -516,6 +517,49 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
            qPrintable(QString("%1 px shown of %2")
                           .arg(window.regulation()->parentWidget()->width())
                           .arg(window.regulation()->minimumSizeHint().width())));
+}
+
+// In the class's larger text the escapement close-up of a 1280x800 window (about 580 px wide)
+// had so large labels that the jack's push on the knuckle lost its value. Its labels now stay
+// small enough for 14 lines of them, and the largest forces are labelled first.
+void ActionViewTest::the_escapement_close_up_keeps_its_forces_in_larger_text() {
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  window.open_action("grand");
+  window.set_large_text(true);
+  window.start("force:pulse:20:40");
+  pat::ui::PlaybackController* controller = window.controller();
+  QVERIFY(wait_until([&] { return controller->history().last_time() > 0.02; }, 60000));
+  controller->pause();
+  ActionView* view = window.view();
+  view->set_focus(pat::ui::ViewFocus::escapement);
+  // 18 ms into the 20 N blow: the capstan (about 39 N) and the jack under the knuckle (about
+  // 21 N) drive the action, 1.5 mm before let-off
+  // a recorded frame's own time: its forces are those the view evaluates at its q and v
+  const double recorded = controller->history().at(controller->history().index_at(0.018)).t;
+  controller->seek(recorded);
+  QVERIFY(wait_until([&] { return controller->current_frame().t == recorded; }));
+  QVERIFY(window.large_text());
+  QTest::qWait(100);  // the new font reaches the view through events
+  view->grab();
+  const pat::ui::Frame& frame = *view->frame();
+  const auto value = [&](std::size_t contact) {
+    return QString::number(frame.contact_force_n.at(contact), 'f', 1) + " N";
+  };
+  // the jack's push on the knuckle, and the largest force (the capstan's)
+  const std::size_t push = frame.model->landmarks.escapement_contact;
+  const std::size_t largest =
+      std::max_element(frame.contact_force_n.begin(), frame.contact_force_n.end()) -
+      frame.contact_force_n.begin();
+  QVERIFY2(frame.contact_force_n.at(push) > 10.0 && largest != push, "the blow drives the jack");
+  for (const std::size_t contact : {push, largest})
+    QVERIFY2(view->drawn_labels().contains(value(contact)),
+             qPrintable(value(contact) + " not in " + view->drawn_labels().join(", ")));
+  // and the parts the close-up is for are named
+  for (const char* name : {"knuckle", "jack", "let-off button"})
+    QVERIFY2(view->drawn_labels().contains(name),
+             qPrintable(QString(name) + " not in " + view->drawn_labels().join(", ")));
 }
 
 // The gap is read at a point fixed on the felt, up to 0.3 mm behind its nearest point near the

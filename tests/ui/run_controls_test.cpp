@@ -43,6 +43,7 @@ class RunControlsTest : public QObject {
   void event_loop_stays_responsive_while_the_worker_runs();
   void the_window_opens_at_rest_until_played();
   void pause_step_and_rewind();
+  void the_status_line_fits_larger_text();
   void moving_a_slider_changes_the_running_model();
   void a_diverging_run_pauses_and_shows_its_cause();
   void a_bad_input_spec_is_shown_not_thrown();
@@ -161,6 +162,49 @@ void RunControlsTest::the_window_opens_at_rest_until_played() {
   QTest::qWait(200);
   QVERIFY(!c->playing());
   QCOMPARE(c->display_time(), 0.0);
+}
+
+// With the class's larger text a paused run's status line was cut in the middle of a word: it
+// is worded shorter instead (the action's name goes first), the whole of it in the bar's tooltip,
+// and worded in full again when the text is back to its size.
+void RunControlsTest::the_status_line_fits_larger_text() {
+  MainWindow window;
+  window.resize(1280, 800);
+  window.show();
+  window.open_action("grand");
+  window.start("force:pulse:20:40");
+  PlaybackController* c = window.controller();
+  QVERIFY(wait_until([&] { return c->display_time() > 0.005; }));
+  c->pause();
+  QStatusBar* bar = window.statusBar();
+  const QString full = bar->currentMessage();
+  QVERIFY2(full.startsWith("Paused at") && full.contains("Grand action") &&
+               full.contains("with a 20 N blow held 40 ms") && full.contains("ten with Shift"),
+           qPrintable(full));
+  QVERIFY(bar->toolTip().isEmpty());  // nothing left out
+
+  window.set_large_text(true);
+  // the status line is worded again once the new font has reached the bar
+  QVERIFY2(wait_until([&] { return bar->currentMessage() != full; }), qPrintable(full));
+  const QString shorter = bar->currentMessage();
+  QVERIFY2(QFontMetricsF(bar->font()).horizontalAdvance(shorter) <= bar->width(),
+           qPrintable(shorter));
+  QVERIFY2(shorter.startsWith("Paused at") && shorter.contains("ten with Shift") &&
+               !shorter.contains("Grand action"),
+           qPrintable(shorter));
+  QCOMPARE(bar->toolTip(), full);
+  // a window made as narrow as it goes words it again for its width
+  window.resize(window.minimumSizeHint().width(), 800);
+  QVERIFY(wait_until([&] { return window.width() < 1280; }));
+  QVERIFY2(QFontMetricsF(bar->font()).horizontalAdvance(bar->currentMessage()) <= bar->width(),
+           qPrintable(bar->currentMessage()));
+  QVERIFY2(bar->currentMessage().startsWith("Paused at"), qPrintable(bar->currentMessage()));
+
+  window.resize(1280, 800);
+  window.set_large_text(false);
+  QVERIFY2(wait_until([&] { return bar->currentMessage() == full; }),
+           qPrintable(bar->currentMessage()));
+  QVERIFY(bar->toolTip().isEmpty());
 }
 
 void RunControlsTest::pause_step_and_rewind() {
