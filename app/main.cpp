@@ -1,6 +1,8 @@
 // pianoaction: the Piano Action Trainer. Subcommands run headless work (DESIGN.md section 5).
 #include <cmath>
+#include <cctype>
 #include <cstdlib>
+#include <filesystem>
 #include <exception>
 #include <iostream>
 #include <sstream>
@@ -10,6 +12,7 @@
 #include "command_line.h"
 #include "commands.h"
 #include "core/error.h"
+#include "io/csv.h"
 #ifdef PAT_HAVE_UI
 #include "trainer_app.h"
 #endif
@@ -183,6 +186,19 @@ int run_window(int argc, char** argv, const std::vector<std::string>& args) {
   options.action_given = cl.has("--action");
   options.action = cl.value_or("--action", "grand");
   options.screenshot = cl.value_or("--screenshot", "");
+  if (!options.screenshot.empty()) {
+    // refused before the window plays its blow, as the subcommands check their outputs first
+    const std::string& shot = options.screenshot;
+    std::string extension = std::filesystem::path(shot).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png")
+      throw pat::InputError("--screenshot " + shot + ": the screenshot is a PNG; name it .png");
+    try {
+      pat::check_output_path(shot);
+    } catch (const pat::InputError& e) {
+      throw pat::InputError(std::string("--screenshot ") + e.what());
+    }
+  }
   if (cl.has("--size")) {
     // WIDTHxHEIGHT in pixels, e.g. 1024x640 (a projector) or 1920x1080
     const std::string size = cl.value("--size");

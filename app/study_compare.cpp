@@ -117,13 +117,13 @@ int run_study_compare(const std::vector<std::string>& args) {
       if (a.run.status != "ok") std::cout << " (run stopped: " << a.run.stop_cause << ")";
       std::cout << "\n";
       // each limit beside the paper's figures (said when it disagrees)
-      const auto limit = [&](const char* stroke, const SweepResult& sweep, double f_max_hz) {
+      const auto limit = [&](const char* stroke, const SweepResult& sweep) {
         std::cout << "    " << stroke << " stroke: " << sweep_summary(sweep) << "\n";
-        const std::string paper = compare_with_paper(sweep, a.action, f_max_hz);
+        const std::string paper = compare_with_paper(sweep, a.action);
         if (!paper.empty()) std::cout << "      " << paper << "\n";
       };
-      if (a.full_stroke) limit("full", *a.full_stroke, options.f_max_full_hz);
-      if (a.half_stroke) limit("half", *a.half_stroke, options.f_max_half_hz);
+      if (a.full_stroke) limit("full", *a.full_stroke);
+      if (a.half_stroke) limit("half", *a.half_stroke);
     }
     if (!out_path.empty()) std::cout << "  overlay written to " << out_path << "\n";
   }

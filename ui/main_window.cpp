@@ -158,12 +158,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                    "and press \"Start from rest\".")
                     .arg(why));
   });
+  // a blow struck, a key played or the run played on: a refused input's or a stopped run's
+  // banner is old news (it stayed red over the next run)
   connect(controller_, &PlaybackController::inputChanged, this, [this](const QString& what) {
     running_input_ = what;
+    hide_banner();
     show_run_status();
   });
   connect(controller_, &PlaybackController::playingChanged, this, [this](bool playing) {
-    if (playing) setting_waits_ = false;
+    if (playing) {
+      setting_waits_ = false;
+      hide_banner();
+    }
     show_run_status();
   });
   // moved through the run after a screw turned while paused: the status line names the step

@@ -633,17 +633,14 @@ void PracticePanel::export_from_dialog() {
       who.isEmpty() ? QString()
                     : tr("practice report %1.pdf")
                           .arg(QString(who).replace(QRegularExpression("[/\\\\:*?\"<>|]"), "_"));
-  QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"),
+  const QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"),
                                              export_path(suggested), tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
-  // a name typed without its extension ("session") still makes session.pdf and session.csv
-  if (!pdf.endsWith(".pdf", Qt::CaseInsensitive)) pdf += ".pdf";
-  QString csv = pdf;
-  csv.replace(QRegularExpression("\\.pdf$", QRegularExpression::CaseInsensitiveOption), "");
-  csv += ".csv";
+  // "session", "session.pdf" and "session.csv" all make session.pdf and session.csv
+  const ReportPaths paths = report_paths(pdf);
   try {
-    export_report(pdf, csv);
-    remember_export_folder(pdf);
+    export_report(paths.pdf, paths.csv);
+    remember_export_folder(paths.pdf);
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
   }

@@ -97,4 +97,11 @@ void write_session_pdf(const QString& path, const PracticeSession& session) {
   }
 }
 
+ReportPaths report_paths(const QString& chosen) {
+  QString stem = chosen;
+  while (stem.endsWith(".pdf", Qt::CaseInsensitive) || stem.endsWith(".csv", Qt::CaseInsensitive))
+    stem.chop(4);
+  return {stem + ".pdf", stem + ".csv"};
+}
+
 }  // namespace pat::ui

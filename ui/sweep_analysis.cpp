@@ -95,7 +95,7 @@ AnalysisResult sweep_result(const SweepResult& r, const SweepOptions& o, const s
             .arg(r.mode == SweepMode::chirp ? QObject::tr("steps") : QObject::tr("chirp"));
 
   // beside the paper's figures, and said when it disagrees (not only quoting the fact)
-  const std::string paper = compare_with_paper(r, kind, o.f_max_hz, settings);
+  const std::string paper = compare_with_paper(r, kind, settings);
   if (!paper.empty()) result.summary += " " + QString::fromStdString(paper);
 
   result.table = {{QObject::tr("maximum repetition frequency"),

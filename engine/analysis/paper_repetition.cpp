@@ -15,7 +15,7 @@ std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& 
   return std::nullopt;
 }
 
-std::string compare_with_paper(const SweepResult& result, const std::string& kind, double f_max_hz,
+std::string compare_with_paper(const SweepResult& result, const std::string& kind,
                                const std::string& settings) {
   const auto paper = paper_repetition_limits(kind, result.stroke);
   // an upright has no repetition lever: its jack slips back under the butt only once the key
@@ -41,11 +41,11 @@ std::string compare_with_paper(const SweepResult& result, const std::string& kin
   const double found = *result.max_frequency_hz;
   if (!result.limit_found) {
     // the repeating range runs to the band's end: only a lower bound
-    text += "this sweep's repeating range reaches its top, " + format_number(f_max_hz) + " Hz";
-    if (f_max_hz > high + kPaperAgreementHz && !paper->experiment_at_least)
+    text += "this sweep's repeating range reaches its top, " + format_number(found) + " Hz";
+    if (found > high + kPaperAgreementHz && !paper->experiment_at_least)
       return text + ", above both" + why;
-    return text + (f_max_hz < low - kPaperAgreementHz ? ": raise the maximum frequency to compare."
-                                                      : ", which agrees so far.");
+    return text + (found < low - kPaperAgreementHz ? ": raise the maximum frequency to compare."
+                                                   : ", which agrees so far.");
   }
   text += "this sweep's " + format_number(found) + " Hz ";
   if (found < low - kPaperAgreementHz) return text + "is below both" + why;

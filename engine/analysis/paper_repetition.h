@@ -26,13 +26,13 @@ std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& 
 /// A sweep's maximum beside the paper's: "The paper (Table 2): model 13 Hz, experiment 14 Hz;
 /// this sweep's 17.5 Hz is above both, a known limit of this model (README, Limits)." Within
 /// kPaperAgreementHz of the span of the two it "agrees"; above an "at least" experiment it
-/// agrees with that bound; a sweep that found no limit up to `f_max_hz` is compared by that
-/// bound. `settings`: the action's adjusters turned from regulation (regulation_state:
+/// agrees with that bound; a sweep that found no limit in its band is compared by its last judged
+/// cycle's frequency (its max_frequency_hz, a lower bound). `settings`: the action's adjusters turned from regulation (regulation_state:
 /// "regulated", or empty, when every setting reads within tolerance): a deregulated action's
 /// difference is put down to them, not
 /// to the model. Empty when the paper gives no figure or the sweep has no maximum, but for the
 /// upright's halfway stroke without one, which says why (no repetition lever).
-std::string compare_with_paper(const SweepResult& result, const std::string& kind, double f_max_hz,
+std::string compare_with_paper(const SweepResult& result, const std::string& kind,
                                const std::string& settings = "regulated");
 
 /// How far outside the paper's model–experiment span a maximum still counts as agreeing, Hz:

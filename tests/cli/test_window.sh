@@ -60,6 +60,16 @@ grep -q -- "--view: must be whole, escapement or checking (got 'sideways')" err.
   || fail "the --view error: $(cat err.txt)"
 [ ! -e x.png ] || fail "a screenshot was written despite the bad --view"
 
+# a screenshot that cannot be written is refused before the window plays its blow
+if "$exe" --action grand --screenshot /nonexistent-folder/shot.png 2> err.txt; then
+  fail "a screenshot into a missing folder was accepted"
+fi
+grep -q "the folder '/nonexistent-folder' does not exist" err.txt \
+  || fail "the missing folder's error: $(cat err.txt)"
+if "$exe" --action grand --screenshot shot.jpg 2> err.txt; then fail "a .jpg screenshot accepted"; fi
+grep -q -- "--screenshot shot.jpg: the screenshot is a PNG" err.txt \
+  || fail "the .jpg error: $(cat err.txt)"
+
 # a broken action file is refused before any window opens
 "$exe" --action /nonexistent/preset.json --screenshot x.png 2> err.txt && fail "bad --action accepted"
 grep -q "preset.json" err.txt || fail "the error does not name the preset file"

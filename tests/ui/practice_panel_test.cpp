@@ -3,6 +3,7 @@
 // score, export the report (PDF and CSV); a broken exercise file is refused with a message
 // naming the file and the field; the regulation panel is hidden while practising.
 #include "practice_panel.h"
+#include "practice_report.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -56,7 +57,21 @@ class PracticePanelTest : public QObject {
   void readings_wait_for_the_playback();
   void correction_sliders_say_which_way_is_which();
   void a_result_left_behind_by_a_new_exercise_is_dropped();
+  void the_report_files_take_the_name_chosen();
 };
+
+// The save dialog's name, typed with either of the report's extensions or none, gives NAME.pdf
+// and NAME.csv (a name typed as "rep.csv" had written rep.csv.pdf and rep.csv.csv).
+void PracticePanelTest::the_report_files_take_the_name_chosen() {
+  using pat::ui::report_paths;
+  for (const QString& chosen : {"/tmp/r/rep", "/tmp/r/rep.pdf", "/tmp/r/rep.csv", "/tmp/r/rep.PDF",
+                                "/tmp/r/rep.csv.pdf"}) {
+    QCOMPARE(report_paths(chosen).pdf, QString("/tmp/r/rep.pdf"));
+    QCOMPARE(report_paths(chosen).csv, QString("/tmp/r/rep.csv"));
+  }
+  // a dot inside the name is the name's own
+  QCOMPARE(report_paths("/tmp/r/class 3.b").pdf, QString("/tmp/r/class 3.b.pdf"));
+}
 
 /// Answers the next question box that opens (modal: the click that opens it returns only once
 /// it is answered) with `button`.

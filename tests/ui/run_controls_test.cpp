@@ -402,6 +402,15 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   // an analysis has no run input, and may have run before a slider moved
   QVERIFY(!window.export_metadata(false).count("input"));
   QVERIFY(!window.export_metadata(false).count("settings"));
+  // a blow struck on the run that went on: the refusal's red banner is old news (it stayed over
+  // the next run), and so it is when a paused run is played on
+  c->strike("force:pulse:10:20");
+  QVERIFY2(window.banner_text().isEmpty(), qPrintable(window.banner_text()));
+  c->pause();
+  window.start("csv:" + path.toStdString());
+  QVERIFY(!window.banner_text().isEmpty());
+  c->play();
+  QVERIFY2(window.banner_text().isEmpty(), qPrintable(window.banner_text()));
 
   // a well-formed file the action refuses (a key angle beyond its travel): the worker's message
   // says the run could not start, not that a setting made it diverge
