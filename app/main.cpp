@@ -1,9 +1,9 @@
 // pianoaction: the Piano Action Trainer. Subcommands run headless work (DESIGN.md section 5).
-#include <cmath>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <exception>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <string>

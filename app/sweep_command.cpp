@@ -57,8 +57,7 @@ int run_sweep(const std::vector<std::string>& args) {
   } else {
     std::cout << model.name << ", " << stroke_name(result.stroke) << " stroke, "
               << sweep_mode_name(result.mode) << ": " << sweep_summary(result) << "\n";
-    const std::string paper =
-        compare_with_paper(result, model.kind, regulation_state(model));
+    const std::string paper = compare_with_paper(result, model.kind, regulation_state(model));
     if (!paper.empty()) std::cout << "  " << paper << "\n";
     std::cout << "  " << result.simulated_s << " s simulated in " << result.wall_s << " s\n";
     if (!out_path.empty()) std::cout << "  cycles written to " << out_path << "\n";

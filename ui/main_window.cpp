@@ -128,8 +128,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
       replay_model_shown_ = frame.model;
       regulation_->set_replay(frame.model.get());
       // and the status line says where the screw is now
-      running_input_ = tr("a recorded replay, settings %1")
-                           .arg(QString::fromStdString(adjuster_settings_text(*frame.model)));
+      running_input_ = tr("a recorded replay, %1").arg(adjuster_settings_words(*frame.model));
       show_run_status();
     }
     // paused: a step or seek moves its time; playing frames recorded before (after a rewind),

@@ -137,9 +137,12 @@ void PlotStack::show_time(double t) {
     return;
   }
   if (following_) {
-    // zoomed on the data at first, then a window sliding with the time
+    // zoomed on the data at first, then a window sliding with the time; a time taken back into
+    // the recorded run (a rewind) shows the window's span of what was recorded after it (it had
+    // shown the first 5 ms only)
     const double lo = std::max(0.0, t - window_s_ * 0.95);
-    const double hi = std::max(lo + std::min(window_s_, 1.15 * t), lo + 5e-3);
+    const double hi =
+        std::max(lo + std::min(window_s_, 1.15 * std::max(t, latest_t_) - lo), lo + 5e-3);
     for (PlotPanel* panel : panels()) {
       panel->set_x_range(lo, hi);
       panel->fit_values();

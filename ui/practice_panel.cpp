@@ -634,7 +634,7 @@ void PracticePanel::export_from_dialog() {
                     : tr("practice report %1.pdf")
                           .arg(QString(who).replace(QRegularExpression("[/\\\\:*?\"<>|]"), "_"));
   const QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"),
-                                             export_path(suggested), tr("PDF (*.pdf)"));
+                                                   export_path(suggested), tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
   // "session", "session.pdf" and "session.csv" all make session.pdf and session.csv
   const ReportPaths paths = report_paths(pdf);

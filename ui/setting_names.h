@@ -5,6 +5,7 @@
 
 #include <QObject>
 #include <QString>
+#include <QStringList>
 #include <cmath>
 #include <string>
 
@@ -43,6 +44,17 @@ inline QString adjuster_part(const Adjuster& adjuster) {
   const std::size_t colon = adjuster.description.find(':');
   if (colon == std::string::npos) return {};
   return QString::fromStdString(adjuster.description.substr(0, colon));
+}
+
+/// The adjusters turned from regulation as a class reads them, "hammer blow +1.25 mm, let-off
+/// -0.50 mm" (to 0.01 mm; a turn that rounds to zero, such as automatic regulation's few
+/// micrometres, left out), or "as regulated".
+inline QString adjuster_settings_words(const ActionModel& model) {
+  QStringList turned;
+  for (const Adjuster& a : model.adjusters)
+    if (const QString mm = adjuster_mm_text(a.value * 1e3, 2, true); mm != QStringLiteral("0.00"))
+      turned << setting_title(a.name) + " " + mm + " mm";
+  return turned.isEmpty() ? QObject::tr("as regulated") : turned.join(", ");
 }
 
 }  // namespace pat::ui

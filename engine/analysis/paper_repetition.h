@@ -27,11 +27,11 @@ std::optional<PaperRepetitionLimits> paper_repetition_limits(const std::string& 
 /// this sweep's 17.5 Hz is above both, a known limit of this model (README, Limits)." Within
 /// kPaperAgreementHz of the span of the two it "agrees"; above an "at least" experiment it
 /// agrees with that bound; a sweep that found no limit in its band is compared by its last judged
-/// cycle's frequency (its max_frequency_hz, a lower bound). `settings`: the action's adjusters turned from regulation (regulation_state:
-/// "regulated", or empty, when every setting reads within tolerance): a deregulated action's
-/// difference is put down to them, not
-/// to the model. Empty when the paper gives no figure or the sweep has no maximum, but for the
-/// upright's halfway stroke without one, which says why (no repetition lever).
+/// cycle's frequency (its max_frequency_hz, a lower bound). `settings`: the action's adjusters
+/// turned from regulation (regulation_state: "regulated", or empty, when every setting reads within
+/// tolerance): a deregulated action's difference is put down to them, not to the model. Empty when
+/// the paper gives no figure or the sweep has no maximum, but for the upright's halfway stroke
+/// without one, which says why (no repetition lever).
 std::string compare_with_paper(const SweepResult& result, const std::string& kind,
                                const std::string& settings = "regulated");
 

@@ -50,8 +50,8 @@ TEST(PaperRepetition, SaysWhetherASweepAgrees) {
   const std::string bound = compare_with_paper(sweep(Stroke::half, 23, true), "grand");
   EXPECT_TRUE(has(bound, "agrees with the experiment's bound (at least 20 Hz)")) << bound;
   // inside the span: between them
-  EXPECT_TRUE(has(compare_with_paper(sweep(Stroke::full, 13.5, true), "grand"),
-                  "agrees (between them)"));
+  EXPECT_TRUE(
+      has(compare_with_paper(sweep(Stroke::full, 13.5, true), "grand"), "agrees (between them)"));
 }
 
 TEST(PaperRepetition, ADeregulatedActionsDifferenceIsPutDownToItsSettings) {

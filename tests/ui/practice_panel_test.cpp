@@ -3,7 +3,6 @@
 // score, export the report (PDF and CSV); a broken exercise file is refused with a message
 // naming the file and the field; the regulation panel is hidden while practising.
 #include "practice_panel.h"
-#include "practice_report.h"
 
 #include <QApplication>
 #include <QComboBox>
@@ -33,6 +32,7 @@
 #include "playback_controller.h"
 #include "plot_stack.h"
 #include "practice/exercise.h"
+#include "practice_report.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
 #include "run_controls.h"
@@ -64,8 +64,8 @@ class PracticePanelTest : public QObject {
 // and NAME.csv (a name typed as "rep.csv" had written rep.csv.pdf and rep.csv.csv).
 void PracticePanelTest::the_report_files_take_the_name_chosen() {
   using pat::ui::report_paths;
-  for (const QString& chosen : {"/tmp/r/rep", "/tmp/r/rep.pdf", "/tmp/r/rep.csv", "/tmp/r/rep.PDF",
-                                "/tmp/r/rep.csv.pdf"}) {
+  for (const QString& chosen :
+       {"/tmp/r/rep", "/tmp/r/rep.pdf", "/tmp/r/rep.csv", "/tmp/r/rep.PDF", "/tmp/r/rep.csv.pdf"}) {
     QCOMPARE(report_paths(chosen).pdf, QString("/tmp/r/rep.pdf"));
     QCOMPARE(report_paths(chosen).csv, QString("/tmp/r/rep.csv"));
   }

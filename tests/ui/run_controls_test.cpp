@@ -276,6 +276,9 @@ void RunControlsTest::pause_step_and_rewind() {
                words.find(" s a 10 N blow held 20 ms, struck") != std::string::npos,
            words.c_str());
   // Rewind goes first to just before the blow struck (a class sees it again at once), ...
+  const double played_to = c->display_time();
+  // a span shorter than the run played, so that its start is out of the window
+  window.plots()->set_window(0.5 * played_to);
   c->rewind();
   QVERIFY2(c->current_frame().t < struck_at && c->current_frame().t > struck_at - 0.005,
            qPrintable(QString("rewound to %1 s, the blow struck at %2 s")
@@ -290,6 +293,12 @@ void RunControlsTest::pause_step_and_rewind() {
   for (const PlotPanel* panel : window.plots()->panels()) {
     QCOMPARE(panel->time_mark().value_or(-1.0), 0.0);
     QVERIFY(panel->x_range().first <= 0.0);  // the followed window moved back to show it
+    // and shows the recorded run after it over the window's span (it had shown the first 5 ms)
+    const double expected_end = std::min(window.plots()->window(), played_to);
+    QVERIFY2(panel->x_range().second >= 0.99 * expected_end,
+             qPrintable(QString("plots end at %1 s, the run played to %2 s")
+                            .arg(panel->x_range().second)
+                            .arg(played_to)));
   }
   // played again from there, the status names what drove the frames played, not the last blow
   // struck (a class read "with a blow struck (force:pulse:2:40)" under the replayed ff blow)
