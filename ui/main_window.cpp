@@ -556,12 +556,22 @@ void MainWindow::build_practice() {
   // measure every setting against its target: both hidden while an exercise runs; closing the
   // practice dock returns to the regulated action
   connect(practice_, &PracticePanel::practiceActive, this, [this](bool active) {
-    if (active && !practising_) {  // the class's own input and speed, given back afterwards
+    if (active && !practice_took_over_) {  // the class's own input and speed, given back after
       input_before_practice_ = run_controls_->input_form()->spec();
       speed_before_practice_ = run_controls_->speed_index();
+      practice_took_over_ = true;
     }
     practising_ = active;
     set_practice_layout(active);
+  });
+  // scored: the exercise is over and its answer on show, so the measurements, the other actions
+  // and the presets come back (they had stayed locked until practice mode was left, with nothing
+  // to say so); the regulation panel shows the hidden settings beside the answer, and the
+  // practice tab stays in front with the score
+  connect(practice_, &PracticePanel::scored, this, [this] {
+    practising_ = false;
+    set_practice_layout(false);
+    practice_dock_->raise();
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
@@ -586,14 +596,18 @@ void MainWindow::set_practice_layout(bool practising) {
 }
 
 void MainWindow::end_practice() {
-  if (!practising_) return;
+  if (!practice_took_over_) return;
+  practice_took_over_ = false;
   practising_ = false;
   end_practice_test_shown();
   set_practice_layout(false);
   // the tests shown took over the run input and the speed: the class's own come back
   run_controls_->input_form()->set_spec(input_before_practice_);
   run_controls_->set_speed_index(speed_before_practice_);
-  if (!action_name_.empty()) open_action(action_name_);
+  if (!action_name_.empty()) {
+    open_action(action_name_);
+    hold_at_rest();  // the regulated action waits at rest for Play, as at launch
+  }
 }
 
 void MainWindow::show_practice(bool on) {

@@ -212,12 +212,14 @@ class MainWindow : public QMainWindow {
   /// analyses docks, the plots and their exports, the readout's and arrows' numbers.
   void set_practice_layout(bool practising);
   std::vector<QAction*> measurement_actions_;  ///< plot exports and plot span: off in practice
-  std::string input_before_practice_;          ///< the run input when an exercise began
-  int speed_before_practice_ = 3;              ///< and the speed (index into RunControls::speeds)
-  QString running_input_;        ///< what drives the key (PlaybackController::inputChanged)
-  QString running_input_shown_;  ///< what the status line names for the frames being played
-  bool setting_waits_ = false;   ///< a setting changed while paused in a run, not yet played
-  std::string demo_setting_;     ///< the setting the running (or last) deregulation demo moves
+  /// An exercise took over the run input and the speed (given back when practice mode ends).
+  bool practice_took_over_ = false;
+  std::string input_before_practice_;  ///< the run input when an exercise began
+  int speed_before_practice_ = 3;      ///< and the speed (index into RunControls::speeds)
+  QString running_input_;              ///< what drives the key (PlaybackController::inputChanged)
+  QString running_input_shown_;        ///< what the status line names for the frames being played
+  bool setting_waits_ = false;         ///< a setting changed while paused in a run, not yet played
+  std::string demo_setting_;  ///< the setting the running (or last) deregulation demo moves
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

@@ -273,7 +273,19 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
         // the score does not count
         const int used = session_->tests_used() - session_->check_tests();
         const bool check = session_->tests_are_checks();
-        held_readings_ = [this, name, symptoms, seen, used, check] {
+        const int number = session_->tests_used();
+        held_readings_ = [this, name, symptoms, seen, used, check, number] {
+          // a heading per test, so that a check's findings on the corrected action are not read
+          // as more symptoms of the fault (they had run on under the earlier ones)
+          auto* heading = new QListWidgetItem(
+              check ? tr("Test %1, %2: a check of the correction").arg(number).arg(name)
+                    : tr("Test %1, %2").arg(number).arg(name));
+          QFont bold = symptoms_->font();
+          bold.setBold(true);
+          heading->setFont(bold);
+          heading->setFlags(Qt::ItemIsEnabled);  // a heading, not a finding to select
+          heading->setBackground(symptoms_->palette().alternateBase());
+          symptoms_->addItem(heading);
           if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
             // "nothing" as far as a technician's gauge or eye tells (engine:
             // noticeable_difference), which the regulation panel's ±0.05 mm tolerances are finer

@@ -208,6 +208,8 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY2(!panel->symptom_lines().isEmpty(), qPrintable(panel->status_text()));
   // key dip +1 mm of punching (shallower) and the backcheck bent toward the hammer
   QVERIFY2(symptoms.contains("Key dip shallow"), qPrintable(symptoms));
+  // each test's findings under a heading of its own
+  QVERIFY2(symptoms.contains("Test 3, Rest geometry\n"), qPrintable(symptoms));
 
   // answer: first half right, then right
   const auto answers = pat::exercise_answers(panel->session()->exercise());
@@ -266,6 +268,11 @@ void PracticePanelTest::walk_through_an_exercise() {
                            "technician's gauge or eye tells (") &&
                last.contains(" mm"),
            qPrintable(last));
+  // under a heading that says it checks the correction: its findings are not the fault's
+  const QStringList lines = panel->symptom_lines();
+  QVERIFY2(lines.at(lines.size() - 2).startsWith("Test ") &&
+               lines.at(lines.size() - 2).endsWith("Rest geometry: a check of the correction"),
+           qPrintable(lines.join("\n")));
 
   QSignalSpy scored(panel, &PracticePanel::scored);
   panel->finish();
@@ -279,6 +286,16 @@ void PracticePanelTest::walk_through_an_exercise() {
   // the scored session is remembered for the next run of the program
   QVERIFY2(panel->past_sessions().value(0).contains("Ada, Grand, level 2"),
            qPrintable(panel->past_sessions().value(0)));
+  // scored, the exercise is over: the other actions, the presets and the measurements come back
+  // (the Action menu had stayed greyed out until practice mode was left), the score in front
+  for (QAction* action : window.menuBar()->findChildren<QAction*>())
+    if (action->text().contains("preset") || action->text().contains("rand") ||
+        action->text().contains("pright"))
+      QVERIFY2(action->isEnabled(), qPrintable(action->text()));
+  QVERIFY(window.findChild<QDockWidget*>("practice_dock")->isVisibleTo(&window));
+  QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
+  QVERIFY(window.view()->measurements_visible());
+  QVERIFY(plot_export_enabled());
 
   QTemporaryDir dir;
   const QString pdf = dir.filePath("session.pdf"), csv = dir.filePath("session.csv");
@@ -306,6 +323,10 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (const pat::Adjuster& a : window.model()->adjusters) QCOMPARE(a.value, 0.0);
   for (QAction* action : window.menuBar()->findChildren<QAction*>())
     if (action->text().contains("preset")) QVERIFY(action->isEnabled());
+  // at rest, waiting for Play, as at launch (a run paused before the exercise had played on)
+  QTest::qWait(200);
+  QVERIFY(!window.controller()->playing());
+  QCOMPARE(window.controller()->display_time(), 0.0);
 
   // reopened after the score, the exercise is over: the regulated action stays, with its panels
   practice_mode->trigger();
