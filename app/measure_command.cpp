@@ -56,11 +56,21 @@ int run_measure(const std::vector<std::string>& args) {
   }
   std::cout << model.name << ": the regulation settings as a technician reads them\n";
   print_settings_table(std::cout, model, readings, "adjusters turned from the preset's positions");
-  std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians "
-               "aim for about 1.1 mm): "
-            << (aftertouch_problem.empty() ? number_in(aftertouch_mm, "mm") + " mm"
-                                           : "cannot be read: " + aftertouch_problem)
-            << "\n";
+  // the gauge technicians set it with: .035-.045 in on a grand's front rail (domain.md, table
+  // row 8: Yamaha about .035, Steinway .045)
+  constexpr double kAftertouchLowMm = 0.035 * 25.4, kAftertouchHighMm = 0.045 * 25.4;
+  std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians set "
+               ".035-.045 in, 0.9-1.1 mm): ";
+  if (!aftertouch_problem.empty())
+    std::cout << "cannot be read: " << aftertouch_problem << "\n";
+  else
+    std::cout << number_in(aftertouch_mm, "mm") << " mm"
+              << (aftertouch_mm >= kAftertouchLowMm - 0.005 &&
+                          aftertouch_mm <= kAftertouchHighMm + 0.005
+                      ? ", within that"
+                  : aftertouch_mm < kAftertouchLowMm ? ", less than that"
+                                                     : ", more than that")
+              << "\n";
   std::cout << (all_within ? "every setting within its tolerance\n"
                            : "not every setting is within its tolerance (regulate adjusts them)\n");
   return 0;

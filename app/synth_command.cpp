@@ -55,8 +55,8 @@ int run_synth(const std::vector<std::string>& args) {
                      .dump(1)
               << "\n";
   else
-    std::cout << table.rows.size() << " samples (" << table.metadata.at("synth_effects")
-              << ") written to " << out_path << "\n";
+    std::cout << table.rows.size() << " samples written to " << out_path
+              << " (effects: " << table.metadata.at("synth_effects") << ")\n";
   return 0;
 }
 

@@ -313,11 +313,11 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
   const int extra_tests = std::max(0, diagnosis_tests - static_cast<int>(all_tests().size()));
   const int slow_periods = std::max(0, static_cast<int>((t_s - 600.0) / 120.0));
   s.economy = std::max(0.0, 10.0 - extra_tests - slow_periods);
-  s.notes.push_back("economy " + format_number(s.economy) +
-                    "/10: " + std::to_string(diagnosis_tests) + " tests to the diagnosis (" +
-                    std::to_string(distinct.size()) + " different), " +
-                    std::to_string(check_tests_) + " checks of the correction (free), " +
-                    format_number(std::round(t_s)) + " s");
+  s.notes.push_back("economy " + format_number(s.economy) + "/10: " +
+                    std::to_string(diagnosis_tests) + (diagnosis_tests == 1 ? " test" : " tests") +
+                    " to the diagnosis (" + std::to_string(distinct.size()) + " different), " +
+                    std::to_string(check_tests_) + (check_tests_ == 1 ? " check" : " checks") +
+                    " of the correction (free), " + format_number(std::round(t_s)) + " s");
   s.hint_penalty = 5.0 * hints_used_;
   if (hints_used_ > 0)
     s.notes.push_back(std::to_string(hints_used_) + " hints (−" + format_number(s.hint_penalty) +
