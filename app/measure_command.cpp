@@ -43,6 +43,7 @@ int run_measure(const std::vector<std::string>& args) {
       nlohmann::json setting = setting_json(readings[i]);
       setting["measurement"] = model.regulation[i].measurement;
       setting["problem"] = text_or_null(readings[i].problem);
+      setting["note"] = text_or_null(readings[i].note);
       settings.push_back(setting);
     }
     std::cout << nlohmann::json{{"action", model.kind},

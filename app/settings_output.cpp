@@ -71,6 +71,7 @@ void print_settings_table(std::ostream& out, const ActionModel& model,
       out << "cannot be read: " << s.problem;
     else if (!s.within_tolerance())
       out << "OUT OF TOLERANCE";
+    if (!s.note.empty()) out << (s.problem.empty() && s.within_tolerance() ? "" : "; ") << s.note;
     out << "\n";
     const int a = model.adjuster_index(s.name);
     if (a >= 0 && signed_mm(s.adjuster_mm) != "0.000 mm" && !model.adjusters[a].description.empty())

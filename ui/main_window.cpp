@@ -211,8 +211,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   // live measured values and automatic regulation, both off the window's thread
   measurements_ = new MeasurementService(this);
   connect(measurements_, &MeasurementService::measured, this,
-          [this](const QString& name, double value) {
-            if (RegulationRow* row = regulation_->row(name.toStdString())) row->set_measured(value);
+          [this](const QString& name, double value, const QString& note) {
+            RegulationRow* row = regulation_->row(name.toStdString());
+            // how it was read goes to the log once too, as a failed reading's reason does
+            if (row && row->set_measured(value, note) && !note.isEmpty() && !practising_)
+              regulation_->log(tr("%1: %2 %3.")
+                                   .arg(setting_title(name.toStdString()),
+                                        setting_value_text(value, row->unit()), note));
           });
   connect(measurements_, &MeasurementService::failed, this,
           [this](const QString& name, const QString& reason) {

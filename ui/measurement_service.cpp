@@ -78,13 +78,17 @@ void MeasurementService::run(std::shared_ptr<const ActionModel> model, int gener
     for (const RegulationSetting& setting : model->regulation) {
       if (!current()) break;
       const QString name = QString::fromStdString(setting.name);
-      try {
-        const double value = measure_setting(*model, setting.name, &rest);
-        QMetaObject::invokeMethod(this, [this, name, value, generation] {
-          if (generation_.load() == generation) emit measured(name, value);
+      // as a technician reads it (with the drop screw out of the way where the lever would hide
+      // the let-off, which the note says)
+      const SettingReading reading = read_setting(*model, setting, &rest);
+      if (reading.problem.empty()) {
+        const double value = reading.measured;
+        const QString note = QString::fromStdString(reading.note);
+        QMetaObject::invokeMethod(this, [this, name, value, note, generation] {
+          if (generation_.load() == generation) emit measured(name, value, note);
         });
-      } catch (const std::exception& e) {
-        const QString reason = QString::fromStdString(e.what());
+      } else {
+        const QString reason = QString::fromStdString(reading.problem);
         QMetaObject::invokeMethod(this, [this, name, reason, generation] {
           if (generation_.load() == generation) emit failed(name, reason);
         });

@@ -27,8 +27,9 @@ class MeasurementService : public QObject {
   bool busy() const;
 
  signals:
-  /// A setting measured on the latest requested model (its unit).
-  void measured(const QString& setting, double value);
+  /// A setting measured on the latest requested model (its unit); `note`: how it was read when
+  /// not as the action stands (SettingReading::note), else empty.
+  void measured(const QString& setting, double value, const QString& note);
   /// A setting that could not be measured; the reason from the engine.
   void failed(const QString& setting, const QString& reason);
   /// Every setting of the latest model measured.

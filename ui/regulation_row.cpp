@@ -96,16 +96,20 @@ void RegulationRow::set_value_mm(double mm) {
   slider_->setValue(static_cast<int>(std::round(mm * kSliderStepsPerMm)));
 }
 
-void RegulationRow::set_measured(double value) {
+bool RegulationRow::set_measured(double value, const QString& note) {
+  const bool news = note != note_;
   measured_ = value;
+  note_ = note;
   failure_.clear();
   measuring_ = false;
   show_reading();
+  return news;
 }
 
 bool RegulationRow::set_measurement_failed(const QString& reason) {
   const bool news = failure_ != reason;
   failure_ = reason;
+  note_.clear();
   measured_.reset();
   measuring_ = false;
   show_reading();
@@ -137,7 +141,8 @@ void RegulationRow::show_reading() {
   const std::string unit = setting_ ? setting_->unit : std::string("mm");
   if (measured_) {
     measured_label_->setText(setting_value_text(*measured_, unit));
-    measured_label_->setToolTip(tr("Measured the way a technician measures it"));
+    measured_label_->setToolTip(note_.isEmpty() ? tr("Measured the way a technician measures it")
+                                                : tr("Measured %1").arg(note_));
     const bool bad = out_of_tolerance();
     measured_label_->setStyleSheet(
         measuring_ ? "color: #888888; padding: 1px 3px;"

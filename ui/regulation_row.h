@@ -30,7 +30,9 @@ class RegulationRow : public QObject {
   /// Moves slider and spin box without emitting valueChanged.
   void set_value_mm(double mm);
   /// The measured value (setting's unit); colours it against the tolerance band.
-  void set_measured(double value);
+  /// A reading; `note` (how it was read, when not as the action stands) goes to its tooltip.
+  /// True when the note is new (not the one shown with the previous reading).
+  bool set_measured(double value, const QString& note = {});
   /// The measurement could not be taken: shows why.
   /// Shows "no reading" with `reason` in its tooltip; true when the reason is new (not the one
   /// shown already), for the caller to say it once where the class can read it.
@@ -50,6 +52,8 @@ class RegulationRow : public QObject {
   QSlider* slider() const { return slider_; }
   QDoubleSpinBox* spin_box() const { return spin_; }
   QLabel* measured_label() const { return measured_label_; }
+  /// The setting's unit ("mm", or "fraction"); "mm" for an adjuster without a setting.
+  std::string unit() const { return setting_ ? setting_->unit : std::string("mm"); }
 
  signals:
   /// The user moved the adjuster (mm).
@@ -65,6 +69,7 @@ class RegulationRow : public QObject {
   QLabel* target_label_;
   std::optional<double> measured_;
   QString failure_;  ///< why the last reading failed; empty after a reading
+  QString note_;     ///< how the last reading was taken, when not as the action stands
   bool measuring_ = false;
   bool replayed_ = false;
   /// Shows the reading kept (or "replay") in the measured column.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -132,6 +133,54 @@ double measure_aftertouch(const ActionModel& model, const RestState* given_rest)
   return press.aftertouch * 1e3;
 }
 
+SettingReading read_setting(const ActionModel& model, const RegulationSetting& s,
+                            const RestState* rest) {
+  SettingReading r;
+  r.name = s.name;
+  r.unit = s.unit;
+  r.target = s.target;
+  r.tolerance = s.tolerance;
+  r.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
+  const auto unreadable = [&](const std::string& why) {
+    r.measured = std::numeric_limits<double>::quiet_NaN();
+    r.problem = why;
+  };
+  try {
+    r.measured = measure_setting(model, s.name, rest);
+  } catch (const HammerCarriedElsewhere& e) {
+    const int clear = s.clear_adjuster.empty() ? -1 : model.adjuster_index(s.clear_adjuster);
+    if (clear < 0 || model.adjusters[clear].value == s.clear_position) {
+      unreadable(e.what());
+      return r;
+    }
+    // what a technician does on seeing it: the part that carries the hammer moved out of the
+    // way, the setting read, and (as the note says) the part to be set afterwards
+    const std::string& description = model.adjusters[clear].description;
+    const std::size_t colon = description.find(':');
+    const std::string part = colon != std::string::npos
+                                 ? description.substr(0, colon)
+                                 : setting_words(s.clear_adjuster) + " adjuster";
+    try {
+      r.measured =
+          measure_setting(with_adjuster(model, s.clear_adjuster, s.clear_position), s.name);
+      char held[32];
+      std::snprintf(held, sizeof held, "%.1f", e.held_gap() * 1e3);
+      char position[32];
+      std::snprintf(position, sizeof position, "%+.2f", s.clear_position * 1e3);
+      r.note = "read with the " + part + " out of the way (" + setting_words(s.clear_adjuster) +
+               " " + position + " mm), as technicians read " + setting_words(s.name) +
+               "; as the action stands the hammer is carried on to " + held +
+               " mm from the string and held there, so its " + setting_words(s.name) +
+               " is not seen";
+    } catch (const std::exception& again) {
+      unreadable(std::string(e.what()) + "; with the " + part + " out of the way: " + again.what());
+    }
+  } catch (const std::exception& e) {
+    unreadable(e.what());
+  }
+  return r;
+}
+
 std::vector<SettingReading> read_settings(const ActionModel& model,
                                           const ProgressCallback& progress, unsigned threads) {
   const RestState rest = find_rest_state(model);
@@ -139,21 +188,7 @@ std::vector<SettingReading> read_settings(const ActionModel& model,
   ProgressReporter reporter(progress, readings.size());
   run_parallel(
       readings.size(),
-      [&](std::size_t i) {
-        const RegulationSetting& s = model.regulation[i];
-        SettingReading& r = readings[i];
-        r.name = s.name;
-        r.unit = s.unit;
-        r.target = s.target;
-        r.tolerance = s.tolerance;
-        r.adjuster_mm = model.adjusters[model.adjuster_index(s.name)].value * 1e3;
-        try {
-          r.measured = measure_setting(model, s.name, &rest);
-        } catch (const std::exception& e) {
-          r.measured = std::numeric_limits<double>::quiet_NaN();
-          r.problem = e.what();
-        }
-      },
+      [&](std::size_t i) { readings[i] = read_setting(model, model.regulation[i], &rest); },
       &reporter, threads);
   return readings;
 }

@@ -32,6 +32,9 @@ struct SettingReading {
   double adjuster_mm = 0.0;  ///< adjuster offset from the preset's regulated position
   /// Why the setting could not be read there (measured is then NaN); empty when it was read.
   std::string problem;
+  /// How it was read when not as the action stands (read_setting): e.g. the grand's let-off
+  /// with the drop screw out of the way; empty when read as it stands.
+  std::string note;
   bool within_tolerance() const;  ///< false when not read
 };
 
@@ -47,7 +50,18 @@ double measure_setting(const ActionModel& model, const std::string& name,
 /// shows no escapement.
 double measure_aftertouch(const ActionModel& model, const RestState* rest = nullptr);
 
-/// Every setting of the model's regulation list, in the technician's order, from one rest state.
+/// Setting `setting` of `model` as a technician reads it (its problem when it cannot be read).
+/// Where a slow press shows the hammer carried by another part (HammerCarriedElsewhere: the
+/// grand's repetition lever, stopped by a drop screw that is too high for a let-off button
+/// screwed down) and the setting names the adjuster that is moved out of the way first
+/// (RegulationSetting::clear_adjuster, the drop screw), it is read again with that adjuster at
+/// its clear position, as technicians set let-off with the drop screw out of the way; `note` then
+/// says so. `rest` may pass the model's rest state.
+SettingReading read_setting(const ActionModel& model, const RegulationSetting& setting,
+                            const RestState* rest = nullptr);
+
+/// Every setting of the model's regulation list, in the technician's order, from one rest state
+/// (read_setting).
 /// A setting that cannot be read there gets measured = NaN and its `problem`; the others are
 /// still read. The settings are read in parallel on `threads` threads (0: one per core); each
 /// read one counts as an item of `progress`, which can cancel (throws Cancelled).

@@ -173,7 +173,8 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
                   "up (let-off −))"
             : std::string("in a slow key press the jack never lifts the hammer: another part "
                           "carries it ") +
-                  seen + ", so no let-off is seen");
+                  seen + ", so no let-off is seen",
+        held_gap);
   }
   if (!escaped)
     throw JackNeverEscapes(

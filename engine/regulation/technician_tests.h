@@ -26,7 +26,13 @@ double contact_gap(const ActionModel& model, int contact, const DofVector& q);
 /// failures: the way out is to move that part out of the way, not to search further.
 class HammerCarriedElsewhere : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  /// `held_gap`: the hammer–string distance (m) at which the other part holds it.
+  HammerCarriedElsewhere(const std::string& what, double held_gap)
+      : std::runtime_error(what), held_gap_(held_gap) {}
+  double held_gap() const { return held_gap_; }
+
+ private:
+  double held_gap_;
 };
 
 /// A slow press in which the hammer's tail meets the backcheck on its way up, before the jack

@@ -223,19 +223,39 @@ TEST(Regulation, DamperLiftingAfterLetOffIsNotReadAsAFraction) {
 
 // Reading every setting at once: a setting that cannot be read (the button 0.5 mm down: it trips
 // the jack before the jack takes the knuckle over from the repetition lever, so the jack never
-// lifts the hammer: no let-off and no drop) gets its reason and the others are still read, as
-// each reads alone; measure_settings throws that reason instead.
+// lifts the hammer: no drop) gets its reason and the others are still read, as each reads alone;
+// measure_settings throws that reason instead. The let-off is read as a technician reads it
+// then, with the drop screw out of the way (its clear_first move), and says so: the textbook
+// fault (a button screwed down, an early let-off) reads far out of tolerance instead of giving
+// no reading.
 TEST(Regulation, ReadingEverySettingReportsTheUnreadableOnesAndReadsTheRest) {
   const ActionModel model = with_adjuster(test::shipped("grand"), "let_off", 0.5e-3);
   const std::vector<SettingReading> readings = read_settings(model);
   ASSERT_EQ(readings.size(), model.regulation.size());
   for (const SettingReading& r : readings) {
-    if (r.name == "let_off" || r.name == "drop") {
+    if (r.name == "let_off") {
+      // the same as a press with the drop screw turned to its clear position (deterministic)
+      const RegulationSetting& s = model.regulation[model.setting_index("let_off")];
+      EXPECT_EQ(r.measured,
+                measure_setting(with_adjuster(model, s.clear_adjuster, s.clear_position), r.name));
+      // an early let-off: the hammer leaves the jack farther from the string than 1.5 mm, and
+      // farther than the 3 mm at which the lever holds it
+      EXPECT_GT(r.measured, 3.0);
+      EXPECT_FALSE(r.within_tolerance());
+      EXPECT_TRUE(r.problem.empty()) << r.problem;
+      EXPECT_NE(r.note.find("with the drop screw out of the way (drop +1.00 mm)"),
+                std::string::npos)
+          << r.note;
+      EXPECT_NE(r.note.find("held there"), std::string::npos) << r.note;
+      continue;
+    }
+    if (r.name == "drop") {
       EXPECT_TRUE(std::isnan(r.measured)) << r.name;
       EXPECT_NE(r.problem.find("never lifts the hammer"), std::string::npos) << r.problem;
       EXPECT_FALSE(r.within_tolerance()) << r.name;
       continue;
     }
+    EXPECT_TRUE(r.note.empty()) << r.name << ": " << r.note;
     EXPECT_TRUE(r.problem.empty()) << r.name << ": " << r.problem;
     EXPECT_EQ(r.measured, measure_setting(model, r.name)) << r.name;  // deterministic runs
   }

@@ -98,15 +98,26 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   QCOMPARE(row->out_of_tolerance(), std::abs(after - setting.target) > setting.tolerance);
 
   // a setting that cannot be read says why in the log, once: the let-off button 0.6 mm down
-  // trips the jack only after the repetition lever carries the hammer
+  // trips the jack only after the repetition lever carries the hammer, so there is no drop to
+  // read; the let-off itself is read with the drop screw out of the way, as a technician reads
+  // it, far out of tolerance, and the log says how it was read (the capstan back first: 1 mm
+  // up, it jams the jack in the lever's window, which no reading gets past)
+  window.set_adjuster("hammer_blow", 0.0);
   window.set_adjuster("let_off", 0.6);
   QVERIFY(wait_until(
-      [&] { return window.regulation()->log_text().contains("let-off: no reading"); }, 60000));
+      [&] { return window.regulation()->log_text().contains("drop: no reading"); }, 60000));
   QVERIFY2(window.regulation()->log_text().contains("repetition lever"),
            qPrintable(window.regulation()->log_text()));
-  // measured again (after another adjuster moved), a reason already shown is not logged again;
-  // a new one is (with the capstan 1 mm up from above, the first rounds may stop on the jack
-  // in the lever's window, the later ones name the lever carrying the hammer)
+  RegulationRow* let_off_row = window.regulation()->row("let_off");
+  QVERIFY(wait_until([&] { return !window.measurements()->busy(); }, 60000));
+  QVERIFY(let_off_row->measured() && *let_off_row->measured() > 3.0);
+  QVERIFY(let_off_row->out_of_tolerance());
+  QVERIFY2(let_off_row->measured_label()->toolTip().contains("drop screw out of the way"),
+           qPrintable(let_off_row->measured_label()->toolTip()));
+  QVERIFY2(window.regulation()->log_text().contains("drop screw out of the way"),
+           qPrintable(window.regulation()->log_text()));
+  // measured again (after another adjuster moved), a reason or note already shown is not logged
+  // again; a new one is
   RegulationRow* dip = window.regulation()->row("key_dip");
   QVERIFY(wait_until([&] { return !window.measurements()->busy() && dip->measured(); }, 60000));
   const double dip_before = *dip->measured();
@@ -117,13 +128,16 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
                std::abs(*dip->measured() - dip_before) > 0.1;
       },
       60000));
-  QVERIFY(!window.regulation()->row("let_off")->measured());  // still unreadable
+  QVERIFY(!window.regulation()->row("drop")->measured());  // still unreadable
   const QStringList lines = window.regulation()->log_text().split('\n');
-  QStringList let_off;
-  for (const QString& line : lines)
-    if (line.startsWith("let-off: no reading")) let_off << line;
-  for (int i = 1; i < let_off.size(); ++i)
-    QVERIFY2(let_off[i] != let_off[i - 1], qPrintable(let_off[i]));
+  for (const QString& start : {QString("drop: no reading"), QString("let-off: ")}) {
+    QStringList logged;
+    for (const QString& line : lines)
+      if (line.startsWith(start)) logged << line;
+    QVERIFY2(!logged.isEmpty(), qPrintable(start));
+    for (int i = 1; i < logged.size(); ++i)
+      QVERIFY2(logged[i] != logged[i - 1], qPrintable(logged[i]));
+  }
 }
 
 void RegulationPanelTest::reset_to_regulated() {
