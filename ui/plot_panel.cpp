@@ -90,6 +90,8 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
       request_replot();
       return;
     }
+    if (!rendering_) update_minimum_height();  // from the overhead this layout shows
+    fit_y_label(!rendering_);                  // a picture at its own size too
     if (plot_->axisRect()->height() == fitted_height_px_) return;  // the same: no new replot
     fit_values();
     request_replot();
@@ -179,15 +181,11 @@ void PlotPanel::apply_fonts() {
   legend_font.setPointSizeF(axis_font.pointSizeF() - 0.5);
   title_element_->setFont(label_font);
   plot_->legend->setFont(legend_font);
-  // room for the data between the title, the ticks, the axis title and a legend below: about
-  // eight lines of the text (120 px at 9 pt), so that larger text does not squeeze the traces
-  // into a strip (the window's splitter keeps the plots this tall)
-  setMinimumHeight(std::max(kMinimumHeightPx,
-                            static_cast<int>(std::ceil(8.0 * QFontMetricsF(axis_font).height()))));
   for (QCPAxis* axis : {plot_->xAxis, plot_->yAxis}) {
     axis->setLabelFont(label_font);
     axis->setTickLabelFont(axis_font);
   }
+  update_minimum_height();
   readout_->setFont(axis_font);
   if (readout_row_) readout_row_->setFont(axis_font);
   for (auto& [line, text] : markers_) text->setFont(axis_font);
@@ -382,7 +380,9 @@ void PlotPanel::render(QPaintDevice& device, const std::vector<std::pair<PlotPan
     painter.save();
     painter.translate(rect.topLeft());
     panel->rendering_ = true;
+    const QString screen_y_label = panel->plot_->yAxis->label();  // the picture fits its own
     panel->plot_->toPainter(&painter, rect.width(), rect.height());
+    panel->plot_->yAxis->setLabel(screen_y_label);
     panel->rendering_ = false;
     painter.restore();
     panel->time_mark_line_->setVisible(panel->time_mark_.has_value());
@@ -438,6 +438,49 @@ void PlotPanel::move_legend_below(bool for_good) {
   plot_->legend->setMargins(QMargins(6, 0, 6, 1));  // a short panel squeezes it first
   plot_->legend->setBorderPen(Qt::NoPen);
   legend_below_ = true;
+  update_minimum_height();
+}
+
+void PlotPanel::update_minimum_height() {
+  // room for the data between the title, the ticks, the axis title and a legend below: about
+  // eight lines of the text at least (120 px at 9 pt), so that larger text does not squeeze the
+  // traces into a strip (the window's splitter keeps the plots this tall); and what the panel
+  // lays out around the data (the plot's title, the axes' ticks and titles, a legend below) with
+  // 2.5 lines of tick labels of data: the upright's plots in the class's larger text had their
+  // legends cut off. No more: the action view above them is what the class looks at.
+  const QFontMetricsF ticks(plot_->xAxis->tickLabelFont());
+  const QFontMetricsF titles(plot_->xAxis->labelFont());
+  const double data = 2.5 * ticks.height();
+  // around the data: as laid out, once it has been (the plot's margins follow the tick labels),
+  // else the plot's title, the x ticks and title, a legend below and some margin
+  const int laid_out = plot_->axisRect()->height();
+  const double around = laid_out > 0 && height() > laid_out
+                            ? height() - laid_out
+                            : 2.0 * titles.height() + ticks.height() + legend_height_below() + 24.0;
+  setMinimumHeight(std::max({kMinimumHeightPx, static_cast<int>(std::ceil(8.0 * ticks.height())),
+                             static_cast<int>(std::ceil(around + data))}));
+}
+
+void PlotPanel::fit_y_label(bool replot) {
+  // the y title is drawn turned along the data; on a plot area shorter than it (a short panel,
+  // larger text) it ran into the plot's title: the unit alone then ("angle (deg)" → "deg"), as
+  // the plot's title names the quantity. It may reach a line past the area (the corner below it
+  // is free of x tick labels).
+  const QFontMetricsF metrics(plot_->yAxis->labelFont());
+  const double room =
+      plot_->axisRect()->height() + QFontMetricsF(plot_->xAxis->tickLabelFont()).height();
+  QString label = y_title_;
+  const qsizetype open = y_title_.lastIndexOf('('), close = y_title_.lastIndexOf(')');
+  if (metrics.horizontalAdvance(y_title_) > room && open >= 0 && close > open + 1)
+    label = y_title_.mid(open + 1, close - open - 1);
+  if (plot_->yAxis->label() != label) {
+    plot_->yAxis->setLabel(label);
+    if (replot) request_replot();
+  }
+}
+
+QString PlotPanel::y_label_shown() const {
+  return plot_->yAxis->label();
 }
 
 int PlotPanel::legend_height_below() const {
@@ -459,6 +502,7 @@ void PlotPanel::move_legend_inside() {
   plot_->legend->setMargins(legend_margins_inside_);
   plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
   legend_below_ = false;
+  update_minimum_height();
 }
 
 bool PlotPanel::place_legend_for_width() {

@@ -65,6 +65,8 @@ class PlotPanel : public QWidget {
 
   QString title() const { return title_; }
   QString y_title() const { return y_title_; }
+  /// The y axis's title as drawn: y_title(), or its unit alone on a plot area too short for it.
+  QString y_label_shown() const;
   /// The x axis' CSV column (time_s unless set_x_axis named another).
   QString x_column() const { return x_column_; }
   void set_x_range(double lo, double hi);
@@ -118,6 +120,11 @@ class PlotPanel : public QWidget {
  private:
   /// Sets the title, axis, legend, readout and marker fonts from the widget's font.
   void apply_fonts();
+  /// The panel's minimum height for its fonts and its legend's place (plot_panel.cpp).
+  void update_minimum_height();
+  /// The y axis's title as it fits the plot area's height: the whole, or the unit alone;
+  /// `replot`: asks for a replot when it changes (not while a picture is drawn).
+  void fit_y_label(bool replot = true);
   /// Cursor lines and the readout row; `for_export`: without the on-screen instruction ("click:
   /// A, right click: B"), which means nothing in an exported picture.
   void update_cursor_items(bool for_export = false);

@@ -16,6 +16,11 @@ QStringList run_status_wordings(const QString& state, const QString& action, con
   const auto with_hint = [&](const QString& text) {
     return hint.isEmpty() ? text : QObject::tr("%1: %2").arg(text, hint);
   };
+  // a hint follows a colon, so the action and input go in parentheses; without one they read on
+  // ("Running Upright action with a 20 N blow held 40 ms")
+  if (hint.isEmpty())
+    return {QObject::tr("%1 %2 with %3").arg(state, action, input),
+            QObject::tr("%1 with %2").arg(state, input), state};
   return {with_hint(QObject::tr("%1 (%2 with %3)").arg(state, action, input)),
           with_hint(QObject::tr("%1 (with %2)").arg(state, input)), with_hint(state), state};
 }

@@ -15,8 +15,8 @@ namespace pat::ui {
 QString fit_status(const QStringList& wordings, const QFontMetricsF& metrics, double width_px);
 
 /// The wordings of a run's status: "STATE (ACTION with INPUT): HINT", then without the action's
-/// name, then the state and the hint alone, then the state alone. An empty hint leaves out
-/// the colon.
+/// name, then the state and the hint alone, then the state alone. Without a hint: "STATE ACTION
+/// with INPUT", "STATE with INPUT", then the state alone.
 QStringList run_status_wordings(const QString& state, const QString& action, const QString& input,
                                 const QString& hint);
 

@@ -517,6 +517,37 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
            qPrintable(QString("%1 px shown of %2")
                           .arg(window.regulation()->parentWidget()->width())
                           .arg(window.regulation()->minimumSizeHint().width())));
+
+  // and each panel is tall enough for its legend below it, and its y title fits along its data
+  // (the upright's plots at 1280x800 had their legends cut off and the titles running into each
+  // other): whole where there is room, else its unit alone
+  window.set_large_text(true);
+  window.open_action("upright");
+  for (const int height : {800, 1000}) {
+    window.resize(1280, height);
+    QVERIFY2(wait_until([&] {
+               for (const pat::ui::PlotPanel* panel : window.plots()->panels()) {
+                 QFont title = panel->font();
+                 title.setPointSizeF(std::max(9.0, title.pointSizeF()));
+                 title.setBold(true);
+                 const QFontMetricsF metrics(title);
+                 if (panel->legend_rect().bottom() > panel->height() ||
+                     panel->plot_area_rect().height() + metrics.height() <
+                         metrics.horizontalAdvance(panel->y_label_shown()))
+                   return false;
+               }
+               return true;
+             }),
+             qPrintable(QString::number(height)));
+  }
+  // a panel with room shows the whole y title; a short one its unit alone
+  pat::ui::PlotPanel panel("Key and hammer", "angle (deg)");
+  panel.resize(400, 500);
+  panel.show();
+  QVERIFY(wait_until([&] { return panel.y_label_shown() == "angle (deg)"; }));
+  panel.resize(400, panel.minimumHeight());
+  QVERIFY2(wait_until([&] { return panel.y_label_shown() == "deg"; }),
+           qPrintable(panel.y_label_shown()));
 }
 
 // In the class's larger text the escapement close-up of a 1280x800 window (about 580 px wide)
@@ -547,15 +578,16 @@ void ActionViewTest::the_escapement_close_up_keeps_its_forces_in_larger_text() {
   const auto value = [&](std::size_t contact) {
     return QString::number(frame.contact_force_n.at(contact), 'f', 1) + " N";
   };
-  // the jack's push on the knuckle, and the largest force (the capstan's)
+  // the jack's push on the knuckle, placed right after the knuckle's name, and more forces
+  // after it (the largest first; the capstan's, at the view's edge, may find no free place in
+  // a short view)
   const std::size_t push = frame.model->landmarks.escapement_contact;
-  const std::size_t largest =
-      std::max_element(frame.contact_force_n.begin(), frame.contact_force_n.end()) -
-      frame.contact_force_n.begin();
-  QVERIFY2(frame.contact_force_n.at(push) > 10.0 && largest != push, "the blow drives the jack");
-  for (const std::size_t contact : {push, largest})
-    QVERIFY2(view->drawn_labels().contains(value(contact)),
-             qPrintable(value(contact) + " not in " + view->drawn_labels().join(", ")));
+  QVERIFY2(frame.contact_force_n.at(push) > 10.0, "the blow drives the jack");
+  QVERIFY2(view->drawn_labels().contains(value(push)),
+           qPrintable(value(push) + " not in " + view->drawn_labels().join(", ")));
+  int values = 0;
+  for (const QString& label : view->drawn_labels()) values += label.endsWith(" N") ? 1 : 0;
+  QVERIFY2(values >= 2, qPrintable(view->drawn_labels().join(", ")));
   // and the parts the close-up is for are named
   for (const char* name : {"knuckle", "jack", "let-off button"})
     QVERIFY2(view->drawn_labels().contains(name),

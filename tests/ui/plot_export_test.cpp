@@ -20,6 +20,7 @@
 #include "model/preset_loader.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "ui_test_support.h"
 
 using pat::ui::PlotPanel;
 
@@ -149,6 +150,23 @@ void PlotExportTest::png_pdf_svg_have_their_magic_and_size() {
   QFile svg_file(svg);
   QVERIFY(svg_file.open(QIODevice::ReadOnly));
   QVERIFY(svg_file.readAll().contains("gap (mm)"));  // axis title with its unit
+
+  // a panel on screen too short for its y title shows the unit alone; a picture of it with room
+  // has the whole title, and the screen keeps its own
+  // (a title longer than any panel's shortest plot area)
+  PlotPanel forces("Forces", "normal force at the contact point (N)");
+  forces.add_series("capstan", "capstan_n", Qt::blue);
+  for (int i = 0; i <= 10; ++i) forces.append(0, i * 1e-3, i);
+  forces.resize(400, forces.minimumHeight());
+  forces.show();
+  QVERIFY2(pat::ui::test::wait_until([&] { return forces.y_label_shown() == "N"; }),
+           qPrintable(forces.y_label_shown()));
+  const QString tall = dir_.filePath("tall.svg");
+  pat::ui::export_plots({&forces}, tall, QSize(640, 900));
+  QFile tall_file(tall);
+  QVERIFY(tall_file.open(QIODevice::ReadOnly));
+  QVERIFY(tall_file.readAll().contains("normal force at the contact point (N)"));
+  QCOMPARE(forces.y_label_shown(), QString("N"));
 }
 
 void PlotExportTest::csv_holds_the_visible_range_only() {

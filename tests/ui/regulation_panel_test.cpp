@@ -104,8 +104,8 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   // up, it jams the jack in the lever's window, which no reading gets past)
   window.set_adjuster("hammer_blow", 0.0);
   window.set_adjuster("let_off", 0.6);
-  QVERIFY(wait_until(
-      [&] { return window.regulation()->log_text().contains("drop: no reading"); }, 60000));
+  QVERIFY(wait_until([&] { return window.regulation()->log_text().contains("drop: no reading"); },
+                     60000));
   QVERIFY2(window.regulation()->log_text().contains("repetition lever"),
            qPrintable(window.regulation()->log_text()));
   RegulationRow* let_off_row = window.regulation()->row("let_off");
