@@ -61,13 +61,12 @@ int run_measure(const std::vector<std::string>& args) {
   // row 8: Yamaha about .035, Steinway .045)
   constexpr double kAftertouchLowMm = 0.035 * 25.4, kAftertouchHighMm = 0.045 * 25.4;
   std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians set "
-               ".035-.045 in, 0.9-1.1 mm): ";
+               ".035-.045 in, 0.89-1.14 mm): ";
   if (!aftertouch_problem.empty())
     std::cout << "cannot be read: " << aftertouch_problem << "\n";
   else
     std::cout << number_in(aftertouch_mm, "mm") << " mm"
-              << (aftertouch_mm >= kAftertouchLowMm - 0.005 &&
-                          aftertouch_mm <= kAftertouchHighMm + 0.005
+              << (aftertouch_mm >= kAftertouchLowMm && aftertouch_mm <= kAftertouchHighMm
                       ? ", within that"
                   : aftertouch_mm < kAftertouchLowMm ? ", less than that"
                                                      : ", more than that")

@@ -722,12 +722,16 @@ void ActionView::paint_frame(QPainter& painter) {
   }
   // in a close-up the push of the jack on the knuckle or butt comes right after their name: the
   // other names took its place in the escapement close-up of the class's larger text
-  if (close_up && escapement >= 0 && !labels.empty()) {
+  if (close_up && escapement >= 0) {
     const QString escapement_force = QStringLiteral("force %1").arg(escapement);
     const auto push = std::find_if(force_labels.begin(), force_labels.end(),
                                    [&](const Label& l) { return l.key == escapement_force; });
     if (push != force_labels.end()) {
-      labels.insert(labels.begin() + 1, *push);
+      // after the knuckle's or butt's name when it is drawn (else first of all)
+      const QString part = model.kind == "grand" ? tr("knuckle") : tr("butt");
+      const auto named = std::find_if(labels.begin(), labels.end(),
+                                      [&](const Label& l) { return l.body < 0 && l.text == part; });
+      labels.insert(named == labels.end() ? labels.begin() : named + 1, *push);
       force_labels.erase(push);
     }
   }

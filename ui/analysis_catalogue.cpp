@@ -77,13 +77,15 @@ AnalysisEntry technician_measurements() {
         auto fixed = [decimals](double x) {
           return QString::fromStdString(format_fixed(x, decimals));
         };
-        result.table.push_back({name,
-                                QObject::tr("%1 (target %2 ± %3)%4")
-                                    .arg(fixed(r.measured))
-                                    .arg(fixed(r.target))
-                                    .arg(fixed(r.tolerance))
-                                    .arg(ok ? QString() : QObject::tr(", out of tolerance")),
-                                unit});
+        result.table.push_back(
+            {name,
+             QObject::tr("%1 (target %2 ± %3)%4%5")
+                 .arg(fixed(r.measured))
+                 .arg(fixed(r.target))
+                 .arg(fixed(r.tolerance))
+                 .arg(ok ? QString() : QObject::tr(", out of tolerance"))
+                 .arg(r.note.empty() ? QString() : "; " + QString::fromStdString(r.note)),
+             unit});
       }
       result.summary = off == 0 ? QObject::tr("Every setting is within its tolerance.")
                                 : QObject::tr("%1 of %2 settings are out of tolerance.")

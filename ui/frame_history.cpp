@@ -26,16 +26,20 @@ Frame FrameHistory::interpolated(double t) const {
       const double w = std::clamp((t - frame.t) / (next.t - frame.t), 0.0, 1.0);
       frame.q = (1.0 - w) * frame.q + w * next.q;
       frame.v = (1.0 - w) * frame.v + w * next.v;
-      // the readings too, so that the readout, the arrows' values and the plots' cursor agree
-      // with the parts drawn (the arrows are evaluated at the blended q, v)
+      // the readings too, so that the readout and the plots' values go with the parts drawn; a
+      // contact force or strap tension that is zero at either end is not blended (the contact
+      // opens or closes between the two frames: the earlier frame's state holds, as the felt's
+      // "on the string" reading does)
       const auto blend = [w](double a, double b) { return (1.0 - w) * a + w * b; };
-      const auto blend_all = [&](std::vector<double>& values, const std::vector<double>& to) {
+      const auto blend_all = [&](std::vector<double>& values, const std::vector<double>& to,
+                                 bool contacts) {
         if (values.size() != to.size()) return;
-        for (std::size_t k = 0; k < values.size(); ++k) values[k] = blend(values[k], to[k]);
+        for (std::size_t k = 0; k < values.size(); ++k)
+          if (!contacts || (values[k] > 0.0 && to[k] > 0.0)) values[k] = blend(values[k], to[k]);
       };
-      blend_all(frame.angle_deg, next.angle_deg);
-      blend_all(frame.contact_force_n, next.contact_force_n);
-      blend_all(frame.strap_tension_n, next.strap_tension_n);
+      blend_all(frame.angle_deg, next.angle_deg, false);
+      blend_all(frame.contact_force_n, next.contact_force_n, true);
+      blend_all(frame.strap_tension_n, next.strap_tension_n, true);
       frame.hammer_string_gap_mm = blend(frame.hammer_string_gap_mm, next.hammer_string_gap_mm);
       frame.finger_force_n = blend(frame.finger_force_n, next.finger_force_n);
       frame.t = t;

@@ -24,7 +24,8 @@ class FrameHistory {
   std::size_t index_at(double t) const;
   /// The frame at t, with q, v and the readings (angles, gap, finger, contact forces, strap
   /// tensions) interpolated linearly between the two recorded frames around it (slow motion
-  /// between samples); the model and run from the earlier frame, and no events.
+  /// between samples), but a force or tension that is zero in either frame, which is the earlier
+  /// frame's; the model and run from the earlier frame, and no events.
   Frame interpolated(double t) const;
 
  private:

@@ -209,6 +209,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   });
 
   // live measured values and automatic regulation, both off the window's thread
+  // the whole of a run's status shortened to fit the bar is in its tooltip; another message
+  // (an export written, a refusal) takes the tooltip away with it (the fitted status sets it
+  // again after its message)
+  connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
+    if (message != run_status_shown_) statusBar()->setToolTip(QString());
+  });
   measurements_ = new MeasurementService(this);
   connect(measurements_, &MeasurementService::measured, this,
           [this](const QString& name, double value, const QString& note) {
@@ -577,6 +583,11 @@ void MainWindow::build_practice() {
     practising_ = false;
     set_practice_layout(false);
     practice_dock_->raise();
+    if (!model_) return;
+    // the panels shown again belong to the exercise's action: its analyses, and its readings
+    // (an exercise on the other kind of action had left the class's in them)
+    analyses_->set_model(*model_);
+    measure_current_model();
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it
   // behind a tab or closing the window must not end an exercise
@@ -659,6 +670,13 @@ void MainWindow::fit_split_to_action(const ActionModel& model) {
 
 void MainWindow::open_action(const std::string& name_or_path) {
   auto model = std::make_shared<const ActionModel>(load_action(name_or_path));
+  // an action opened after an exercise was scored: the class's own input and speed come back
+  // (the exercise had taken them over), as when practice mode is left
+  if (practice_took_over_ && !practising_) {
+    practice_took_over_ = false;
+    run_controls_->input_form()->set_spec(input_before_practice_);
+    run_controls_->set_speed_index(speed_before_practice_);
+  }
   action_name_ = name_or_path;
   model_ = model;
   grand_action_->setChecked(model->kind == "grand");

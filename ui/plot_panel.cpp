@@ -90,8 +90,11 @@ PlotPanel::PlotPanel(const QString& title, const QString& y_title, QWidget* pare
       request_replot();
       return;
     }
-    if (!rendering_) update_minimum_height();  // from the overhead this layout shows
-    fit_y_label(!rendering_);                  // a picture at its own size too
+    // from the overhead this layout shows, once this replot is over: a new minimum resizes the
+    // panel at once, and a replot asked for inside this one would be dropped, leaving the old
+    // layout painted at the new size
+    if (!rendering_) schedule_minimum_height();
+    fit_y_label(!rendering_);                                      // a picture at its own size too
     if (plot_->axisRect()->height() == fitted_height_px_) return;  // the same: no new replot
     fit_values();
     request_replot();
@@ -438,7 +441,7 @@ void PlotPanel::move_legend_below(bool for_good) {
   plot_->legend->setMargins(QMargins(6, 0, 6, 1));  // a short panel squeezes it first
   plot_->legend->setBorderPen(Qt::NoPen);
   legend_below_ = true;
-  update_minimum_height();
+  schedule_minimum_height();  // (called from a layout: see the afterLayout handler)
 }
 
 void PlotPanel::update_minimum_height() {
@@ -459,6 +462,17 @@ void PlotPanel::update_minimum_height() {
                             : 2.0 * titles.height() + ticks.height() + legend_height_below() + 24.0;
   setMinimumHeight(std::max({kMinimumHeightPx, static_cast<int>(std::ceil(8.0 * ticks.height())),
                              static_cast<int>(std::ceil(around + data))}));
+}
+
+void PlotPanel::schedule_minimum_height() {
+  QMetaObject::invokeMethod(
+      this,
+      [this] {
+        const int before = height();
+        update_minimum_height();
+        if (height() != before) request_replot();  // laid out again at the new height
+      },
+      Qt::QueuedConnection);
 }
 
 void PlotPanel::fit_y_label(bool replot) {
@@ -502,7 +516,7 @@ void PlotPanel::move_legend_inside() {
   plot_->legend->setMargins(legend_margins_inside_);
   plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
   legend_below_ = false;
-  update_minimum_height();
+  schedule_minimum_height();
 }
 
 bool PlotPanel::place_legend_for_width() {

@@ -122,6 +122,8 @@ class PlotPanel : public QWidget {
   void apply_fonts();
   /// The panel's minimum height for its fonts and its legend's place (plot_panel.cpp).
   void update_minimum_height();
+  /// update_minimum_height() once the event loop is back (from inside a layout or replot).
+  void schedule_minimum_height();
   /// The y axis's title as it fits the plot area's height: the whole, or the unit alone;
   /// `replot`: asks for a replot when it changes (not while a picture is drawn).
   void fit_y_label(bool replot = true);

@@ -138,11 +138,11 @@ void RegulationRow::show_reading() {
            "rest returns to the live action."));
     return;
   }
-  const std::string unit = setting_ ? setting_->unit : std::string("mm");
   if (measured_) {
-    measured_label_->setText(setting_value_text(*measured_, unit));
+    measured_label_->setText(setting_value_text(*measured_, unit()));
+    // the note ("read with the drop screw out of the way …") as a sentence of its own
     measured_label_->setToolTip(note_.isEmpty() ? tr("Measured the way a technician measures it")
-                                                : tr("Measured %1").arg(note_));
+                                                : note_.left(1).toUpper() + note_.mid(1) + ".");
     const bool bad = out_of_tolerance();
     measured_label_->setStyleSheet(
         measuring_ ? "color: #888888; padding: 1px 3px;"

@@ -41,9 +41,7 @@ inline QString adjuster_mm_text(double mm, int decimals, bool plus = false) {
 /// The part the adjuster turns, from its description ("let-off button: + screws it down …" →
 /// "let-off button"); empty when the description has no such head.
 inline QString adjuster_part(const Adjuster& adjuster) {
-  const std::size_t colon = adjuster.description.find(':');
-  if (colon == std::string::npos) return {};
-  return QString::fromStdString(adjuster.description.substr(0, colon));
+  return QString::fromStdString(adjuster_part_words(adjuster.description));
 }
 
 /// The adjusters turned from regulation as a class reads them, "hammer blow +1.25 mm, let-off

@@ -174,6 +174,13 @@ struct RegulationSetting {
   double clear_position = 0.0;
 };
 
+/// The part an adjuster turns, from its description ("let-off button: + screws it down …" →
+/// "let-off button"); empty when the description has no such head.
+inline std::string adjuster_part_words(const std::string& description) {
+  const std::size_t colon = description.find(':');
+  return colon == std::string::npos ? std::string() : description.substr(0, colon);
+}
+
 /// A setting's or adjuster's identifier in words, as technicians write it: "key_dip" → "key dip",
 /// "let_off" → "let-off".
 inline std::string setting_words(const std::string& name) {

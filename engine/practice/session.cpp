@@ -320,8 +320,8 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
                     " of the correction (free), " + format_number(std::round(t_s)) + " s");
   s.hint_penalty = 5.0 * hints_used_;
   if (hints_used_ > 0)
-    s.notes.push_back(std::to_string(hints_used_) + " hints (−" + format_number(s.hint_penalty) +
-                      ")");
+    s.notes.push_back(std::to_string(hints_used_) + (hints_used_ == 1 ? " hint" : " hints") +
+                      " (−" + format_number(s.hint_penalty) + ")");
   s.total = std::clamp(s.diagnosis + s.regulation + s.economy - s.hint_penalty, 0.0, 100.0);
   history_.push_back({t_s, "score", format_number(s.total) + "/100"});
   final_score_ = s;

@@ -149,17 +149,18 @@ SettingReading read_setting(const ActionModel& model, const RegulationSetting& s
     r.measured = measure_setting(model, s.name, rest);
   } catch (const HammerCarriedElsewhere& e) {
     const int clear = s.clear_adjuster.empty() ? -1 : model.adjuster_index(s.clear_adjuster);
-    if (clear < 0 || model.adjusters[clear].value == s.clear_position) {
+    // nothing to do when the adjuster is already at its clear position or beyond it, farther
+    // out of the way
+    const double turned = clear < 0 ? 0.0 : model.adjusters[clear].value;
+    if (clear < 0 ||
+        (s.clear_position >= 0.0 ? turned >= s.clear_position : turned <= s.clear_position)) {
       unreadable(e.what());
       return r;
     }
     // what a technician does on seeing it: the part that carries the hammer moved out of the
     // way, the setting read, and (as the note says) the part to be set afterwards
-    const std::string& description = model.adjusters[clear].description;
-    const std::size_t colon = description.find(':');
-    const std::string part = colon != std::string::npos
-                                 ? description.substr(0, colon)
-                                 : setting_words(s.clear_adjuster) + " adjuster";
+    std::string part = adjuster_part_words(model.adjusters[clear].description);
+    if (part.empty()) part = setting_words(s.clear_adjuster) + " adjuster";
     try {
       r.measured =
           measure_setting(with_adjuster(model, s.clear_adjuster, s.clear_position), s.name);

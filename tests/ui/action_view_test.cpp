@@ -541,12 +541,13 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
              qPrintable(QString::number(height)));
   }
   // a panel with room shows the whole y title; a short one its unit alone
-  pat::ui::PlotPanel panel("Key and hammer", "angle (deg)");
-  panel.resize(400, 500);
+  // (a title longer than any panel's shortest plot area)
+  pat::ui::PlotPanel panel("Forces", "normal force at the contact point (N)");
+  panel.resize(400, 900);
   panel.show();
-  QVERIFY(wait_until([&] { return panel.y_label_shown() == "angle (deg)"; }));
+  QVERIFY(wait_until([&] { return panel.y_label_shown() == panel.y_title(); }));
   panel.resize(400, panel.minimumHeight());
-  QVERIFY2(wait_until([&] { return panel.y_label_shown() == "deg"; }),
+  QVERIFY2(wait_until([&] { return panel.y_label_shown() == "N"; }),
            qPrintable(panel.y_label_shown()));
 }
 
@@ -558,6 +559,7 @@ void ActionViewTest::the_escapement_close_up_keeps_its_forces_in_larger_text() {
   window.resize(1280, 800);
   window.show();
   window.open_action("grand");
+  const double base_point_size = window.view()->font().pointSizeF();
   window.set_large_text(true);
   window.start("force:pulse:20:40");
   pat::ui::PlaybackController* controller = window.controller();
@@ -572,7 +574,8 @@ void ActionViewTest::the_escapement_close_up_keeps_its_forces_in_larger_text() {
   controller->seek(recorded);
   QVERIFY(wait_until([&] { return controller->current_frame().t == recorded; }));
   QVERIFY(window.large_text());
-  QTest::qWait(100);  // the new font reaches the view through events
+  // the new font reaches the view through events
+  QVERIFY(wait_until([&] { return view->font().pointSizeF() > 1.3 * base_point_size; }));
   view->grab();
   const pat::ui::Frame& frame = *view->frame();
   const auto value = [&](std::size_t contact) {

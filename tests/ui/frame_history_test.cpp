@@ -48,6 +48,18 @@ class FrameHistoryTest : public QObject {
     QCOMPARE(f.contact_force_n, (std::vector<double>{25.0, 50.0}));
     QCOMPARE(f.strap_tension_n, (std::vector<double>{12.5}));
     QVERIFY(f.events.empty());  // an event belongs to its recorded frame only
+    // a contact that opens (or closes) between the two frames is not blended: the earlier
+    // frame's state holds until the next frame
+    FrameHistory opening;
+    Frame closed = recorded(1.0, 1.0, 10.0, 20.0, model);
+    Frame open = recorded(3.0, 3.0, 6.0, 40.0, model);
+    open.contact_force_n = {0.0, 80.0};
+    closed.strap_tension_n = {0.0};
+    opening.append(closed);
+    opening.append(open);
+    const Frame between = opening.interpolated(1.5);
+    QCOMPARE(between.contact_force_n, (std::vector<double>{20.0, 50.0}));
+    QCOMPARE(between.strap_tension_n, (std::vector<double>{0.0}));
     // at a recorded frame: that frame as it is, events included
     const Frame at = history.interpolated(3.0);
     QCOMPARE(at.hammer_string_gap_mm, 6.0);
