@@ -208,13 +208,14 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     change_model(regulated);
   });
 
-  // live measured values and automatic regulation, both off the window's thread
   // the whole of a run's status shortened to fit the bar is in its tooltip; another message
   // (an export written, a refusal) takes the tooltip away with it (the fitted status sets it
   // again after its message)
   connect(statusBar(), &QStatusBar::messageChanged, this, [this](const QString& message) {
     if (message != run_status_shown_) statusBar()->setToolTip(QString());
   });
+
+  // live measured values and automatic regulation, both off the window's thread
   measurements_ = new MeasurementService(this);
   connect(measurements_, &MeasurementService::measured, this,
           [this](const QString& name, double value, const QString& note) {
