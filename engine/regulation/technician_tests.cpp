@@ -166,7 +166,8 @@ SlowPressReading slow_press(const ActionModel& model, const RestState& rest, int
             ? std::string("in a slow key press the jack never lifts the hammer: the repetition "
                           "lever carries it ") +
                   seen +
-                  ", so no let-off is seen (the drop screw stops the lever only after the "
+                  ", so neither let-off nor drop is seen in this press (the drop screw stops "
+                  "the lever only after the "
                   "let-off button has tripped the jack: the drop screw is too high or the "
                   "let-off button too low; let-off is set with the drop screw out of the way: "
                   "screw the drop screw down (drop +) to see this let-off, or the button back "
