@@ -614,17 +614,20 @@ void MainWindow::set_practice_layout(bool practising) {
 
 void MainWindow::end_practice() {
   if (!practice_took_over_) return;
-  practice_took_over_ = false;
   practising_ = false;
   end_practice_test_shown();
   set_practice_layout(false);
-  // the tests shown took over the run input and the speed: the class's own come back
-  run_controls_->input_form()->set_spec(input_before_practice_);
-  run_controls_->set_speed_index(speed_before_practice_);
+  give_back_class_input();  // the tests shown took over the run input and the speed
   if (!action_name_.empty()) {
     open_action(action_name_);
     hold_at_rest();  // the regulated action waits at rest for Play, as at launch
   }
+}
+
+void MainWindow::give_back_class_input() {
+  practice_took_over_ = false;
+  run_controls_->input_form()->set_spec(input_before_practice_);
+  run_controls_->set_speed_index(speed_before_practice_);
 }
 
 void MainWindow::show_practice(bool on) {
@@ -673,11 +676,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
   auto model = std::make_shared<const ActionModel>(load_action(name_or_path));
   // an action opened after an exercise was scored: the class's own input and speed come back
   // (the exercise had taken them over), as when practice mode is left
-  if (practice_took_over_ && !practising_) {
-    practice_took_over_ = false;
-    run_controls_->input_form()->set_spec(input_before_practice_);
-    run_controls_->set_speed_index(speed_before_practice_);
-  }
+  if (practice_took_over_ && !practising_) give_back_class_input();
   action_name_ = name_or_path;
   model_ = model;
   grand_action_->setChecked(model->kind == "grand");

@@ -155,6 +155,8 @@ class MainWindow : public QMainWindow {
   /// shows its `duration_s` in at most 8 s of wall time.
   void show_practice_test(const QString& input, double duration_s);
   void end_practice();
+  /// The class's own run input and speed again, as they were before the exercise took them.
+  void give_back_class_input();
   /// The status bar: what runs now and with which input, or where the run is paused.
   void show_run_status();
   /// Shows the first of `wordings` that fits the status bar (status_fit.h), the full one as the
@@ -212,7 +214,8 @@ class MainWindow : public QMainWindow {
   /// analyses docks, the plots and their exports, the readout's and arrows' numbers.
   void set_practice_layout(bool practising);
   std::vector<QAction*> measurement_actions_;  ///< plot exports and plot span: off in practice
-  /// An exercise took over the run input and the speed (given back when practice mode ends).
+  /// An exercise took over the run input and the speed (given back when practice mode ends, or
+  /// an action is opened after the exercise was scored).
   bool practice_took_over_ = false;
   std::string input_before_practice_;  ///< the run input when an exercise began
   int speed_before_practice_ = 3;      ///< and the speed (index into RunControls::speeds)

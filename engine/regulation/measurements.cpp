@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 #include "analysis/parallel_runs.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "dynamics/action_dynamics.h"
 #include "model/model_edits.h"
 #include "regulation/technician_tests.h"
@@ -164,10 +164,9 @@ SettingReading read_setting(const ActionModel& model, const RegulationSetting& s
     try {
       r.measured =
           measure_setting(with_adjuster(model, s.clear_adjuster, s.clear_position), s.name);
-      char held[32];
-      std::snprintf(held, sizeof held, "%.1f", e.held_gap() * 1e3);
-      char position[32];
-      std::snprintf(position, sizeof position, "%+.2f", s.clear_position * 1e3);
+      const std::string held = format_fixed(e.held_gap() * 1e3, 1);
+      const std::string position =
+          (s.clear_position > 0.0 ? "+" : "") + format_fixed(s.clear_position * 1e3, 2);
       r.note = "read with the " + part + " out of the way (" + setting_words(s.clear_adjuster) +
                " " + position + " mm), as technicians read " + setting_words(s.name) +
                "; as the action stands the hammer is carried on to " + held +
