@@ -37,7 +37,7 @@ int run_bench(const std::vector<std::string>& args) {
   for (const std::string& a : args)
     if (a == "--window") return run_bench_window(args);
   const CommandLine cl(args, {"--duration", "--input", "--plot"}, {"--json"});
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   BenchOptions options;
   options.duration_s = cl.positive_number_or("--duration", 1.0);
   options.input = cl.value_or("--input", options.input);

@@ -34,7 +34,7 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
     }
   const unsigned threads =
       cl.has("--threads") ? static_cast<unsigned>(cl.positive_number("--threads")) : 0;
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   nlohmann::json cases = nlohmann::json::array();
   // per case: the gain of the found cause (passed and failed cases apart) and the wall time
   PlotSpec gains =

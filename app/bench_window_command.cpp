@@ -34,7 +34,7 @@ int run_bench_window(const std::vector<std::string>& args) {
                        cl.value("--trials"));
     options.latency_trials = static_cast<int>(trials);
   }
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   {
     // a bad action or input SPEC is refused before the window opens, where it would only show
     // in the banner of a run that never starts

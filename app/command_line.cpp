@@ -10,6 +10,35 @@
 
 namespace pat::app {
 
+namespace {
+
+/// The options whose values are files the command writes.
+bool is_output_option(const std::string& option) {
+  return option == "--out" || option == "--plot";
+}
+
+std::string normalized_path(const std::string& path) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+  return (error ? std::filesystem::path(path) : absolute).lexically_normal().string();
+}
+
+bool is_regular_file(const std::string& path) {
+  std::error_code error;
+  return std::filesystem::is_regular_file(path, error);
+}
+
+}  // namespace
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code error;
+  if (std::filesystem::exists(a, error) && std::filesystem::exists(b, error)) {
+    const bool same = std::filesystem::equivalent(a, b, error);
+    if (!error) return same;
+  }
+  return normalized_path(a) == normalized_path(b);
+}
+
 CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
                          const std::set<std::string>& flags,
                          const std::set<std::string>& list_options) {
@@ -82,16 +111,46 @@ std::string CommandLine::output_path(const std::string& option, bool required) c
   } catch (const InputError& e) {
     throw InputError(option + ": " + e.what());
   }
-  std::error_code error;
-  std::filesystem::path absolute = std::filesystem::absolute(path, error);
-  const std::string key =
-      (error ? std::filesystem::path(path) : absolute).lexically_normal().string();
-  const auto [named, fresh] = outputs_.emplace(key, option);
+  for (const auto& [what, input] : input_files()) {
+    if (same_file(path, input))
+      throw InputError(option + ": " + path + " is " + what +
+                       ", which this command reads; writing there would destroy it, so give the "
+                       "output its own file");
+  }
+  const auto [named, fresh] = outputs_.emplace(normalized_path(path), option);
   if (!fresh && named->second != option)
     throw InputError(option + ": " + path + " is also the " + named->second +
                      " file; the second output would overwrite the first, so give each its own "
                      "file");
   return path;
+}
+
+void CommandLine::add_input_file(const std::string& what, const std::string& path) {
+  extra_inputs_.emplace_back(what, path);
+}
+
+std::vector<std::pair<std::string, std::string>> CommandLine::input_files() const {
+  std::vector<std::pair<std::string, std::string>> files;
+  for (const auto& [option, values] : values_) {
+    if (is_output_option(option)) continue;
+    for (const std::string& value : values) {
+      // an input SPEC names its file after "csv:"; a file actually called "csv:..." wins
+      const bool spec = value.rfind("csv:", 0) == 0 && !is_regular_file(value);
+      const std::string path = spec ? value.substr(4) : value;
+      if (is_regular_file(path)) files.emplace_back("the file given to " + option, path);
+    }
+  }
+  for (const auto& [what, path] : extra_inputs_)
+    if (is_regular_file(path)) files.emplace_back(what, path);
+  return files;
+}
+
+std::vector<std::pair<std::string, std::string>> CommandLine::files_other_than(
+    const std::string& option) const {
+  std::vector<std::pair<std::string, std::string>> files = input_files();
+  for (const auto& [path, named_by] : outputs_)
+    if (named_by != option) files.emplace_back("the " + named_by + " file", path);
+  return files;
 }
 
 }  // namespace pat::app

@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pat::app {
@@ -28,17 +29,35 @@ class CommandLine {
   double positive_number(const std::string& option) const;
   double positive_number_or(const std::string& option, double fallback) const;
   /// The path of an output option ("" when absent), checked before any work: not empty, in a
-  /// folder that exists, not a folder, and not a file another output option of the same command
-  /// already names (one would overwrite the other; the error names both options).
-  /// `required`: absent is an error too.
+  /// folder that exists, not a folder, not a file another output option of the same command
+  /// already names (one would overwrite the other; the error names both options), and not a file
+  /// the command reads (input_files()). `required`: absent is an error too.
   std::string output_path(const std::string& option, bool required = false) const;
+
+  /// A file the command reads that is not an option's value (a positional argument), with the
+  /// words that name it in a message ("the raw trace").
+  void add_input_file(const std::string& what, const std::string& path);
+  /// The existing files the command reads, each with the words that name it: the values of every
+  /// option that is not an output (--out, --plot), a "csv:" prefix taken off, that name a file,
+  /// and those added with add_input_file.
+  std::vector<std::pair<std::string, std::string>> input_files() const;
+  /// Every file the command reads or has named as an output, except the output `option`'s own,
+  /// each with the words that name it ("--out", "the file given to --input"): what a file the
+  /// output writes beside its own (a plot's second CSV) must not replace.
+  std::vector<std::pair<std::string, std::string>> files_other_than(
+      const std::string& option) const;
 
  private:
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_;
   /// Output files named so far (absolute, normalized) and the option that named each.
   mutable std::map<std::string, std::string> outputs_;
+  std::vector<std::pair<std::string, std::string>> extra_inputs_;  ///< (words, path)
 };
+
+/// Whether two paths name the same file: the same file on disk when both exist, else the same
+/// absolute, normalized path.
+bool same_file(const std::string& a, const std::string& b);
 
 /// Parses a finite number; throws InputError naming `what`.
 double parse_number(const std::string& text, const std::string& what);

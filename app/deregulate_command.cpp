@@ -63,7 +63,7 @@ int run_deregulate(const std::vector<std::string>& args) {
                                 : 0.5;
   if (options.step_interval_s < 0.0)
     throw InputError("--step-interval: must not be negative (0 moves the adjuster continuously)");
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const DeregulationResult result = deregulate(model, options);
   // the plot first: a plot that cannot be written leaves an existing --out file as it was

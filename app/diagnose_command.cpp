@@ -103,7 +103,7 @@ int run_diagnose(const std::vector<std::string>& args) {
   if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
   const std::string report = cl.value_or("--report", "");
   if (cl.has("--report")) check_report_folder(report);
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const Diagnosis d = diagnose(model, trials, options);
   const nlohmann::json json = diagnosis_json(d);
   if (!report.empty()) {

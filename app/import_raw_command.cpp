@@ -93,11 +93,12 @@ int run_import_raw(const std::vector<std::string>& args) {
     options.push_back(args[i]);
     if (takes_value && i + 1 < args.size()) options.push_back(args[++i]);
   }
-  const CommandLine cl(options, kValueOptions, {"--json"});
+  CommandLine cl(options, kValueOptions, {"--json"});
   if (raw_path.empty())
     throw InputError("missing the raw trace file (import-raw RAW --rate HZ ...)");
+  cl.add_input_file("the raw trace", raw_path);
   const std::string out_path = cl.output_path("--out", true);
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
 
   RawImportOptions o;
   if (!cl.has("--rate")) throw InputError("missing option --rate (samples per second of RAW)");

@@ -17,7 +17,7 @@ int run_keyfall(const std::vector<std::string>& args) {
   const ActionModel model = load_configured_action(cl);
   KeyFallOptions options;
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const KeyFallResult result = key_fall(model, options);
   plot.write({table_plot(result.trace, "Key front falling", "dip (mm)",

@@ -21,7 +21,7 @@ int run_measure(const std::vector<std::string>& args) {
   const ActionModel model = load_configured_action(cl);
   if (model.regulation.empty())
     throw InputError(model.source_file + ": the preset lists no regulation settings");
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::vector<SettingReading> readings = read_settings(model);
   // the seven settings' result, read as a technician does with a gauge on the front rail
   double aftertouch_mm = NAN;

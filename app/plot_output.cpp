@@ -56,7 +56,8 @@ bool is_csv_plot_path(const std::string& path) {
   return ui::export_format(text(path)) == ui::ExportFormat::Csv;
 }
 
-void write_plots(const std::string& path, const std::vector<PlotSpec>& plots) {
+void write_plots(const std::string& path, const std::vector<PlotSpec>& plots,
+                 const std::vector<KeptFile>& keep) {
   if (plots.empty()) throw InputError("--plot " + path + ": the run gave nothing to plot");
   auto write_group = [](const std::string& file, const std::vector<const PlotSpec*>& group) {
     std::vector<ui::AnalysisPlot> converted;
@@ -76,14 +77,24 @@ void write_plots(const std::string& path, const std::vector<PlotSpec>& plots) {
     if (std::find(x_columns.begin(), x_columns.end(), spec.x_column) == x_columns.end())
       x_columns.push_back(spec.x_column);
   const std::filesystem::path file(path);
+  std::vector<std::string> group_paths;
+  for (std::size_t g = 0; g < x_columns.size(); ++g) {
+    group_paths.push_back(
+        g == 0
+            ? path
+            : (file.parent_path() / (file.stem().string() + "_" + x_columns[g] + ".csv")).string());
+    for (const auto& [what, kept] : keep) {
+      if (g > 0 && same_file(group_paths[g], kept))
+        throw InputError("--plot " + path + ": its plots over " + x_columns[g] + " go to " +
+                         group_paths[g] + ", which is " + what +
+                         "; nothing was plotted, so give --plot another name");
+    }
+  }
   for (std::size_t g = 0; g < x_columns.size(); ++g) {
     std::vector<const PlotSpec*> group;
     for (const PlotSpec* spec : all)
       if (spec->x_column == x_columns[g]) group.push_back(spec);
-    const std::string group_path =
-        g == 0
-            ? path
-            : (file.parent_path() / (file.stem().string() + "_" + x_columns[g] + ".csv")).string();
+    const std::string& group_path = group_paths[g];
     write_group(group_path, group);
     if (g > 0)
       std::cerr << "note: the plots over " << x_columns[g] << " went to " << group_path
@@ -97,7 +108,8 @@ void check_plot_path(const std::string& path) {
                    "PAT_ENGINE_ONLY)");
 }
 
-void write_plots(const std::string& path, const std::vector<PlotSpec>&) {
+void write_plots(const std::string& path, const std::vector<PlotSpec>&,
+                 const std::vector<KeptFile>&) {
   check_plot_path(path);
 }
 
@@ -107,13 +119,14 @@ bool is_csv_plot_path(const std::string& path) {
 }
 #endif
 
-PlotOption::PlotOption(std::string path) : path_(std::move(path)) {
+PlotOption::PlotOption(const CommandLine& command_line)
+    : command_line_(command_line), path_(command_line.output_path("--plot")) {
   if (given()) check_plot_path(path_);  // a wrong extension fails before any work
 }
 
 bool PlotOption::write(const std::vector<PlotSpec>& plots) const {
   if (!given()) return false;
-  write_plots(path_, plots);
+  write_plots(path_, plots, command_line_.files_other_than("--plot"));
   return true;
 }
 

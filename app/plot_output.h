@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "command_line.h"
 #include "plot_spec.h"
 
 namespace pat::app {
@@ -17,17 +19,23 @@ void check_plot_path(const std::string& path);
 bool plotting_available();
 /// Whether a valid --plot path writes the plotted columns as CSV (the extension, any case).
 bool is_csv_plot_path(const std::string& path);
+/// A file that a plot's second CSV must not replace, with the words that name it.
+using KeptFile = std::pair<std::string, std::string>;  ///< (words, path)
+
 /// Writes the plots, stacked top to bottom (a CSV: those over the first plot's x axis, and those
-/// over each other x to STEM_<x column>.csv beside it; those names are not checked before the
-/// work, being known only from the plots). Throws InputError naming the file when it cannot be
-/// written or when there is nothing to plot.
-void write_plots(const std::string& path, const std::vector<PlotSpec>& plots);
+/// over each other x to STEM_<x column>.csv beside it; those names are known only from the
+/// plots, so they are checked here, before anything is written, against `keep`: the command's
+/// inputs and other outputs). Throws InputError naming the file when it cannot be written, when
+/// a second CSV would replace a kept file, or when there is nothing to plot.
+void write_plots(const std::string& path, const std::vector<PlotSpec>& plots,
+                 const std::vector<KeptFile>& keep = {});
 
 /// The --plot option of a command: reads it and checks its extension at once (before the
 /// work), and writes the plots afterwards when it was given.
 class PlotOption {
  public:
-  explicit PlotOption(std::string path);
+  /// Reads --plot from the command line (CommandLine::output_path), which must outlive this.
+  explicit PlotOption(const CommandLine& command_line);
   bool given() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
   /// A CSV export: one table per x axis (write_plots puts the plots over another x beside it).
@@ -39,6 +47,7 @@ class PlotOption {
   void write(const std::vector<PlotSpec>& plots, bool announce) const;
 
  private:
+  const CommandLine& command_line_;
   std::string path_;
 };
 

@@ -120,7 +120,7 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
 
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   if (plot.writes_csv())
     throw InputError("--plot " + plot.path() + ": the observations come in several units, one " +
                      "plot each, and a CSV holds one table: use .png, .pdf or .svg (--json " +

@@ -77,7 +77,7 @@ int run_regulate(const std::vector<std::string>& args) {
       return true;
     };
   }
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");  // checked before the regulation
   const RegulationResult result = regulate(model, options);
   // a regulation that failed is plotted too: its steps show where it got stuck

@@ -72,7 +72,7 @@ int run_simulate(const std::vector<std::string>& args) {
   const RestState rest = find_rest_state(model);
   const auto input = parse_input_spec(cl.value("--input"), input_context(model, rest));
   const std::string out_path = cl.output_path("--out");
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
 
   // a recording shorter than the run: its last value goes on, which the user should know
   const std::string notes = input_notes(*input, options.duration_s);

@@ -77,7 +77,7 @@ int run_study_compare(const std::vector<std::string>& args) {
     options.f_max_full_hz = options.f_max_half_hz = cl.positive_number("--fmax");
   const ActionModel grand = load_action("grand");
   const ActionModel upright = load_action("upright");
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const ComparisonResult result = compare_actions({&grand, &upright}, options);
   // the plot first: a plot that cannot be written leaves an existing --out file as it was

@@ -26,7 +26,7 @@ int run_study_double_blow(const std::vector<std::string>& args) {
     if (options.gap_ms < 0.0) throw InputError("--gap-ms must not be negative");
   }
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const DoubleBlowStudy study = double_blow_study(model, options);
   plot.write({table_plot(study.trace, "Hammer under a double blow", "hammer angle (deg)",

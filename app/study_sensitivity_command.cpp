@@ -56,7 +56,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   SensitivityOptions options;
   options.step_mm = cl.positive_number_or("--step", 0.5);
   options.groups = sensitivity_metric_groups(cl.positive_number_or("--force", 20.0));
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const SensitivityResult result = sensitivity(model, options);
 

@@ -41,7 +41,7 @@ int run_sweep(const std::vector<std::string>& args) {
     options.window_cycles = static_cast<int>(window);
   }
   const std::string out_path = cl.output_path("--out");
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   // the chirp run is traced for its plot: a sample every 0.5 ms, ten or more per cycle
   if (plot.given() && options.mode == SweepMode::chirp) options.trace_interval_s = 5e-4;
 

@@ -23,7 +23,7 @@ int run_swing(const std::vector<std::string>& args) {
     if (degrees > 179.0) throw InputError("--release-deg: at most 179 degrees from hanging");
     options.release_angle_rad = degrees * M_PI / 180.0;
   }
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const SwingResult result = swing_test(model, options);
   plot.write(

@@ -41,7 +41,7 @@ int run_synth(const std::vector<std::string>& args) {
       throw InputError("--seed must be a whole number ≥ 0");
     o.seed = static_cast<unsigned long long>(seed);
   }
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const CsvTable table = synthesize(model, cl.value("--input"), o);
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write({table_plot(table, "Synthetic measurement", "angle (deg)",

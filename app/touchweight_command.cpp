@@ -29,7 +29,7 @@ int run_touchweight(const std::vector<std::string>& args) {
   }
   if (cl.has("--key-lead-g"))
     model = with_key_front_lead(model, parse_number(cl.value("--key-lead-g"), "--key-lead-g"));
-  const PlotOption plot(cl.output_path("--plot"));
+  const PlotOption plot(cl);
   const std::string out_path = cl.output_path("--out");
   const TouchweightResult result = measure_touchweight(model);
   plot.write({table_plot(result.table(), "Weights at the key front", "weight (g)",

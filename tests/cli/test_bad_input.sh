@@ -213,6 +213,54 @@ if grep -qF "study: study:" stderr.txt; then fail "the study's message repeats i
 expect_failure "a plot file without an extension" "no file extension to tell the plot format" \
   simulate --action grand --input mass:1kg --duration 0.05 --plot noextension
 
+# --- an output never replaces a file the command reads ---------------------------------------------
+# expect_input_kept "DESCRIPTION" FILE ARGS...: refused (exit 2, stderr names FILE and what reads
+# it) and FILE unchanged byte for byte
+expect_input_kept() {
+  local description="$1" file="$2"
+  shift 2
+  cases=$((cases + 1))
+  cp "$file" kept_copy
+  local status=0
+  "$exe" "$@" >stdout.txt 2>stderr.txt || status=$?
+  if [[ $status -ne 2 ]]; then
+    fail "$description: exit code $status (expected 2) for: $*"
+  elif ! grep -qF "$file is " stderr.txt || ! grep -qF "which this command reads" stderr.txt; then
+    fail "$description: the message does not name the input: $(cat stderr.txt)"
+  elif ! cmp -s "$file" kept_copy; then
+    fail "$description: $file was overwritten"
+  else
+    echo "ok: $description: $(head -n 1 stderr.txt)"
+  fi
+}
+printf 'time_s,key_force_n\n0,0\n0.05,5\n0.1,0\n' >force_input.csv
+expect_input_kept "--out onto the --input CSV" force_input.csv \
+  simulate --action grand --input csv:force_input.csv --duration 0.05 --out force_input.csv
+cp "$grand" own_preset.json
+mkdir -p sub
+expect_input_kept "--out onto the --action preset (another spelling of its path)" own_preset.json \
+  simulate --action own_preset.json --input mass:1kg --duration 0.01 --out ./sub/../own_preset.json
+printf '0 1 2\n' >raw_input.txt
+expect_input_kept "import-raw --out onto its raw trace" raw_input.txt \
+  import-raw raw_input.txt --rate 2000 --out raw_input.txt
+if ! grep -qF "the raw trace" stderr.txt; then fail "import-raw: the raw trace is not named"; fi
+
+# a CSV plot's second file (over another x axis) must not replace the --out file, and nothing is
+# written then
+cases=$((cases + 1))
+rm -f swept.csv swept_time_s.csv
+printf 'keep\n' >swept_time_s.csv
+status=0
+"$exe" sweep --action upright --stroke full --fstart 2 --fmax 4 --plot swept.csv \
+  --out swept_time_s.csv >stdout.txt 2>stderr.txt || status=$?
+if [[ $status -ne 2 ]] || ! grep -qF "which is the --out file" stderr.txt; then
+  fail "a plot's second CSV onto --out: exit $status, stderr: $(cat stderr.txt)"
+elif [[ "$(cat swept_time_s.csv)" != "keep" || -e swept.csv ]]; then
+  fail "a plot's second CSV onto --out: a file was written"
+else
+  echo "ok: a plot's second CSV onto --out is refused: $(head -n 1 stderr.txt)"
+fi
+
 # --- a run that blows up says so (a step too long for a 20 N press), it does not report "ok" ------
 cases=$((cases + 1))
 status=0
