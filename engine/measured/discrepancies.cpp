@@ -117,25 +117,47 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
     f.text = text.str();
     out.features.push_back(f);
   };
-  const MeasuredEvent* impact = nullptr;
-  const MeasuredEvent* check = nullptr;
-  for (const MeasuredEvent& e : events) {
-    if (e.type == "impact" && !impact) impact = &e;
-    if (e.type == "check" && !check) check = &e;
-  }
-  if (impact && !model.impact_t.empty()) {
-    const double model_impact = model.impact_t.front() + dt_shift;
-    add("impact_time", "ms", impact->t * 1e3, model_impact * 1e3, "first impact time");
+  // the model's impact and check are read from its aligned trace, sampled where the file is, by
+  // the rule that reads them in the file (detect_events): its own events time the impact at first
+  // touch, the file's at the felt's deepest point, about 1 ms later (a perfect model would show a
+  // difference)
+  MeasuredTrial model_sampled;  // the model as the file would have recorded it
+  model_sampled.t = trial.t;
+  model_sampled.hammer_deg.resize(trial.t.size());
+  for (std::size_t i = 0; i < trial.t.size(); ++i)
+    model_sampled.hammer_deg[i] = model_at(trial.t[i]);
+  const std::vector<MeasuredEvent> model_events =
+      detect_events(model_sampled.t, model_sampled.hammer_deg, noise_deg);
+  auto first_of = [](const std::vector<MeasuredEvent>& list, const std::string& type) {
+    const auto it = std::find_if(list.begin(), list.end(),
+                                 [&](const MeasuredEvent& e) { return e.type == type; });
+    return it == list.end() ? nullptr : &*it;
+  };
+  const MeasuredEvent* impact = first_of(events, "impact");
+  const MeasuredEvent* check = first_of(events, "check");
+  const MeasuredEvent* model_impact = first_of(model_events, "impact");
+  const MeasuredEvent* model_check = first_of(model_events, "check");
+  const bool model_strikes = model_impact || !model.impact_t.empty();
+  if (impact && model_impact) {
+    add("impact_time", "ms", impact->t * 1e3, model_impact->t * 1e3, "first impact time");
     add("impact_velocity", "deg/s",
         approach_rate([&](double t) { return measured_at(trial, t); }, impact->t),
-        approach_rate(model_at, model_impact), "hammer rate just before the first impact");
-  } else if (impact) {
+        approach_rate([&](double t) { return measured_at(model_sampled, t); }, model_impact->t),
+        "hammer rate just before the first impact");
+  } else if (impact && !model_strikes) {
     out.features.push_back({"impact_time", "ms", impact->t * 1e3, 0.0, 0.0, true,
                             "the measured hammer strikes the string at " +
                                 format_fixed(impact->t * 1e3) + " ms but the model never does"});
-  } else if (!model.impact_t.empty()) {
-    out.features.push_back({"impact_time", "ms", 0.0, (model.impact_t.front() + dt_shift) * 1e3,
-                            0.0, false,
+  } else if (impact) {
+    out.features.push_back(
+        {"impact_time", "ms", impact->t * 1e3, (model.impact_t.front() + dt_shift) * 1e3, 0.0,
+         false,
+         "the model touches the string at " +
+             format_fixed((model.impact_t.front() + dt_shift) * 1e3) +
+             " ms, too lightly for its trace to show a strike the way the file's does"});
+  } else if (model_strikes) {
+    const double t = model_impact ? model_impact->t : model.impact_t.front() + dt_shift;
+    out.features.push_back({"impact_time", "ms", 0.0, t * 1e3, 0.0, false,
                             "the model strikes the string but no impact is seen in the data"});
   }
   if (!model.escapement_t.empty()) {
@@ -145,8 +167,8 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
              " ms; a hammer trace does not show let-off directly";
     out.features.push_back(f);
   }
-  if (check && !model.check_t.empty())
-    add("check_angle", "deg", check->angle_deg, model_at(model.check_t.front() + dt_shift),
+  if (check && model_check)
+    add("check_angle", "deg", check->angle_deg, model_check->angle_deg,
         "hammer angle when caught by the backcheck");
   // settling level: the last 20 ms
   {

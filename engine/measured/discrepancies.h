@@ -59,7 +59,8 @@ struct TrialDiscrepancies {
 /// 10 ms after the check, or 60 ms after the impact, and then while the caught hammer moves less
 /// than 50°/s), release while the hammer falls (or, caught, moves faster: a repetition lever
 /// throwing it up as the key rises), return once it is within 0.3° of rest after a strike.
-/// Features compare the measured events (detect_events) with the model's.
+/// Features compare the measured events (detect_events) with the model's, read from the aligned
+/// model trace at the file's samples by the same detect_events (the same rule on both sides).
 TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTrace& model,
                                       const Alignment& alignment,
                                       const std::vector<MeasuredEvent>& measured_events,

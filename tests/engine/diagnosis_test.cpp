@@ -235,6 +235,35 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
             "acceleration");
 }
 
+TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
+  // The model's trace, sampled at 2000 fps as a measured file: every feature must read the same
+  // on both sides. (The model's impact event is its felt's first touch, the file's impact the
+  // felt's deepest point, 1.1 ms later for this 5 N blow: compared directly they differed.)
+  const ActionModel grand = test::shipped("grand");
+  const ModelTrace m = simulate_trace(grand, "force:pulse:5:40", 0.2);
+  ASSERT_TRUE(m.completed) << m.stop_cause;
+  ASSERT_FALSE(m.impact_t.empty());
+  MeasuredTrial trial;
+  trial.path = "own_trace.csv";
+  for (int i = 0; i <= 400; ++i) {
+    trial.t.push_back(i * 5e-4);
+    trial.hammer_deg.push_back(m.hammer_at(i * 5e-4));
+  }
+  Alignment al;
+  al.residual.assign(trial.t.size(), 0.0);
+  const double noise_deg = 0.01;
+  const TrialDiscrepancies d = find_discrepancies(
+      trial, m, al, detect_events(trial.t, trial.hammer_deg, noise_deg), noise_deg);
+  int compared = 0;
+  for (const FeatureDiscrepancy& f : d.features) {
+    if (!f.measured_known || f.feature == "residual_oscillation") continue;
+    ++compared;
+    // the same samples through the same rule: equal to rounding
+    EXPECT_NEAR(f.difference, 0.0, 1e-9) << f.text;
+  }
+  EXPECT_GE(compared, 3);  // impact time, hammer rate before it, check angle, settling level
+}
+
 // A model hammer at rest for `rest_s`, then rising at `rate_deg_per_s`: `samples` + 1 points
 // on a 0.1 ms grid, the key still.
 ModelTrace rest_then_rise(double rest_s, double rate_deg_per_s, int samples) {
