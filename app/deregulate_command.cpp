@@ -78,6 +78,7 @@ int run_deregulate(const std::vector<std::string>& args) {
            {"adjuster_mm", s.adjuster_mm},
            {"measured", std::isfinite(s.measured) ? nlohmann::json(s.measured) : nullptr},
            {"measure_problem", text_or_null(s.measure_problem)},
+           {"measure_note", text_or_null(s.measure_note)},
            {"blow_mm", std::isfinite(s.blow_mm) ? nlohmann::json(s.blow_mm) : nullptr},
            {"hammer_string_gap_mm", s.hammer_string_gap_mm},
            {"whippen_angle_deg", s.whippen_angle_deg}});
@@ -93,7 +94,7 @@ int run_deregulate(const std::vector<std::string>& args) {
               << " mm/s, key at " << options.frequency_hz << " Hz\n";
     const int setting = model.setting_index(options.setting);
     const std::string unit = setting >= 0 ? model.regulation[setting].unit : "";
-    std::string last_problem;  // a reason is written once, where it first appears
+    int last_kind = 0;  // 0 read as the action stands, 1 read another way, 2 not read
     for (const DeregulationSample& s : result.samples) {
       std::cout << "  t " << format_fixed(s.t, 3) << " s  adjuster "
                 << number_in(s.adjuster_mm, "mm", 3) << " mm  " << options.setting << " "
@@ -102,9 +103,12 @@ int run_deregulate(const std::vector<std::string>& args) {
                 << "  blow "
                 << (std::isfinite(s.blow_mm) ? number_in(s.blow_mm, "mm") + " mm" : "-")
                 << "  whippen " << format_fixed(s.whippen_angle_deg, 2) << " deg";
-      if (!s.measure_problem.empty() && s.measure_problem != last_problem)
-        std::cout << "  (" << s.measure_problem << ")";
-      last_problem = s.measure_problem;
+      // why a setting cannot be read, or how it was read, is written where it first appears,
+      // not at each following sample (the JSON has every sample's)
+      const int kind = !s.measure_problem.empty() ? 2 : !s.measure_note.empty() ? 1 : 0;
+      if (kind != last_kind && kind > 0)
+        std::cout << "  (" << (kind == 2 ? s.measure_problem : s.measure_note) << ")";
+      last_kind = kind;
       std::cout << "\n";
     }
     std::cout << result.status << " at t = " << result.stop_t << " s"

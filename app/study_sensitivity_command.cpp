@@ -47,6 +47,20 @@ std::vector<PlotSpec> sensitivity_plots(const SensitivityResult& r, double step_
   return plots;
 }
 
+/// How each of a row's readings was taken when not as its variant stands, or why it could not
+/// be: {"minus": ..., "as_given": ..., "plus": ...}, only those that have one.
+nlohmann::json measured_notes(const SensitivityRow& row) {
+  nlohmann::json notes = nlohmann::json::object();
+  const char* const sides[3] = {"minus", "as_given", "plus"};
+  for (int p = 0; p < 3; ++p) {
+    if (!row.measured_problem[p].empty())
+      notes[sides[p]] = "not read: " + row.measured_problem[p];
+    else if (!row.measured_note[p].empty())
+      notes[sides[p]] = row.measured_note[p];
+  }
+  return notes;
+}
+
 }  // namespace
 
 int run_study_sensitivity(const std::vector<std::string>& args) {
@@ -101,6 +115,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
                           {"measured_minus", number_or_null(row.measured[0])},
                           {"measured", number_or_null(row.measured[1])},
                           {"measured_plus", number_or_null(row.measured[2])},
+                          {"measured_notes", measured_notes(row)},
                           {"metrics", metrics}});
     }
     nlohmann::json baseline = nlohmann::json::object();
@@ -125,10 +140,35 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   std::cout << std::left << std::setw(16) << "setting" << std::setw(26) << "measured - / 0 / +";
   for (const std::string& m : result.metrics) std::cout << std::setw(26) << m;
   std::cout << "\n" << std::setprecision(4);
+  // the action as given: what each change is a change from
+  std::cout << std::setw(16) << "(as given)" << std::setw(26) << "";
+  for (double value : result.baseline) {
+    std::ostringstream cell;
+    cell << std::setprecision(4) << value;
+    std::cout << std::setw(26) << cell.str();
+  }
+  std::cout << "\n";
+  // a reading taken with another screw out of the way is starred, one that cannot be taken is
+  // "-": both explained under the table
+  std::vector<std::string> footnotes;
   for (const SensitivityRow& row : result.rows) {
     std::ostringstream measured;
-    measured << std::setprecision(4) << row.measured[0] << " / " << row.measured[1] << " / "
-             << row.measured[2];
+    measured << std::setprecision(4);
+    for (int p = 0; p < 3; ++p) {
+      if (p > 0) measured << " / ";
+      const std::string side =
+          p == 1 ? "as given" : (p == 0 ? "-" : "+") + format_number(options.step_mm) + " mm";
+      if (!row.measured_problem[p].empty()) {
+        measured << "-";
+        footnotes.push_back(row.setting + " " + side + ": not read: " + row.measured_problem[p]);
+      } else {
+        measured << row.measured[p];
+        if (!row.measured_note[p].empty()) {
+          measured << "*";
+          footnotes.push_back(row.setting + " " + side + ": " + row.measured_note[p]);
+        }
+      }
+    }
     std::cout << std::setw(16) << row.setting << std::setw(26) << measured.str();
     for (std::size_t m = 0; m < result.metrics.size(); ++m) {
       std::ostringstream cell;
@@ -137,6 +177,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
     }
     std::cout << "\n";
   }
+  for (const std::string& note : footnotes) std::cout << "  " << note << "\n";
   // which screw matters most: the same turn of each adjuster, the largest change first
   std::cout << "\nlargest change over the -" << options.step_mm << " ... +" << options.step_mm
             << " mm turn:\n";

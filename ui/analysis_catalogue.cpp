@@ -251,12 +251,26 @@ AnalysisEntry regulation_sensitivity() {
       // one row per setting: how the setting itself moved, then one row per metric
       for (const SensitivityRow& row : r.rows) {
         const QString name = setting_title(row.setting);
+        // a reading taken another way is starred, with how it was taken on a row of its own
+        QStringList readings;
+        QStringList comments;
+        for (int p = 0; p < 3; ++p) {
+          const bool noted = !row.measured_note[p].empty() || !row.measured_problem[p].empty();
+          readings << number(row.measured[p]) + (noted ? QStringLiteral("*") : QString());
+          if (noted)
+            comments << QObject::tr("* %1: %2")
+                            .arg(p == 0   ? QObject::tr("−0.5 mm")
+                                 : p == 1 ? QObject::tr("as given")
+                                          : QObject::tr("+0.5 mm"))
+                            .arg(QString::fromStdString(row.measured_problem[p].empty()
+                                                            ? row.measured_note[p]
+                                                            : row.measured_problem[p]));
+        }
         result.table.push_back({name + QObject::tr(" measured (−0.5 / 0 / +0.5 mm)"),
-                                QObject::tr("%1 / %2 / %3")
-                                    .arg(number(row.measured[0]))
-                                    .arg(number(row.measured[1]))
-                                    .arg(number(row.measured[2])),
+                                readings.join(QStringLiteral(" / ")),
                                 QString::fromStdString(row.unit)});
+        for (const QString& comment : comments)
+          result.table.push_back({QStringLiteral("   ") + comment, QString(), QString()});
         for (std::size_t m = 0; m < r.metrics.size(); ++m)
           result.table.push_back({QStringLiteral("   ") + metric_name(r.metrics[m]).words,
                                   QObject::tr("%1 / %2 / %3")

@@ -135,6 +135,8 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
   std::vector<std::vector<double>> metrics(variants.size(), std::vector<double>(n_metrics, kNaN));
   // measured[s][p]: setting s measured on its own variant at −step, 0, +step
   std::vector<std::array<double, 3>> measured(n_settings, {kNaN, kNaN, kNaN});
+  std::vector<std::array<std::string, 3>> readings_note(n_settings);
+  std::vector<std::array<bool, 3>> readings_failed(n_settings, {false, false, false});
   auto variant_of = [](std::size_t setting, int position) -> std::size_t {
     return position == 1 ? 0 : 1 + 2 * setting + (position == 2 ? 1 : 0);
   };
@@ -178,12 +180,13 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
         const int position = static_cast<int>(k % 3);
         const std::size_t v = variant_of(setting, position);
         if (failed[v]) return;
-        try {
-          measured[setting][position] =
-              measure_setting(*variants[v], model.regulation[setting].name, &rests[v]);
-        } catch (const std::exception&) {
-          // not measurable there (e.g. the jack never escapes): stays NaN
-        }
+        // read as a technician reads it (read_setting: e.g. the let-off with the drop screw out
+        // of the way); one that cannot be read there stays NaN with its reason
+        const SettingReading reading =
+            read_setting(*variants[v], model.regulation[setting], &rests[v]);
+        measured[setting][position] = reading.measured;
+        readings_note[setting][position] = reading.problem.empty() ? reading.note : reading.problem;
+        readings_failed[setting][position] = !reading.problem.empty();
       },
       &reporter);
 
@@ -192,7 +195,11 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
     SensitivityRow row;
     row.setting = model.regulation[s].name;
     row.unit = model.regulation[s].unit;
-    for (int p = 0; p < 3; ++p) row.measured[p] = measured[s][p];
+    for (int p = 0; p < 3; ++p) {
+      row.measured[p] = measured[s][p];
+      (readings_failed[s][p] ? row.measured_problem[p] : row.measured_note[p]) =
+          readings_note[s][p];
+    }
     row.minus = metrics[variant_of(s, 0)];
     row.plus = metrics[variant_of(s, 2)];
     const double d_setting = row.measured[2] - row.measured[0];

@@ -47,8 +47,13 @@ struct SensitivityOptions {
 struct SensitivityRow {
   std::string setting;
   std::string unit;  ///< of the setting's measurement
-  /// The setting measured at −step, 0, +step (NaN when it cannot be measured there).
+  /// The setting measured at −step, 0, +step (NaN when it cannot be measured there), read as a
+  /// technician reads it (read_setting, regulation/measurements.h).
   double measured[3] = {0.0, 0.0, 0.0};
+  /// How a reading was taken when not as the variant stands ("drop +1.00 mm"), else empty.
+  std::string measured_note[3];
+  /// Why a reading is NaN, else empty.
+  std::string measured_problem[3];
   /// Metric values at −step and +step, in the order of SensitivityResult::metrics.
   std::vector<double> minus, plus;
   /// The change of metric m per mm of the setting's *measured* value (central difference:

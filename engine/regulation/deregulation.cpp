@@ -92,8 +92,11 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
   double value = start_value;
   // the blow at rest goes with every sample; it is the measurement itself when that is the setting
   const bool setting_is_blow = options.setting == "hammer_blow";
-  double measured = measure_setting(model, options.setting, &rest);
-  std::string measure_problem;  // why `measured` is NaN, when it is
+  const RegulationSetting& target = model.regulation[static_cast<std::size_t>(setting_index)];
+  const SettingReading first_reading = read_setting(model, target, &rest);
+  double measured = first_reading.measured;
+  std::string measure_problem = first_reading.problem;  // why `measured` is NaN, when it is
+  std::string measure_note = first_reading.note;  // how it was read when not as the action stands
   double blow_mm = setting_is_blow ? measured : measure_setting(model, "hammer_blow", &rest);
   const double period = 1.0 / options.frequency_hz;
   int next_cycle = 1;
@@ -133,11 +136,15 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       sim.set_model(moved);
       try {
         rest = rest_state_near(*moved, rest);
-        measured = measure_setting(*moved, options.setting, &rest);
-        measure_problem.clear();
+        // read as a technician reads it (e.g. the let-off with the drop screw out of the way)
+        const SettingReading reading = read_setting(*moved, target, &rest);
+        measured = reading.measured;  // NaN where it cannot be read (the jack never escapes)
+        measure_problem = reading.problem;
+        measure_note = reading.note;
       } catch (const std::exception& e) {
-        measured = std::nan("");  // cannot be measured there (e.g. the jack never escapes)
+        measured = std::nan("");  // no rest state near the last one
         measure_problem = e.what();
+        measure_note.clear();
       }
       blow_mm = setting_is_blow ? measured : measured_or_nan(*moved, "hammer_blow", &rest);
     }
@@ -148,6 +155,7 @@ DeregulationResult deregulate(const ActionModel& model, const DeregulationOption
       sample.adjuster_mm = value * 1e3;
       sample.measured = measured;
       sample.measure_problem = measure_problem;
+      sample.measure_note = measure_note;
       sample.blow_mm = blow_mm;
       sample.hammer_string_gap_mm = sim.hammer_string_gap(sim.q()) * 1e3;
       sample.whippen_angle_deg = whippen >= 0 ? model.bodies[whippen].trace_sign *

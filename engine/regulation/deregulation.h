@@ -29,6 +29,9 @@ struct DeregulationSample {
   double adjuster_mm = 0.0;     ///< adjuster position at t
   double measured = 0.0;        ///< the setting measured (its unit) on the action at that position
   std::string measure_problem;  ///< why it could not be measured there (measured NaN), or empty
+  /// How it was read when not as the action stands (read_setting: the let-off with the drop
+  /// screw out of the way), or empty.
+  std::string measure_note;
   /// hammer–string distance at rest (mm) at that position: the blow, whatever the setting (on
   /// the upright the key pilot is the lost-motion capstan, which shrinks the blow once the jack
   /// lifts the butt)

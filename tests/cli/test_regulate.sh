@@ -60,18 +60,25 @@ assert all(s["blow_mm"] is not None for s in r["samples"]), "a sample without it
 print("ok: deregulate: blow %.1f -> %.1f mm, stopped at %.2f s (%s)" % (m[0], m[-1], r["stop_t_s"], r["stop_cause"]))
 PY
 [[ "$(awk '!/^#/ { print; exit }' d.csv)" == *adjuster_mm* ]] || { echo "FAIL: d.csv has no adjuster_mm column" >&2; exit 1; }
-# a setting that cannot be read along the way says why (JSON measure_problem; text once)
-"$exe" deregulate --action grand --setting let_off --rate 1 --duration 1 --json >l.json
+# a setting that cannot be read along the way says why (JSON measure_problem; text once), and
+# one read another way says how (the grand's let-off 0.5 mm lower, with the drop screw out of the
+# way; from 1.5 mm lower the hammer is carried up and held without a let-off at all)
+"$exe" deregulate --action grand --setting let_off --rate 1 --duration 2 --json >l.json
 python3 - l.json <<'PY'
 import json, sys
 r = json.load(open(sys.argv[1]))
 unread = [s for s in r["samples"] if s["measured"] is None]
-assert unread, "let-off 0.5 mm lower should not be readable"
+assert unread, "let-off 1.5 mm lower should not be readable"
 assert all(s["measure_problem"] for s in unread), unread
 assert all(s["measure_problem"] is None for s in r["samples"] if s["measured"] is not None)
-print("ok: deregulate names why let-off cannot be read: %s" % unread[0]["measure_problem"])
+noted = [s for s in r["samples"] if s["measure_note"]]
+assert noted and all(s["measured"] is not None for s in noted), r["samples"]
+assert "drop screw out of the way" in noted[0]["measure_note"], noted[0]
+print("ok: deregulate says how let-off is read (%s) and why not (%s)"
+      % (noted[0]["measure_note"][:60], unread[0]["measure_problem"][:60]))
 PY
-"$exe" deregulate --action grand --setting let_off --rate 1 --duration 1 >l.txt
+"$exe" deregulate --action grand --setting let_off --rate 1 --duration 2 >l.txt
 grep -q "let_off cannot be read  .*(in a slow key press" l.txt || { echo "FAIL: no reason in the text: $(cat l.txt)" >&2; exit 1; }
 [ "$(grep -c '(in a slow key press' l.txt)" = 1 ] || { echo "FAIL: the reason is repeated: $(cat l.txt)" >&2; exit 1; }
+[ "$(grep -c '(read with the drop screw out of the way' l.txt)" = 1 ] || { echo "FAIL: how let-off was read is not said once: $(cat l.txt)" >&2; exit 1; }
 echo "all regulate checks passed"

@@ -42,16 +42,17 @@ double velocity_slope(const std::string& action, const std::string& setting) {
   return row_of(r, setting).per_unit_of_setting.at(0);
 }
 
-TEST(Sensitivity, EverySettingHasARowAndAllButTwoAreMeasuredOnBothSides) {
+TEST(Sensitivity, EverySettingHasARowAndAllButOneAreMeasuredOnBothSides) {
   for (const char* action : {"grand", "upright"}) {
     const SensitivityResult& r = blow_sensitivity(action);
     ASSERT_EQ(r.rows.size(), 7u) << action;
     ASSERT_EQ(r.metrics, (std::vector<std::string>{"impact_velocity_mps", "let_off_time_ms"}));
     EXPECT_TRUE(std::isfinite(r.baseline[0])) << action << ": the 20 N blow strikes";
-    // known model limits (README): the grand's let-off and drop cannot be measured on both
-    // sides of the shipped preset yet (0.5 mm lower, the button trips the jack before the
-    // repetition lever reaches its drop screw)
-    const std::set<std::string> unmeasurable = {"grand:let_off", "grand:drop"};
+    // a known model limit (README): the grand's drop cannot be read 0.5 mm below its regulated
+    // screw (the button trips the jack before the repetition lever reaches the drop screw, so the
+    // hammer is carried up and held). Its let-off 0.5 mm lower is read as a technician reads it,
+    // with the drop screw out of the way, and says so.
+    const std::set<std::string> unmeasurable = {"grand:drop"};
     for (const SensitivityRow& row : r.rows) {
       const bool both = std::isfinite(row.measured[0]) && std::isfinite(row.measured[2]);
       // the known limits still hold (a model fix shows up here and the entry goes)
@@ -60,8 +61,15 @@ TEST(Sensitivity, EverySettingHasARowAndAllButTwoAreMeasuredOnBothSides) {
       else
         EXPECT_TRUE(both) << action << " " << row.setting
                           << ": measurable 0.5 mm either side of regulation";
+      for (int p = 0; p < 3; ++p)  // a missing reading always says why
+        EXPECT_EQ(std::isfinite(row.measured[p]), row.measured_problem[p].empty())
+            << action << " " << row.setting << " " << p << ": " << row.measured_problem[p];
     }
   }
+  const SensitivityRow& let_off = row_of(blow_sensitivity("grand"), "let_off");
+  EXPECT_NE(let_off.measured_note[2].find("drop screw out of the way"), std::string::npos)
+      << let_off.measured_note[2];
+  EXPECT_TRUE(let_off.measured_note[1].empty()) << let_off.measured_note[1];
 }
 
 // "Let-off too far: misses at ppp, weak dynamic control, lost power" [SW][BS]: the farther
