@@ -114,9 +114,10 @@ QString PlaybackController::inputs_text(bool in_words) const {
 void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) {
   if (replay_) return;  // a recorded analysis cannot change
   model_ = model;
+  // the run takes it from its next step: a paused run stays on the frame shown (a screw turned
+  // with the arrow keys must not step the run too; the window's status line says the change acts
+  // as the run goes on)
   worker_->request_model(std::move(model));
-  // a paused run still shows the change: compute one frame further
-  if (!playing_ && !stopped_) advance(1);
 }
 
 void PlaybackController::strike(const std::string& force_spec) {

@@ -350,6 +350,30 @@ void RunControlsTest::moving_a_slider_changes_the_running_model() {
         since_move.nsecsElapsed() * 1e-6);
   QVERIFY(c->playing());
   QVERIFY(!c->run_stopped());
+
+  // paused, a screw turned with the arrow keys of its focused slider moves the screw only: the
+  // frame shown stays (the run used to compute one frame further at each key, so the class saw
+  // the time move too), and the status line says the change acts as the run goes on
+  c->pause();
+  QVERIFY(wait_until([&] { return !c->playing(); }));
+  QCoreApplication::processEvents();
+  const double paused_at = c->display_time();
+  row->slider()->setFocus();
+  for (int press = 0; press < 3; ++press) QTest::keyClick(row->slider(), Qt::Key_Right);
+  QCOMPARE(row->slider()->value(), 83);
+  QCOMPARE(window.model()->adjusters[a].value, 0.83e-3);
+  QTest::qWait(300);  // frames computed for the change would have arrived by now
+  QCOMPARE(c->display_time(), paused_at);
+  QVERIFY(!c->playing());
+  QVERIFY2(window.statusBar()->currentMessage().contains("acts as the run goes on") ||
+               window.statusBar()->toolTip().contains("acts as the run goes on"),
+           qPrintable(window.statusBar()->currentMessage()));
+  // and played on, the run takes it
+  c->play();
+  QVERIFY(wait_until([&] {
+    const auto& f = c->current_frame();
+    return f.model && std::abs(f.model->adjusters[a].value - 0.83e-3) < 1e-12;
+  }));
 }
 
 void RunControlsTest::a_diverging_run_pauses_and_shows_its_cause() {
