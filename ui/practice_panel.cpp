@@ -331,7 +331,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
                             .arg(s.economy, 0, 'f', 1)
                             .arg(hints)
                             .arg(QString::fromStdString(session_->answer_heading()),
-                                 QString::fromStdString(session_->answer_text())));
+                                 QString::fromStdString(session_->answer_text())) +
+                        (s.out_of_tolerance.empty()
+                             ? QString()
+                             : tr(" Still out of tolerance, to set next: %1.")
+                                   .arg(QString::fromStdString(s.out_of_tolerance))));
             export_button_->setEnabled(true);
             remember_session(s);
             emit scored(s.total);

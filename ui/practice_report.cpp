@@ -50,6 +50,7 @@ QString session_report_html(const PracticeSession& session) {
             "</th></tr>";
     const ActionModel& regulated = session.regulated();
     for (const CorrectionReading& r : score->readings) {
+      if (!r.scored) continue;  // named in the notes above when out of tolerance
       const int index = regulated.setting_index(r.setting);
       const std::string unit = index >= 0 ? regulated.regulation[index].unit : std::string();
       html += "<tr><td>" + cell(setting_words(r.setting)) + "</td><td>" +

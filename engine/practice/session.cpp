@@ -108,7 +108,7 @@ std::vector<Symptom> PracticeSession::record_test(
   // sentences the trainee read go with it
   std::string detail = test_label(test) + (check ? " (check): " : ": ");
   std::string words;
-  if (symptoms.empty()) detail += "nothing differs from a regulated action";
+  if (symptoms.empty()) detail += "nothing differs noticeably from a regulated action";
   for (std::size_t i = 0; i < symptoms.size(); ++i) {
     detail += (i ? ", " : "") + setting_words(symptoms[i].id);
     words += (i ? " " : "") + symptoms[i].text;
@@ -274,7 +274,7 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
                                 [&](const CorrectionReading& c) { return c.setting == f.setting; });
     double removed = 0.0;
     std::string how = "not measurable after the correction";
-    if (r != readings.end() && r->regulated && r->corrected) {
+    if (r != readings.end() && r->scored && r->regulated && r->corrected) {
       const double residual = std::abs(*r->corrected - *r->regulated);
       const double initial = r->hidden ? std::abs(*r->hidden - *r->regulated) : NAN;
       // the hidden deviation is the scale; when the hidden action could not be measured (no
@@ -306,6 +306,28 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
     }
   }
   s.regulation = std::max(0.0, s.regulation);
+  // what the correction left out of tolerance elsewhere: named, no marks taken (the exercise is
+  // the hidden fault; a technician sets what follows it next, in the regulation order)
+  std::string left_out;
+  for (const CorrectionReading& r : readings) {
+    if (r.scored) continue;
+    const int index = regulated_.setting_index(r.setting);
+    if (index < 0) continue;
+    const RegulationSetting& setting = regulated_.regulation[static_cast<std::size_t>(index)];
+    if (r.corrected && std::abs(*r.corrected - setting.target) <= setting.tolerance) continue;
+    left_out +=
+        (left_out.empty() ? "" : ", ") + setting_words(r.setting) + " " +
+        (r.corrected ? reading_text(*r.corrected, setting.unit) : std::string("cannot be read")) +
+        " (target " + reading_text(setting.target, setting.unit) + " ± " +
+        format_number(setting.tolerance) + ")";
+  }
+  if (!left_out.empty()) {
+    s.out_of_tolerance = left_out;
+    s.notes.push_back(
+        "out of tolerance after the correction (no marks taken; set next, in the "
+        "regulation order): " +
+        left_out);
+  }
 
   s.check_tests = check_tests_;
   const std::set<PracticeTest> distinct(tests_run_.begin(), tests_run_.end());
@@ -332,9 +354,17 @@ std::vector<CorrectionReading> measure_corrections(const PracticeSession& sessio
   const ActionModel hidden = hidden_model(session.regulated(), session.exercise());
   const ActionModel corrected = session.current_model();
   std::vector<CorrectionReading> readings;
-  for (const std::string& setting : session.scored_settings())
+  const std::vector<std::string> scored = session.scored_settings();
+  for (const std::string& setting : scored)
     readings.push_back({setting, try_measure(session.regulated(), setting),
                         try_measure(hidden, setting), try_measure(corrected, setting)});
+  // every other setting on the corrected action, read as the regulation panel reads it
+  for (const SettingReading& r : read_settings(corrected)) {
+    if (std::find(scored.begin(), scored.end(), r.name) != scored.end()) continue;
+    CorrectionReading other{r.name, std::nullopt, std::nullopt, std::nullopt, false};
+    if (std::isfinite(r.measured)) other.corrected = r.measured;
+    readings.push_back(other);
+  }
   return readings;
 }
 
@@ -355,6 +385,7 @@ void write_session_csv(const std::string& path, const PracticeSession& session) 
       out << format_number(s->time_s) << ",score_note," << csv_quoted(note) << ",\n";
     const ActionModel& regulated = session.regulated();
     for (const CorrectionReading& r : s->readings) {
+      if (!r.scored) continue;  // named in the score's notes when out of tolerance
       const int index = regulated.setting_index(r.setting);
       const std::string unit = index >= 0 ? regulated.regulation[index].unit : std::string();
       auto value = [&unit](const std::optional<double>& v) {

@@ -43,6 +43,11 @@ struct SessionEvent {
 struct CorrectionReading {
   std::string setting;
   std::optional<double> regulated, hidden, corrected;
+  /// A deregulated or moved setting, which the regulation marks are for. The others are read on
+  /// the corrected action only (`corrected`), as the regulation panel reads them, so that the
+  /// score can name those a correction left out of tolerance (a lever raised lifts the hammer:
+  /// the blow, set after it in the technician's order, then reads short).
+  bool scored = true;
 };
 
 struct SessionScore {
@@ -58,6 +63,9 @@ struct SessionScore {
   double time_s = 0.0;
   std::vector<CorrectionReading> readings;
   std::vector<std::string> notes;  ///< one line per component, for the report
+  /// The settings the correction left out of tolerance, other than the scored ones, in words
+  /// with their readings ("hammer blow 44.89 mm (target 45.00 mm ± 0.05)"); empty: none.
+  std::string out_of_tolerance;
 };
 
 /// A setting's reading with its unit, as the report gives it: "0.15 mm", "4.2 % of the hammer's

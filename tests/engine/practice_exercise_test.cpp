@@ -255,6 +255,33 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   EXPECT_THROW(write_session_csv("/nonexistent/dir/session.csv", session), InputError);
 }
 
+// A lever raised lifts the hammer (about 11 mm of blow per mm of lever at the knuckle): a lever
+// height corrected to within its own tolerance can leave the blow, set after it, out of its
+// tolerance. The regulation panel shows that; the score must say it too, not full marks alone.
+TEST(PracticeSession, TheScoreNamesWhatTheCorrectionLeftOutOfTolerance) {
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 3, 1);
+  e.faults = {{"lever_height", 0.3}};
+  PracticeSession session(e, model);
+  EXPECT_TRUE(session.answer(exercise_answers(e), 10.0).correct);
+  session.move_adjuster("lever_height", -0.29, 20.0);  // 0.01 mm high: within its tolerance
+  const std::vector<CorrectionReading> readings = measure_corrections(session);
+  ASSERT_EQ(readings.size(), model.regulation.size()) << "every setting is read";
+  EXPECT_TRUE(readings.front().scored);
+  EXPECT_EQ(readings.front().setting, "lever_height");
+  const SessionScore s = session.score(readings, 30.0);
+  EXPECT_DOUBLE_EQ(s.regulation, 40.0) << "the hidden fault is corrected within its tolerance";
+  EXPECT_NE(s.out_of_tolerance.find("hammer blow"), std::string::npos) << s.out_of_tolerance;
+  const bool noted = std::any_of(s.notes.begin(), s.notes.end(), [](const std::string& n) {
+    return n.find("out of tolerance after the correction") != std::string::npos &&
+           n.find("hammer blow") != std::string::npos;
+  });
+  EXPECT_TRUE(noted);
+  // corrected exactly, nothing is left out of tolerance
+  session.move_adjuster("lever_height", -0.01, 40.0);
+  EXPECT_EQ(session.score(measure_corrections(session), 50.0).out_of_tolerance, "");
+}
+
 // Economy judges the tests toward the diagnosis: six of them (four different tests, the two
 // repeats beyond four cost 1 each), then, once the diagnosis is right, re-tests that check the
 // correction, which cost nothing however many (a technician re-tests after turning a screw).
@@ -283,7 +310,8 @@ TEST(PracticeSession, TestsAfterTheDiagnosisAreFreeChecks) {
     if (event.kind == "test" && event.detail.find("(check)") != std::string::npos) ++checks;
   EXPECT_EQ(checks, 5);
   // a test's line in words, the test named as the form names it
-  EXPECT_EQ(session.history()[1].detail, "rest geometry: nothing differs from a regulated action");
+  EXPECT_EQ(session.history()[1].detail,
+            "rest geometry: nothing differs noticeably from a regulated action");
 }
 
 // Answer clicked twice on the same wrong answer is one mistake: the first answer (the right
