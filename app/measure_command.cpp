@@ -57,20 +57,16 @@ int run_measure(const std::vector<std::string>& args) {
   }
   std::cout << model.name << ": the regulation settings as a technician reads them\n";
   print_settings_table(std::cout, model, readings, "adjusters turned from the preset's positions");
-  // the gauge technicians set it with: .035-.045 in on a grand's front rail (domain.md, table
-  // row 8: Yamaha about .035, Steinway .045)
-  constexpr double kAftertouchLowMm = 0.035 * 25.4, kAftertouchHighMm = 0.045 * 25.4;
   std::cout << "aftertouch (key travel left at let-off; the settings' result, technicians set "
                ".035-.045 in, 0.89-1.14 mm): ";
   if (!aftertouch_problem.empty())
     std::cout << "cannot be read: " << aftertouch_problem << "\n";
   else
-    std::cout << number_in(aftertouch_mm, "mm") << " mm"
-              << (aftertouch_mm >= kAftertouchLowMm && aftertouch_mm <= kAftertouchHighMm
-                      ? ", within that"
-                  : aftertouch_mm < kAftertouchLowMm ? ", less than that"
-                                                     : ", more than that")
-              << "\n";
+    std::cout << number_in(aftertouch_mm, "mm") << " mm, "
+              << aftertouch_against_gauge(aftertouch_mm)
+              << (std::string(aftertouch_against_gauge(aftertouch_mm)) == "within"
+                      ? " that\n"
+                      : " than that\n");
   std::cout << (all_within ? "every setting within its tolerance\n"
                            : "not every setting is within its tolerance (regulate adjusts them)\n");
   return 0;

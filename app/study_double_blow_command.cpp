@@ -52,7 +52,8 @@ int run_study_double_blow(const std::vector<std::string>& args) {
           {"first_impact_t_s", or_null(v.first_impact_t_s >= 0.0, v.first_impact_t_s)},
           {"first_impact_velocity_mps",
            or_null(v.first_impact_t_s >= 0.0, v.first_impact_velocity_mps)},
-          {"second_impact_t_s", or_null(v.second_impact_t_s >= 0.0, v.second_impact_t_s)}};
+          {"second_impact_t_s", or_null(v.second_impact_t_s >= 0.0, v.second_impact_t_s)},
+          {"one_stroke", v.one_stroke}};
       if (!v.stop_cause.empty()) item["stop_cause"] = v.stop_cause;
       variants.push_back(item);
     }
@@ -75,6 +76,9 @@ int run_study_double_blow(const std::vector<std::string>& args) {
       if (v.second_impact_t_s >= 0.0)
         std::cout << "; the second blow strikes at " << format_number(v.second_impact_velocity_mps)
                   << " m/s (t = " << format_number(v.second_impact_t_s * 1e3) << " ms)";
+      else if (v.one_stroke)
+        std::cout << "; no second blow: the second pulse began before the first blow reached the "
+                     "string, and both drove one stroke (lengthen --gap-ms)";
       else
         std::cout << "; the second blow does not strike within the run";
       if (!v.stop_cause.empty()) std::cout << "  [" << v.stop_cause << "]";

@@ -719,6 +719,9 @@ void ActionView::paint_frame(QPainter& painter) {
     std::erase_if(fixture_labels, at_edge);
     std::erase_if(rail_labels, at_edge);
     std::erase_if(labels, at_edge);  // the bodies' names and the knuckle's or butt's
+    // a force's newtons likewise only where it acts in the framed region (the checking
+    // close-up showed the escapement's 15 N in its corner)
+    std::erase_if(force_labels, [&](const Label& l) { return !nameable(l.anchor); });
   }
   // in a close-up the push of the jack on the knuckle or butt comes right after their name: the
   // other names took its place in the escapement close-up of the class's larger text

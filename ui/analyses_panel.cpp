@@ -148,7 +148,13 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
 
   connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
     const int entry = choice_->itemData(index).toInt();
-    description_->setText(index >= 0 ? catalogue_[entry].description : QString());
+    QString description = index >= 0 ? catalogue_[entry].description : QString();
+    // the result below is another analysis's until this one runs: said, so that a sensitivity
+    // table is not read under the sweep's description
+    if (index >= 0 && !result_title_.isEmpty() && result_title_ != choice_->itemText(index))
+      description +=
+          "\n" + tr("Shown below: the last %1 result; press Run for this one.").arg(result_title_);
+    description_->setText(description);
     rebuild_form(current_model_ ? current_model_().get() : nullptr);
   });
   // picking the shown entry again restores its description (a result from elsewhere replaced it)
@@ -456,6 +462,7 @@ void AnalysesPanel::clear_result() {
   plots_.clear();
   grids_.clear();
   result_ = AnalysisResult{};
+  result_title_.clear();
   export_plots_->setEnabled(false);
   export_table_->setEnabled(false);
   export_report_->hide();

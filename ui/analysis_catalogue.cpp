@@ -87,6 +87,25 @@ AnalysisEntry technician_measurements() {
                  .arg(r.note.empty() ? QString() : "; " + QString::fromStdString(r.note)),
              unit});
       }
+      // the aftertouch the settings leave (technicians check dip by it), against their gauge
+      try {
+        const double aftertouch = measure_aftertouch(*model);
+        const std::string against = aftertouch_against_gauge(aftertouch);
+        result.table.push_back(
+            {QObject::tr("aftertouch (key travel left at let-off)"),
+             QObject::tr("%1 (technicians set %2–%3: %4)")
+                 .arg(QString::fromStdString(format_fixed(aftertouch, 2)))
+                 .arg(QString::fromStdString(format_fixed(kAftertouchGaugeLowMm, 2)))
+                 .arg(QString::fromStdString(format_fixed(kAftertouchGaugeHighMm, 2)))
+                 .arg(against == "within" ? QObject::tr("within")
+                      : against == "less" ? QObject::tr("less")
+                                          : QObject::tr("more")),
+             QStringLiteral("mm")});
+      } catch (const std::exception& e) {
+        result.table.push_back({QObject::tr("aftertouch (key travel left at let-off)"),
+                                QObject::tr("not measurable: %1").arg(e.what()),
+                                QStringLiteral("mm")});
+      }
       result.summary = off == 0 ? QObject::tr("Every setting is within its tolerance.")
                                 : QObject::tr("%1 of %2 settings are out of tolerance.")
                                       .arg(off)
@@ -481,8 +500,9 @@ AnalysisEntry double_blow() {
                                                       : number(v.hammer_return_s * 1e3),
                                 "ms"});
         result.table.push_back({words + QObject::tr(": second blow's impact velocity"),
-                                v.second_impact_t_s < 0 ? QObject::tr("no second strike")
-                                                        : number(v.second_impact_velocity_mps),
+                                v.second_impact_t_s >= 0 ? number(v.second_impact_velocity_mps)
+                                : v.one_stroke           ? QObject::tr("one stroke (gap too short)")
+                                                         : QObject::tr("no second strike"),
                                 "m/s"});
         plot.series.push_back(trace_series(r.trace, v.name + "_hammer_angle_deg", words));
         if (v.hammer_return_s >= 0) returns.push_back({v.hammer_return_s * 1e3, words});

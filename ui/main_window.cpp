@@ -231,8 +231,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
             // the reason also goes to the log once (a tooltip alone is not seen in class)
             if (RegulationRow* row = regulation_->row(name.toStdString())) {
               if (row->set_measurement_failed(reason) && !practising_)
-                regulation_->log(
-                    tr("%1: no reading. %2").arg(setting_title(name.toStdString()), reason));
+                regulation_->log(tr("%1: no reading. %2")
+                                     .arg(setting_title(name.toStdString()),
+                                          reason.left(1).toUpper() + reason.mid(1)));
             } else
               regulation_->log(tr("Cannot measure: %1").arg(reason));
           });
@@ -463,9 +464,17 @@ void MainWindow::build_menus() {
     });
   }
   plots_->set_window(chosen);
+  // ticked while the plots show the whole run (it lasts through new runs): unticked, they follow
   QAction* whole = view->addAction(tr("Plots show the &whole run"));
   whole->setShortcut(QKeySequence(tr("Ctrl+Shift+W")));
-  connect(whole, &QAction::triggered, plots_, &PlotStack::show_whole_run);
+  whole->setCheckable(true);
+  connect(whole, &QAction::triggered, this, [this](bool on) {
+    if (on)
+      plots_->show_whole_run();
+    else
+      plots_->set_following(true);
+  });
+  connect(plots_, &PlotStack::wholeRunChanged, whole, &QAction::setChecked);
   measurement_actions_.push_back(whole);
   QMenu* practice = menuBar()->addMenu(tr("&Practice"));
   // its own action, not the dock's toggleViewAction: Qt disables that one for a dock without a

@@ -311,13 +311,28 @@ QString PlotPanel::cursor_readout() const {
                .arg((b - a) * k, 0, 'f', 2)
                .arg(x_readout_unit_)
                .arg(x_symbol_);
+  // the changes to the hundredth of the unit (deg, mm, N): no "6.858e-16 deg" for two frames at
+  // rest, no "-0.00"
+  QStringList changes;
   for (int s = 0; s < series_count(); ++s) {
     const auto va = value_at(s, a), vb = value_at(s, b);
     if (!va || !vb) continue;
-    lines << tr("Δ %1 = %2 %3")
-                 .arg(series_[s].label)
-                 .arg(*vb - *va, 0, 'g', 4)
-                 .arg(unit_of(series_[s].column));
+    const double change = *vb - *va;
+    changes << tr("Δ %1 = %2 %3")
+                   .arg(series_[s].label)
+                   .arg(std::abs(change) < 0.005 ? 0.0 : change, 0, 'f', 2)
+                   .arg(unit_of(series_[s].column));
+  }
+  // on as few lines as the plot's width takes (a line each squeezed a short plot's data into a
+  // strip): the cursors' times, then the changes, side by side where they fit
+  const QFontMetricsF metrics(plot_->xAxis->tickLabelFont());
+  const double room = std::max(100, width() - 20);
+  for (const QString& change : changes) {
+    const QString joined = lines.back() + QStringLiteral("   ") + change;
+    if (metrics.horizontalAdvance(joined) <= room)
+      lines.back() = joined;
+    else
+      lines << change;
   }
   return lines.join('\n');
 }

@@ -107,7 +107,12 @@ void PlotStack::clear() {
   }
   latest_t_ = 0.0;
   marked_t_.reset();
-  set_following(true);
+  // a new run: the axes follow it again, unless the whole run was asked for (a class watching a
+  // slow press's let-off and drop together wants that for the next run too)
+  if (whole_run_)
+    fit_whole_run();
+  else
+    set_following(true);
   replot();
 }
 
@@ -161,9 +166,15 @@ void PlotStack::show_whole_run() {
     following_ = false;
     emit followingChanged(false);
   }
-  whole_run_ = true;
+  set_whole_run(true);
   fit_whole_run();
   replot();
+}
+
+void PlotStack::set_whole_run(bool whole) {
+  if (whole == whole_run_) return;
+  whole_run_ = whole;
+  emit wholeRunChanged(whole);
 }
 
 void PlotStack::fit_whole_run() {
@@ -187,7 +198,7 @@ void PlotStack::mark_time(double t) {
 }
 
 void PlotStack::set_following(bool follow) {
-  if (follow) whole_run_ = false;
+  if (follow) set_whole_run(false);
   if (follow == following_) return;
   following_ = follow;
   if (follow) show_time(latest_t_);
@@ -198,7 +209,7 @@ void PlotStack::sync_time_range(PlotPanel* source, double lo, double hi) {
   for (PlotPanel* panel : panels())
     if (panel != source) panel->set_x_range(lo, hi);
   for (PlotPanel* panel : panels()) panel->fit_values();
-  whole_run_ = false;  // zoomed or panned by hand: it stays where the user put it
+  set_whole_run(false);  // zoomed or panned by hand: it stays where the user put it
   set_following(false);
   replot();
 }

@@ -41,7 +41,10 @@ class PlotStack : public QWidget {
   /// The whole run kept (up to its last 60 s) on the time axes, values fitted to it, growing as
   /// the run goes on until Follow or a zoom or pan by hand (a slow press's let-off and drop had
   /// scrolled away after 0.25 s; the axes had then stayed put while new blows ran off them).
+  /// That mode stays through a new run (Start from rest, another blow's run) until Follow or a
+  /// zoom or pan by hand ends it.
   void show_whole_run();
+  bool showing_whole_run() const { return whole_run_; }
 
   std::vector<PlotPanel*> panels() const;
   PlotPanel* angles() const { return angles_; }
@@ -51,12 +54,15 @@ class PlotStack : public QWidget {
 
  signals:
   void followingChanged(bool follow);
+  /// The whole-run mode began or ended (show_whole_run; Follow, a zoom or a pan).
+  void wholeRunChanged(bool whole);
 
  private:
   void sync_time_range(PlotPanel* source, double lo, double hi);
   void replot();
   /// The time axes over the whole run kept, values fitted.
   void fit_whole_run();
+  void set_whole_run(bool whole);
 
   PlotPanel* angles_;
   PlotPanel* gap_;

@@ -176,7 +176,11 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
   for (QComboBox* d : {answer_direction_, second_direction_}) {
     d->addItem(tr("more than its target"), "more");
     d->addItem(tr("less than its target"), "less");
+    d->setPlaceholderText(tr("more or less?"));
   }
+  // no choice made for the student: an answer needs both chosen (clear_answer_form)
+  for (QComboBox* setting : {answer_setting_, second_setting_})
+    setting->setPlaceholderText(tr("which setting?"));
   second_setting_->setToolTip(tr("Level 2: the second hidden setting"));
   answer_setting_->setObjectName("answer_setting");
   answer_direction_->setObjectName("answer_direction");
@@ -446,6 +450,8 @@ void PracticePanel::begin(Exercise exercise, ActionModel regulated) {
     answer_setting_->addItem(setting_title(s.name), QString::fromStdString(s.name));
     second_setting_->addItem(setting_title(s.name), QString::fromStdString(s.name));
   }
+  for (QComboBox* box : {answer_setting_, answer_direction_, second_setting_, second_direction_})
+    box->setCurrentIndex(-1);  // the placeholder: nothing chosen yet
   second_setting_->setVisible(session_->exercise().level == 2);
   second_direction_->setVisible(session_->exercise().level == 2);
   build_adjusters();
@@ -556,8 +562,10 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
                                   "diagnosis so far.)")
                                    .arg(session_->diagnosis_marks(), 0, 'f', 1)
                              : QString();
+  QString remark = remarks.join("; ");
+  if (!remark.isEmpty()) remark[0] = remark[0].toUpper();  // a sentence of its own
   show_status((j.correct ? tr("Correct. Now correct it with the sliders.") : tr("Not correct.")) +
-              " " + remarks.join("; ") + scored);
+              " " + remark + scored);
   // the sliders lie below the answer: brought into view for the instruction just given
   if (j.correct) {  // its top at the top (a box taller than the view would be centred)
     QScrollBar* bar = scroll_->verticalScrollBar();
@@ -569,6 +577,18 @@ AnswerJudgement PracticePanel::submit_answer(const std::vector<FaultAnswer>& ans
 
 void PracticePanel::answer_from_form() {
   if (!session_) return;
+  const bool two = session_->exercise().level == 2;
+  for (QComboBox* box : {answer_setting_, answer_direction_, second_setting_, second_direction_}) {
+    if ((box == second_setting_ || box == second_direction_) && !two) continue;
+    if (box->currentIndex() < 0) {
+      show_status(two ? tr("Choose both settings and, for each, whether it is more or less than "
+                           "its target, then Answer.")
+                      : tr("Choose the setting and whether it is more or less than its target, "
+                           "then Answer."));
+      box->setFocus();
+      return;
+    }
+  }
   std::vector<FaultAnswer> answers{{answer_setting_->currentData().toString().toStdString(),
                                     answer_direction_->currentData().toString().toStdString()}};
   if (session_->exercise().level == 2)
@@ -591,7 +611,8 @@ QString PracticePanel::reveal_answer() {
   release_readings();
   const QString text = QString::fromStdString(session_->reveal(elapsed_s()));
   show_status(text + " " + tr("Answers from now on are judged but not scored."));
-  hint_button_->setEnabled(false);  // nothing left to hint
+  hint_button_->setEnabled(false);    // nothing left to hint
+  reveal_button_->setEnabled(false);  // nor to show again
   append_history();
   return text;
 }
@@ -680,7 +701,10 @@ void PracticePanel::set_busy(bool busy) {
            answer_setting_, answer_direction_, second_setting_, second_direction_, answer_button_,
            hint_button_, reveal_button_, finish_button_, adjusters_box_})
     w->setEnabled(active && !busy);
-  if (session_ && session_->revealed()) hint_button_->setEnabled(false);
+  if (session_ && session_->revealed()) {
+    hint_button_->setEnabled(false);
+    reveal_button_->setEnabled(false);
+  }
   if (!busy) {
     progress_->setValue(progress_->maximum());
     progress_->setFormat(tr("ready"));
@@ -727,15 +751,16 @@ void PracticePanel::remember_session(const SessionScore& score) {
   QStringList past = settings.value("practice/past_sessions").toStringList();
   const QString who = QString::fromStdString(session_->trainee());
   past.prepend(
-      tr("%1  %2: %3/100 (%4 tests, %5 hints, %6 s)")
+      tr("%1  %2: %3/100 (%4, %5, %6 s)")
           .arg(QDateTime::currentDateTime().toString(Qt::ISODate))
           .arg((who.isEmpty() ? QString() : who + ", ") +
                QString::fromStdString(session_->exercise().title))
           .arg(score.total, 0, 'f', 1)
-          .arg(score.check_tests > 0
-                   ? tr("%1, %2 of them checks").arg(score.tests_used).arg(score.check_tests)
-                   : QString::number(score.tests_used))
-          .arg(score.hints_used)
+          .arg((score.tests_used == 1 ? tr("1 test") : tr("%1 tests").arg(score.tests_used)) +
+               (score.check_tests == 0   ? QString()
+                : score.check_tests == 1 ? tr(", 1 of them a check")
+                                         : tr(", %1 of them checks").arg(score.check_tests)))
+          .arg(score.hints_used == 1 ? tr("1 hint") : tr("%1 hints").arg(score.hints_used))
           .arg(score.time_s, 0, 'f', 0));
   while (past.size() > kPastSessionsKept) past.removeLast();
   settings.setValue("practice/past_sessions", past);

@@ -93,15 +93,21 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
             }
           }
         } else {
-          // the second impact: the first one after the second pulse starts
+          // the second impact: the first one after the second pulse starts, when the first blow
+          // had struck before it; a first strike that comes only after the second pulse began
+          // is both pulses' one stroke (a short gap), with no second blow
           const double second_start =
               options.pulse_ms * 1e-3 + 2e-3 + options.gap_ms * 1e-3;  // 1 ms ramps
-          for (const SimEvent* e : impacts) {
-            if (e->t >= second_start) {
-              out.second_impact_t_s = e->t;
-              out.second_impact_velocity_mps = e->hammer_velocity;
-              break;
+          if (!impacts.empty() && impacts.front()->t < second_start) {
+            for (const SimEvent* e : impacts) {
+              if (e->t >= second_start) {
+                out.second_impact_t_s = e->t;
+                out.second_impact_velocity_mps = e->hammer_velocity;
+                break;
+              }
             }
+          } else if (!impacts.empty()) {
+            out.one_stroke = true;
           }
           doubles[v] = std::move(run);
         }

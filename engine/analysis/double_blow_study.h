@@ -39,8 +39,14 @@ struct DoubleBlowVariant {
   double first_impact_t_s = -1.0;
   double first_impact_velocity_mps = 0.0;
   double hammer_return_s = -1.0;  ///< −1: not back within the run
+  /// The second blow's strike: the first impact after the second pulse starts, counted only
+  /// when the first blow struck before that (−1: none).
   double second_impact_t_s = -1.0;
   double second_impact_velocity_mps = 0.0;
+  /// The double blow struck only after its second pulse had begun: the two pulses drove one
+  /// stroke (a gap too short for the first blow to reach the string), so there is no second
+  /// blow to time.
+  bool one_stroke = false;
   std::string stop_cause;  ///< non-empty when a run stopped early
 };
 

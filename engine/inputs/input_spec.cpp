@@ -430,6 +430,18 @@ std::unique_ptr<KeyInput> parse_csv_input(const std::string& spec, const std::st
     }
     CubicSpline spline(time, angle);
     check_spline_follows_the_data(path, time, angle, spline);
+    // the run starts at t = 0 with the action at rest: a recording already away from rest there
+    // would move the key in no time (1 deg at t = 0 asked a 135 N finger force and threw the
+    // hammer); one starting later at rest was refused above
+    const double start_deg = spline.evaluate(0.0).value * 180.0 / kPi;
+    if (time.front() <= 0.0 && std::abs(start_deg) > kCsvRestAngleDeg)
+      throw InputError(located_message(
+          path, "",
+          "key_angle_deg is " + number_text(start_deg) + " deg at time_s 0 (" +
+              data_row_place(path, 0) +
+              "): every run starts at t = 0 with the key at rest (0 deg), so the key would jump "
+              "there in no time; start the recording at rest, or take its rest angle off every "
+              "row"));
     auto motion = std::make_unique<CsvMotion>(spec, std::move(spline));
     if (force_column >= 0)
       motion->set_note(path +

@@ -4,7 +4,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -47,12 +49,14 @@ class PresetReader {
 
   const json& field(const json& object, const std::string& path, const char* key) const {
     if (!object.is_object()) fail(path, "expected an object, got " + type_name(object));
+    read_keys_[&object].insert(key);
     const auto it = object.find(key);
     if (it == object.end()) fail(path, std::string("missing field '") + key + "'");
     return *it;
   }
 
   const json* optional(const json& object, const char* key) const {
+    if (object.is_object()) read_keys_[&object].insert(key);
     const auto it = object.find(key);
     return it == object.end() ? nullptr : &*it;
   }
@@ -133,8 +137,41 @@ class PresetReader {
     return out.str();
   }
 
+  /// Fails on a field the reader never asked for in an object it read (a misspelt "fricton"
+  /// would otherwise load silently as a hammer without friction), naming the fields it knows
+  /// there. Objects it did not read into (a source's free text) are not checked, nor are the
+  /// fields that only document: `kDocumentationFields`.
+  void check_unknown_fields(const json& value, const std::string& path) const {
+    if (value.is_array()) {
+      for (std::size_t i = 0; i < value.size(); ++i) {
+        const json& item = value[i];
+        std::string at = path + "[" + std::to_string(i) + "]";
+        if (item.is_object() && item.contains("name") && item["name"].is_string())
+          at += " (" + item["name"].get<std::string>() + ")";
+        check_unknown_fields(item, at);
+      }
+      return;
+    }
+    if (!value.is_object()) return;
+    const auto read = read_keys_.find(&value);
+    for (const auto& [key, item] : value.items()) {
+      if (read != read_keys_.end() && !read->second.count(key) &&
+          !kDocumentationFields.count(key)) {
+        std::string known;
+        for (const std::string& k : read->second) known += (known.empty() ? "" : ", ") + k;
+        fail(child(path, key), "unknown field (misspelt? the fields read here are " + known + ")");
+      }
+      check_unknown_fields(item, child(path, key));
+    }
+  }
+
  private:
+  /// Fields that document a value and are never read: where it comes from, notes for a reader.
+  inline static const std::set<std::string> kDocumentationFields = {
+      "source", "note", "notes", "references", "comment", "description"};
   std::string source_;
+  /// The fields asked for in each object read (present or not).
+  mutable std::map<const json*, std::set<std::string>> read_keys_;
 };
 
 std::string item_path(const char* list, std::size_t i, const json& item) {
@@ -475,7 +512,7 @@ void read_landmarks(const PresetReader& r, const json& root, ActionModel& model)
   out.letoff_contact = contact_reference(r, model, c, "landmarks.contacts", "let_off");
   out.check_contact = contact_reference(r, model, c, "landmarks.contacts", "check");
   out.key_bottom_contact = contact_reference(r, model, c, "landmarks.contacts", "key_bottom");
-  if (c.contains("key_rest"))  // optional: touchweight checks the key starts from it
+  if (r.optional(c, "key_rest"))  // optional: touchweight checks the key starts from it
     out.key_rest_contact = contact_reference(r, model, c, "landmarks.contacts", "key_rest");
 }
 
@@ -537,6 +574,7 @@ ActionModel parse_action(const std::string& json_text, const std::string& source
   apply_regulated_offsets(r, root, model);
   read_landmarks(r, root, model);
   read_regulation(r, root, model);
+  r.check_unknown_fields(root, "");
   model.preset_json = json_text;
   return model;
 }

@@ -50,6 +50,17 @@ double measure_setting(const ActionModel& model, const std::string& name,
 /// shows no escapement.
 double measure_aftertouch(const ActionModel& model, const RestState* rest = nullptr);
 
+/// The aftertouch technicians set: .035–.045 in, 0.89–1.14 mm on a grand's front rail
+/// (domain.md, table row 8: Yamaha about .035, Steinway .045).
+inline constexpr double kAftertouchGaugeLowMm = 0.035 * 25.4;
+inline constexpr double kAftertouchGaugeHighMm = 0.045 * 25.4;
+/// Where an aftertouch (mm) lies against that gauge: "within", "less" or "more".
+inline const char* aftertouch_against_gauge(double aftertouch_mm) {
+  return aftertouch_mm < kAftertouchGaugeLowMm    ? "less"
+         : aftertouch_mm > kAftertouchGaugeHighMm ? "more"
+                                                  : "within";
+}
+
 /// Setting `setting` of `model` as a technician reads it (its problem when it cannot be read).
 /// Where a slow press shows the hammer carried by another part (HammerCarriedElsewhere: the
 /// grand's repetition lever, stopped by a drop screw that is too high for a let-off button

@@ -72,6 +72,10 @@ printf 'time_s,key_force_n\n0,0\n0.02,1\n0.01,2\n' >time_order.csv
 expect_failure "CSV with non-increasing time" "time_order.csv|time_s must increase|line 4" \
   simulate --action grand --input csv:time_order.csv --duration 0.05 --out out.csv
 
+printf 'time_s,key_angle_deg\n0,1\n0.1,1\n' >angle_jump.csv
+expect_failure "key angle CSV away from rest at t = 0" "angle_jump.csv|key_angle_deg is 1 deg at time_s 0|at rest" \
+  simulate --action grand --input csv:angle_jump.csv --duration 0.05 --out out.csv
+
 expect_failure "CSV file that does not exist" "no_such.csv" \
   simulate --action grand --input csv:no_such.csv --duration 0.05 --out out.csv
 

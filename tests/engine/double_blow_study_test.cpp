@@ -61,6 +61,21 @@ TEST(DoubleBlowStudy, BridleStrapAndButtSpringEachBringTheHammerBackAndTheStrapM
   EXPECT_GT(study.trace.rows.size(), 1000u);
 }
 
+TEST(DoubleBlowStudy, PulsesTooCloseToStrikeTwiceAreOneStrokeNotASecondBlow) {
+  // 5 ms pulses 10 ms apart: the second pulse begins at 17 ms, before the first blow's hammer
+  // reaches the string (about 36 ms): one strike, which is not the second blow's
+  DoubleBlowOptions options;
+  options.pulse_ms = 5.0;
+  options.gap_ms = 10.0;
+  options.duration_s = 0.1;
+  const DoubleBlowStudy study = double_blow_study(test::shipped("upright"), options);
+  for (const DoubleBlowVariant& v : study.variants) {
+    EXPECT_TRUE(v.one_stroke) << v.name;
+    EXPECT_LT(v.second_impact_t_s, 0.0) << v.name << ": " << v.second_impact_t_s;
+    ASSERT_GE(v.first_impact_t_s, 0.0) << v.name;
+  }
+}
+
 TEST(DoubleBlowStudy, NeedsAnUprightWithBridleAndButtSpring) {
   EXPECT_THROW(double_blow_study(test::shipped("grand")), InputError);
 }

@@ -595,6 +595,12 @@ void ActionViewTest::the_escapement_close_up_keeps_its_forces_in_larger_text() {
   for (const char* name : {"knuckle", "jack", "let-off button"})
     QVERIFY2(view->drawn_labels().contains(name),
              qPrintable(QString(name) + " not in " + view->drawn_labels().join(", ")));
+  // the checking close-up of the same frame gives no escapement forces (they were placed in
+  // its corner, far from the arrows they belong to)
+  view->set_focus(pat::ui::ViewFocus::checking);
+  view->grab();
+  QVERIFY2(!view->drawn_labels().contains(value(push)),
+           qPrintable(view->drawn_labels().join(", ")));
 }
 
 // The gap is read at a point fixed on the felt, up to 0.3 mm behind its nearest point near the

@@ -174,7 +174,20 @@ void AnalysesPanelTest::table_exports_as_csv() {
   // the settings named and read as in the regulation panel: "hammer blow", to 0.01 mm
   QVERIFY2(lines.join('\n').contains("hammer blow,45.01 (target 45.00 ± 0.05),mm"),
            qPrintable(lines.join('\n')));
+  // and the aftertouch they leave, against the technicians' gauge (measure prints it too)
+  QVERIFY2(lines.join('\n').contains("aftertouch (key travel left at let-off),0.9") &&
+               lines.join('\n').contains("technicians set 0.89–1.14: within"),
+           qPrintable(lines.join('\n')));
   QVERIFY_THROWS_EXCEPTION(pat::InputError, panel->write_table_csv("/nonexistent/dir/t.csv"));
+  // another analysis chosen: its description says the result below is still the last one's
+  // until it runs (a sensitivity table stood under the sweep's description without a word)
+  const QStringList names = panel->analysis_names();
+  const QString other = names.value(names.indexOf("Technician's measurements") == 0 ? 1 : 0);
+  QVERIFY(panel->choose(other));
+  QVERIFY2(panel->description().contains("Shown below: the last Technician's measurements result"),
+           qPrintable(panel->description()));
+  QVERIFY(panel->choose("Technician's measurements"));
+  QVERIFY2(!panel->description().contains("Shown below"), qPrintable(panel->description()));
 }
 
 // Upright vs grand in the dock's width: its long quantity names had pushed the values to "…",

@@ -7,6 +7,7 @@
 #include <QFile>
 #include <QImage>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QTest>
@@ -203,8 +204,19 @@ void PlotExportTest::cursors_give_delta_t_and_delta_value() {
   angles_->set_cursor(1, 0.050);
   const QString readout = angles_->cursor_readout();
   QVERIFY2(readout.contains("Δt = 40.00 ms"), qPrintable(readout));
-  QVERIFY2(readout.contains("Δ hammer = 12 deg"), qPrintable(readout));
-  QVERIFY2(readout.contains("Δ key = 0.8 deg"), qPrintable(readout));
+  QVERIFY2(readout.contains("Δ hammer = 12.00 deg"), qPrintable(readout));
+  QVERIFY2(readout.contains("Δ key = 0.80 deg"), qPrintable(readout));
+  // the changes go beside the times where the plot is wide enough, not a line each (three
+  // lines had squeezed a short plot's data into a strip)
+  const QSize size_before = angles_->size();
+  angles_->resize(1200, 300);
+  QVERIFY2(angles_->cursor_readout().count('\n') == 0, qPrintable(angles_->cursor_readout()));
+  angles_->resize(size_before);
+  // two cursors on the same values: no rounding noise ("6.858e-16 deg")
+  angles_->set_cursor(1, 0.010 + 1e-12);
+  QVERIFY2(angles_->cursor_readout().contains("Δ hammer = 0.00 deg") &&
+               !angles_->cursor_readout().contains("e-"),
+           qPrintable(angles_->cursor_readout()));
   QVERIFY(!angles_->value_at(0, 0.5).has_value());  // outside the data
   // PAT_UI_SHOTS=DIR keeps a picture of the readout (in its row under the title, clear of the
   // legend) for a person to look at
@@ -306,8 +318,20 @@ void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
   stack.append(later);
   QCOMPARE(stack.angles()->x_range().second, 2.5);
   QCOMPARE(stack.angles()->x_range().first, 0.0);
+  // a new run (Start from rest clears the plots) keeps the whole-run mode: it had gone back to
+  // following, and the next slow press's let-off and drop scrolled away again
+  QSignalSpy whole_changed(&stack, &pat::ui::PlotStack::wholeRunChanged);
+  stack.clear();
+  QVERIFY(stack.showing_whole_run());
+  QVERIFY(!stack.following());
+  stack.append(frames);
+  QCOMPARE(stack.angles()->x_range().first, 0.0);
+  QCOMPARE(stack.angles()->x_range().second, 1.5);
+  QCOMPARE(whole_changed.count(), 0);
   // Follow brings the sliding window back
   stack.set_following(true);
+  QVERIFY(!stack.showing_whole_run());
+  QCOMPARE(whole_changed.count(), 1);
   QVERIFY2(std::abs(width() - 1.0) < 1e-9, qPrintable(QString::number(width())));
 }
 

@@ -224,6 +224,14 @@ void PracticePanelTest::walk_through_an_exercise() {
     box->setCurrentIndex(index);
   };
   QCOMPARE(answers.size(), std::size_t{2});
+  // the form chooses nothing for the student: Answer with nothing chosen asks for a choice and
+  // counts no answer (it had offered "key dip / more than its target" ready to send)
+  QCOMPARE(panel->findChild<QComboBox*>("answer_setting")->currentIndex(), -1);
+  const int answers_before = panel->session()->answers_given();
+  QTest::mouseClick(panel->findChild<QPushButton*>("answer_button"), Qt::LeftButton);
+  QVERIFY2(panel->status_text().startsWith("Choose both settings"),
+           qPrintable(panel->status_text()));
+  QCOMPARE(panel->session()->answers_given(), answers_before);
   choose("answer_setting", QString::fromStdString(answers[0].setting));
   choose("answer_direction", QString::fromStdString(answers[0].direction));
   choose("second_setting", QString::fromStdString(answers[1].setting));
@@ -356,6 +364,7 @@ void PracticePanelTest::giving_up_shows_the_answer() {
   QVERIFY2(!panel->status_text().contains('_'), qPrintable(panel->status_text()));
   QVERIFY(panel->session()->revealed());
   QVERIFY(!panel->findChild<QPushButton*>("hint_button")->isEnabled());
+  QVERIFY(!reveal->isEnabled());  // given up once: nothing more to show
   // nothing left to hint, and a hint asked for anyway costs nothing
   const int hints = panel->session()->hints_used();
   panel->request_hint();
