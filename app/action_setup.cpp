@@ -7,6 +7,7 @@
 #include "model/effects.h"
 #include "model/model_edits.h"
 #include "model/preset_loader.h"
+#include "sim/simulation.h"
 
 namespace pat::app {
 namespace {
@@ -36,6 +37,18 @@ ActionModel load_configured_action(const CommandLine& cl) {
     if (removed.insert(part).second) model = without_part(model, part);  // twice is once
   for (const std::string& effect : cl.values("--effect"))
     model = with_effect(model, parse_effect(effect));
+  // a part the action cannot rest without (the grand's jack spring holds the jack under the
+  // knuckle): refused as the choice it is, not reported later as a run that failed
+  if (!removed.empty()) {
+    try {
+      find_rest_state(model);
+    } catch (const std::exception& e) {
+      std::string parts;
+      for (const std::string& part : removed) parts += (parts.empty() ? "" : ", ") + part;
+      throw InputError("--without " + parts + ": without it the action has no rest (" + e.what() +
+                       "); it holds the action at rest, so no run can leave it out");
+    }
+  }
   return model;
 }
 

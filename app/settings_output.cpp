@@ -14,7 +14,9 @@ PlotSpec settings_plot(const std::string& title, const std::vector<SettingReadin
   PlotCurve distance = point_curve("measured − target", "off_target_tolerances");
   for (std::size_t i = 0; i < readings.size(); ++i) {
     const SettingReading& s = readings[i];
-    plot.x_categories.push_back(s.name);
+    // in the technician's words; a setting that cannot be read says so where its point would be
+    plot.x_categories.push_back(setting_words(s.name) +
+                                (std::isfinite(s.measured) ? "" : " (no reading)"));
     if (std::isfinite(s.measured)) distance.add(double(i), (s.measured - s.target) / s.tolerance);
   }
   plot.curves.push_back(std::move(distance));

@@ -104,6 +104,16 @@ int run_simulate(const std::vector<std::string>& args) {
                        {"input", input->spec()},
                        {"integrator", options.integrator},
                        {"rest_hammer_string_gap_mm", rest.hammer_string_gap * 1e3}};
+    // how the run was made, so that a JSON kept alone says it: the accuracy asked for, the model's
+    // changes, and what the user should know of the input
+    if (fixed_step)
+      out["step_s"] = options.integrator_options.fixed_step_s;
+    else
+      out["rtol"] = options.integrator_options.relative_tolerance;
+    out["set"] = cl.values("--set");
+    out["without"] = cl.values("--without");
+    out["effects"] = cl.values("--effect");
+    out["input_notes"] = notes.empty() ? nlohmann::json(nullptr) : nlohmann::json(notes);
     std::cout << out.dump(1) << "\n";
     if (!notes.empty()) std::cerr << "note: " << notes << "\n";
   } else {

@@ -24,12 +24,16 @@ namespace {
 /// −step and +step, settings side by side (the window's sensitivity plots).
 std::vector<PlotSpec> sensitivity_plots(const SensitivityResult& r, double step_mm) {
   std::vector<std::string> settings;
-  for (const SensitivityRow& row : r.rows) settings.push_back(row.setting);
+  for (const SensitivityRow& row : r.rows) settings.push_back(setting_words(row.setting));
   const std::string step = format_number(step_mm);
   std::vector<PlotSpec> plots;
   for (std::size_t m = 0; m < r.metrics.size(); ++m) {
     const std::string& metric = r.metrics[m];
-    PlotSpec plot = category_plot(metric, "change of " + metric, "setting", "setting_index");
+    // in words, the unit in the y title ("change (m/s)"): the keys were cut off there
+    const MetricWords named = metric_words(metric);
+    PlotSpec plot =
+        category_plot(named.words, named.unit.empty() ? "change" : "change (" + named.unit + ")",
+                      "setting", "setting_index");
     plot.x_categories = settings;
     PlotCurve minus = point_curve("adjuster −" + step + " mm", metric + "_minus");
     PlotCurve plus = point_curve("adjuster +" + step + " mm", metric + "_plus");
@@ -151,13 +155,14 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   // a reading taken with another screw out of the way is starred, one that cannot be taken is
   // "-": both explained under the table
   std::vector<std::string> footnotes;
+  const std::string step_words = format_number(options.step_mm) + " mm";
   for (const SensitivityRow& row : result.rows) {
     std::ostringstream measured;
     measured << std::setprecision(4);
     for (int p = 0; p < 3; ++p) {
       if (p > 0) measured << " / ";
-      const std::string side =
-          p == 1 ? "as given" : (p == 0 ? "-" : "+") + format_number(options.step_mm) + " mm";
+      std::string side = "as given";
+      if (p != 1) side = std::string(p == 0 ? "-" : "+") + step_words;
       if (!row.measured_problem[p].empty()) {
         measured << "-";
         footnotes.push_back(row.setting + " " + side + ": not read: " + row.measured_problem[p]);

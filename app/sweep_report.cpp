@@ -148,10 +148,14 @@ std::string sweep_summary(const SweepResult& r) {
     text = r.max_frequency_hz
                ? "no limit in the band: the repeating range reaches its top, " +
                      format_number(*r.max_frequency_hz) + " Hz (the maximum is at least that)"
-               // nothing failed, yet no steady window: too few judged cycles in the band
+           // nothing failed, yet no steady window: too few judged cycles in the band
+           : judged_cycle_points(r).empty()
+               ? "no maximum: the band has no judged cycle (a cycle is judged once the key has "
+                 "settled into the motion); widen the band"
                : "no maximum: the band's " + std::to_string(judged_cycle_points(r).size()) +
-                     " judged cycles all strike once, but a maximum needs a steady window of "
-                     "them (--window); widen the band" +
+                     (judged_cycle_points(r).size() == 1 ? " judged cycle strikes once"
+                                                         : " judged cycles all strike once") +
+                     ", but a maximum needs a steady window of them (--window); widen the band" +
                      (r.mode == SweepMode::chirp ? " or slow the chirp (--rate)" : "");
   } else if (!r.first_failure) {
     text += " (a run stopped while settling)";

@@ -147,20 +147,11 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   layout->addLayout(export_row);
 
   connect(choice_, &QComboBox::currentIndexChanged, this, [this](int index) {
-    const int entry = choice_->itemData(index).toInt();
-    QString description = index >= 0 ? catalogue_[entry].description : QString();
-    // the result below is another analysis's until this one runs: said, so that a sensitivity
-    // table is not read under the sweep's description
-    if (index >= 0 && !result_title_.isEmpty() && result_title_ != choice_->itemText(index))
-      description +=
-          "\n" + tr("Shown below: the last %1 result; press Run for this one.").arg(result_title_);
-    description_->setText(description);
+    describe_choice(index);
     rebuild_form(current_model_ ? current_model_().get() : nullptr);
   });
   // picking the shown entry again restores its description (a result from elsewhere replaced it)
-  connect(choice_, &QComboBox::activated, this, [this](int index) {
-    if (index >= 0) description_->setText(catalogue_[choice_->itemData(index).toInt()].description);
-  });
+  connect(choice_, &QComboBox::activated, this, &AnalysesPanel::describe_choice);
   connect(run_button_, &QPushButton::clicked, this, [this] {
     if (runner_->running())
       cancel();
@@ -450,6 +441,20 @@ void AnalysesPanel::set_busy(bool busy) {
   stage_->setVisible(busy);
   progress_->setValue(0);
   stage_->clear();
+}
+
+void AnalysesPanel::describe_choice(int index) {
+  if (index < 0) {
+    description_->clear();
+    return;
+  }
+  QString description = catalogue_[choice_->itemData(index).toInt()].description;
+  // the result below is another analysis's until this one runs: said, so that a sensitivity
+  // table is not read under the sweep's description
+  if (!result_title_.isEmpty() && result_title_ != choice_->itemText(index))
+    description +=
+        "\n" + tr("Shown below: the last %1 result; press Run for this one.").arg(result_title_);
+  description_->setText(description);
 }
 
 void AnalysesPanel::clear_result() {

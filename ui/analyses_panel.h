@@ -95,6 +95,9 @@ class AnalysesPanel : public QWidget {
   const AnalysisEntry* chosen_entry() const;
   /// Rebuilds the settings form for the chosen analysis and the current model.
   void rebuild_form(const ActionModel* model);
+  /// The line under the selector for entry `index`: its description, and when the result shown
+  /// is another analysis's, that it is.
+  void describe_choice(int index);
   void remember(const QString& key, const QVariant& value);
   void choose_files(const QString& key);
   void add_grid(const AnalysisGrid& grid);

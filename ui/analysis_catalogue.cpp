@@ -91,18 +91,23 @@ AnalysisEntry technician_measurements() {
       try {
         const double aftertouch = measure_aftertouch(*model);
         const std::string against = aftertouch_against_gauge(aftertouch);
+        // as short as the settings' values beside it ("0.94 (within 0.89–1.14)"): the dock's
+        // value column is narrow
+        const QString range = QStringLiteral("%1–%2").arg(
+            QString::fromStdString(format_fixed(kAftertouchGaugeLowMm, 2)),
+            QString::fromStdString(format_fixed(kAftertouchGaugeHighMm, 2)));
         result.table.push_back(
-            {QObject::tr("aftertouch (key travel left at let-off)"),
-             QObject::tr("%1 (technicians set %2–%3: %4)")
+            {QObject::tr("aftertouch (key travel left at let-off; gauge .035–.045 in)"),
+             QObject::tr("%1 (%2 %3)")
                  .arg(QString::fromStdString(format_fixed(aftertouch, 2)))
-                 .arg(QString::fromStdString(format_fixed(kAftertouchGaugeLowMm, 2)))
-                 .arg(QString::fromStdString(format_fixed(kAftertouchGaugeHighMm, 2)))
                  .arg(against == "within" ? QObject::tr("within")
-                      : against == "less" ? QObject::tr("less")
-                                          : QObject::tr("more")),
+                      : against == "less" ? QObject::tr("less than")
+                                          : QObject::tr("more than"))
+                 .arg(range),
              QStringLiteral("mm")});
       } catch (const std::exception& e) {
-        result.table.push_back({QObject::tr("aftertouch (key travel left at let-off)"),
+        result.table.push_back({QObject::tr("aftertouch (key travel left at let-off; gauge "
+                                            ".035–.045 in)"),
                                 QObject::tr("not measurable: %1").arg(e.what()),
                                 QStringLiteral("mm")});
       }
@@ -209,24 +214,8 @@ struct MetricName {
 };
 
 MetricName metric_name(const std::string& key) {
-  static const std::pair<const char*, const char*> kUnits[] = {
-      {"_mps", "m/s"}, {"_ms", "ms"}, {"_mm", "mm"}, {"_hz", "Hz"}, {"_g", "g"}, {"_n", "N"}};
-  std::string words = key;
-  QString unit;
-  for (const auto& [suffix, symbol] : kUnits) {
-    const std::string tail = suffix;
-    if (words.size() > tail.size() &&
-        words.compare(words.size() - tail.size(), tail.size(), tail) == 0) {
-      words.resize(words.size() - tail.size());
-      unit = symbol;
-      break;
-    }
-  }
-  if (words == "max_repetition") words = "repetition limit";
-  std::replace(words.begin(), words.end(), '_', ' ');
-  QString title = QString::fromStdString(words);
-  title.replace(QStringLiteral("let off"), QStringLiteral("let-off"));  // the technicians' spelling
-  return {title, unit};
+  const MetricWords named = metric_words(key);
+  return {QString::fromStdString(named.words), QString::fromStdString(named.unit)};
 }
 
 }  // namespace

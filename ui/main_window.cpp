@@ -503,17 +503,20 @@ void MainWindow::set_large_text(bool on) {
   large_text_ = on;
   QFont font = QApplication::font();
   font.setPointSizeF(base_point_size_ * (on ? kClassTextScale : 1.0));
+  // the window's width before the text changes: the layouts may widen it before the dock is
+  // fitted, and a window already pushed past a 1024-pixel projector must not count as the room
+  const int width_before = width();
   QApplication::setFont(font);
   // the dock follows its columns, which grow or shrink with the text once the layouts have taken
   // the new font (their size requests are events of their own)
-  QTimer::singleShot(0, this, [this] {
-    fit_regulation_dock(true);
+  QTimer::singleShot(0, this, [this, width_before] {
+    fit_regulation_dock(true, width_before);
     refit_run_status();  // the status line's text grew or shrank with the rest
   });
   QSettings().setValue("view/large_text", on);
 }
 
-void MainWindow::fit_regulation_dock(bool within_screen) {
+void MainWindow::fit_regulation_dock(bool within_screen, int width_before) {
   if (!regulation_scroll_) return;
   // the whole panel visible without a horizontal scroll bar, at its smallest (sliders at their
   // minimum width) so that the window still fits a 1024-pixel projector
@@ -523,12 +526,20 @@ void MainWindow::fit_regulation_dock(bool within_screen) {
   // that the dock scrolls. Not when an action opens: the window may not have its size yet (an
   // offscreen screenshot's 1280 pixels on an 800-pixel virtual screen). 15 pixels are the dock's
   // separator and frame
+  int window_room = 0;
   if (within_screen && screen()) {
-    const int room = std::max(screen()->availableGeometry().width(), width()) -
-                     centralWidget()->minimumSizeHint().width() - 15;
+    window_room =
+        std::max(screen()->availableGeometry().width(), width_before > 0 ? width_before : width());
+    const int room = window_room - centralWidget()->minimumSizeHint().width() - 15;
     if (room > 200) wanted = std::min(wanted, room);
   }
   regulation_scroll_->setMinimumWidth(wanted);
+  // a window the larger text had already pushed past that room comes back onto its screen (at
+  // 1024x768 it had grown to 1257 pixels, the dock's edge and the Start button off screen)
+  if (window_room > 0 && width() > window_room)
+    QTimer::singleShot(0, this, [this, window_room] {
+      if (width() > window_room) resize(std::max(window_room, minimumSizeHint().width()), height());
+    });
 }
 
 void MainWindow::build_shortcuts() {

@@ -144,8 +144,10 @@ class MainWindow : public QMainWindow {
                              const std::function<void(const QString&)>& write);
   void restore_settings();
   /// The regulation dock as wide as its panel's smallest layout (after an action or text size);
-  /// `within_screen`: no wider than leaves the window on its screen.
-  void fit_regulation_dock(bool within_screen);
+  /// `within_screen`: no wider than leaves the window on its screen (or at its `width_before`
+  /// a text size change, when that was wider: an offscreen 1280-pixel window), and a window
+  /// wider than that shrunk back.
+  void fit_regulation_dock(bool within_screen, int width_before = 0);
   void measure_current_model();
   void save_preset_from_menu();
   void show_deregulation_result(const DeregulationResult& result);

@@ -247,10 +247,16 @@ void PlotPanel::fit_values() {
   }
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
   // as many ticks as the plot's size gives room for: their labels must not run together on a
-  // short or narrow plot (a tick label is about 14 px high and up to 40 px wide)
+  // short or narrow plot. A label is a line high and, on the time axis, up to six characters
+  // wide ("0.0035"); the ticker rounds the count to a nice step, which can double it (0–5 ms in
+  // 0.5 ms steps ran ten labels together), hence two labels' room per tick asked for
   if (height_px > 0.0 && width_px > 0.0) {
-    plot_->yAxis->ticker()->setTickCount(std::clamp(static_cast<int>(height_px / 30.0), 2, 6));
-    plot_->xAxis->ticker()->setTickCount(std::clamp(static_cast<int>(width_px / 60.0), 2, 8));
+    const QFontMetricsF ticks(plot_->xAxis->tickLabelFont());
+    plot_->yAxis->ticker()->setTickCount(
+        std::clamp(static_cast<int>(height_px / (2.0 * ticks.height())), 2, 6));
+    const double label_px = ticks.horizontalAdvance(QStringLiteral("0.0000")) + 8.0;
+    plot_->xAxis->ticker()->setTickCount(
+        std::clamp(static_cast<int>(width_px / (2.0 * label_px)), 2, 8));
   }
 }
 
@@ -530,27 +536,66 @@ void PlotPanel::move_legend_inside() {
   plot_->axisRect()->insetLayout()->addElement(plot_->legend, Qt::AlignRight | Qt::AlignTop);
   plot_->legend->setMargins(legend_margins_inside_);
   plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
+  plot_->legend->setWrap(0);  // one row, inside (at most four series are ever moved back)
+  plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
   legend_below_ = false;
   schedule_minimum_height();
 }
 
 bool PlotPanel::place_legend_for_width() {
-  if (legend_below_for_good_) return false;
-  // inside while the legend takes at most this share of the plot area's width; back inside
-  // only below a smaller one, so that a width at the edge does not move it to and fro
-  constexpr double kMostOfTheWidth = 0.7, kBackInside = 0.6;
-  const double legend_px = plot_->legend->minimumOuterSizeHint().width();
-  const double area_px = plot_->axisRect()->width();
-  if (area_px <= 0) return false;
-  if (!legend_below_ && legend_px > kMostOfTheWidth * area_px) {
-    move_legend_below(false);
-    return true;
+  bool changed = false;
+  if (!legend_below_for_good_) {
+    // inside while the legend on one row takes at most this share of the plot area's width;
+    // back inside only below a smaller one, so that a width at the edge does not move it to and
+    // fro (its one-row width: below, it may be wrapped into more rows)
+    constexpr double kMostOfTheWidth = 0.7, kBackInside = 0.6;
+    const double legend_px = legend_row_width();
+    const double area_px = plot_->axisRect()->width();
+    if (area_px <= 0) return false;
+    if (!legend_below_ && legend_px > kMostOfTheWidth * area_px) {
+      move_legend_below(false);
+      changed = true;
+    } else if (legend_below_ && legend_px < kBackInside * area_px) {
+      move_legend_inside();
+      changed = !legend_below_;
+    }
   }
-  if (legend_below_ && legend_px < kBackInside * area_px) {
-    move_legend_inside();
-    return !legend_below_;
-  }
-  return false;
+  if (legend_below_) changed = wrap_legend_to_width() || changed;
+  return changed;
+}
+
+double PlotPanel::legend_row_width() const {
+  const int n = plot_->legend->itemCount();
+  double width = plot_->legend->margins().left() + plot_->legend->margins().right();
+  for (int i = 0; i < n; ++i)
+    width += plot_->legend->item(i)->minimumOuterSizeHint().width() +
+             (i > 0 ? plot_->legend->columnSpacing() : 0);
+  return width;
+}
+
+bool PlotPanel::wrap_legend_to_width() {
+  // under the plot the legend takes as many columns as the panel's width holds (four long
+  // names on one row had been cut to "with both par", "without the bridle st"), at most three
+  // for many series (rows of three, add_series)
+  const int n = plot_->legend->itemCount();
+  if (n <= 1) return false;
+  double widest = 0.0;
+  for (int i = 0; i < n; ++i)
+    widest = std::max(widest,
+                      static_cast<double>(plot_->legend->item(i)->minimumOuterSizeHint().width()));
+  const double room = width() - plot_->legend->margins().left() - plot_->legend->margins().right();
+  int columns = legend_row_width() <= width()
+                    ? n
+                    : std::clamp(static_cast<int>((room + plot_->legend->columnSpacing()) /
+                                                  (widest + plot_->legend->columnSpacing())),
+                                 1, n);
+  if (n > 4) columns = std::min(columns, 3);
+  const int wrap = columns >= n ? 0 : columns;
+  if (plot_->legend->wrap() == wrap) return false;
+  plot_->legend->setWrap(wrap);
+  plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);  // re-arranged with the wrap
+  schedule_minimum_height();  // a legend of more rows needs more height
+  return true;
 }
 
 void PlotPanel::set_points_only(int series) {

@@ -139,6 +139,11 @@ class PlotPanel : public QWidget {
   void move_legend_inside();
   /// Moves the legend below or back inside as the plot area's width asks; true when it moved.
   bool place_legend_for_width();
+  /// The legend's width on one row (px), whatever its wrap.
+  double legend_row_width() const;
+  /// Below the plot: the legend wrapped into as many columns as the panel's width holds; true
+  /// when that changed.
+  bool wrap_legend_to_width();
 
   QString title_;
   QString y_title_;

@@ -101,6 +101,11 @@ void RegulationPanel::set_replay(const ActionModel* replayed) {
     replaying_ = replaying;
     for (const auto& r : rows_) r->set_replayed(replaying);
     title_->setText(replaying ? tr("%1 (replay)").arg(title_text_) : title_text_);
+    // why the sliders do not move, and the way back, where the class reads the panel's messages
+    if (replaying)
+      log(
+          tr("A recorded replay: the settings show the recording's screws and cannot be turned; "
+             "Start from rest returns to the live action."));
   }
   if (replayed) show_adjusters(*replayed);
 }

@@ -211,6 +211,26 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
   return result;
 }
 
+MetricWords metric_words(const std::string& key) {
+  static const std::pair<const char*, const char*> kUnits[] = {
+      {"_mps", "m/s"}, {"_ms", "ms"}, {"_mm", "mm"}, {"_hz", "Hz"}, {"_g", "g"}, {"_n", "N"}};
+  MetricWords out{key, ""};
+  for (const auto& [suffix, symbol] : kUnits) {
+    const std::string tail = suffix;
+    if (out.words.size() > tail.size() &&
+        out.words.compare(out.words.size() - tail.size(), tail.size(), tail) == 0) {
+      out.words.resize(out.words.size() - tail.size());
+      out.unit = symbol;
+      break;
+    }
+  }
+  if (out.words == "max_repetition") out.words = "repetition limit";
+  std::replace(out.words.begin(), out.words.end(), '_', ' ');
+  if (const auto at = out.words.find("let off"); at != std::string::npos)
+    out.words.replace(at, 7, "let-off");  // the technicians' spelling
+  return out;
+}
+
 std::vector<SensitivityRank> rank_by_change(const SensitivityResult& r, std::size_t metric) {
   std::vector<SensitivityRank> ranks;
   for (const SensitivityRow& row : r.rows) {

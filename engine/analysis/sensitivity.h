@@ -39,6 +39,14 @@ SensitivityMetricGroup touchweight_metrics();
 /// stroke on the grand, full stroke on the upright.
 SensitivityMetricGroup repetition_metrics();
 
+/// A metric's key in words and its unit, as a table or plot names it: impact_velocity_mps →
+/// {"impact velocity", "m/s"}, max_repetition_hz → {"repetition limit", "Hz"} (the keys stay in
+/// the CSV and JSON).
+struct MetricWords {
+  std::string words, unit;
+};
+MetricWords metric_words(const std::string& key);
+
 struct SensitivityOptions {
   double step_mm = 0.5;  ///< each adjuster at −step and +step
   std::vector<SensitivityMetricGroup> groups = sensitivity_metric_groups();

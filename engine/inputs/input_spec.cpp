@@ -274,6 +274,7 @@ class CsvForce final : public ForceInput {
     return f_[i] + slope_[i] * (t - t_[i]);
   }
   double given_until_s() const override { return t_.back(); }
+  double given_from_s() const override { return t_.front(); }
 
  private:
   std::vector<double> t_, f_, slope_;
@@ -290,6 +291,7 @@ class CsvMotion final : public MotionInput {
     return {s.value, s.first, s.second};
   }
   double given_until_s() const override { return spline_.x_max(); }
+  double given_from_s() const override { return spline_.x_min(); }
 
  private:
   CubicSpline spline_;
@@ -573,7 +575,13 @@ std::unique_ptr<KeyInput> parse_input_spec(const std::string& spec, const InputC
 std::string input_notes(const KeyInput& input, double run_end_s) {
   std::string notes = input.note();
   const double t_end = input.given_until_s();
-  if (t_end < run_end_s) {
+  if (input.given_from_s() >= run_end_s) {
+    // a recording that begins after the run ends: the run sees none of it
+    notes += (notes.empty() ? "" : "; ") +
+             ("the input begins at " + format_number(input.given_from_s(), 6) +
+              " s, after the run's end at " + format_number(run_end_s, 6) +
+              " s: the action stays at rest for the whole run");
+  } else if (t_end < run_end_s) {
     const std::string last =
         input.is_motion()
             ? "key angle, " + format_number(input.motion(t_end).angle * 180.0 / kPi, 4) + " deg,"

@@ -41,6 +41,9 @@ class KeyInput {
   /// The time the input is given up to (s): a recorded file's last row; infinity for a SPEC
   /// defined for all time. Later the input holds its last value.
   virtual double given_until_s() const { return std::numeric_limits<double>::infinity(); }
+  /// Time (s) of the input's first given value: a recording's first row (before it the run is
+  /// at rest); 0 for the generated inputs.
+  virtual double given_from_s() const { return 0.0; }
   /// What the user should know about how the input was read, in words (empty: nothing), e.g.
   /// that a CSV with both a force and a key angle column drives the key by its angle.
   virtual std::string note() const { return {}; }

@@ -125,6 +125,8 @@ expect_failure "--set without a number" "let_off=wide|not a number" \
   "${run_args[@]}" --set let_off=wide --out out.csv
 expect_failure "unknown --without part" "bridle|removable parts|repetition_spring" \
   "${run_args[@]}" --without bridle --out out.csv
+expect_failure "a --without part the action cannot rest without" "--without jack_spring|no rest|jack" \
+  "${run_args[@]}" --without jack_spring --out out.csv
 expect_failure "missing --duration" "--duration|missing" \
   simulate --action grand --input mass:1kg --out out.csv
 expect_failure "non-numeric --duration" "--duration|abc|not a number" \

@@ -135,7 +135,11 @@ check_csv u.csv upright 0.2
 python3 -c '
 import json, sys
 r = json.load(open(sys.argv[1]))
-if r.get("action") != "upright": sys.exit("upright.json: action is %r" % r.get("action"))' \
+if r.get("action") != "upright": sys.exit("upright.json: action is %r" % r.get("action"))
+# the JSON says how the run was made: the model changes and the step
+if r.get("set") != ["let_off=0.2"] or r.get("without") != ["bridle"] or r.get("effects") != []:
+    sys.exit("upright.json: set/without/effects are %r %r %r" % (r.get("set"), r.get("without"), r.get("effects")))
+if r.get("step_s") != 1e-5: sys.exit("upright.json: step_s is %r" % r.get("step_s"))' \
   upright.json
 # the bridle is gone from the trace (a full upright has a bridle_tension_n column)
 "$exe" simulate --action upright --input mass:1kg --duration 0.01 --out full-upright.csv >/dev/null

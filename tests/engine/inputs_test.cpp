@@ -110,6 +110,11 @@ TEST_F(InputsCsvTest, ARecordingShorterThanTheRunSaysItsLastValueIsHeld) {
   EXPECT_EQ(input_notes(*angle, 1.0),
             "the input ends at 0.2 s; its last key angle, 1.146 deg, is held to the run's end at "
             "1 s");
+  // a recording that begins after the run ends: the run sees none of it, and is told so
+  const auto late = parse("csv:" + write_text("late.csv", "time_s,key_force_n\n0.5,0\n0.6,20\n"));
+  EXPECT_EQ(input_notes(*late, 0.1),
+            "the input begins at 0.5 s, after the run's end at 0.1 s: the action stays at rest "
+            "for the whole run");
   // a SPEC defined for all time has nothing to say
   EXPECT_EQ(input_notes(*parse("motion:sine:5"), 10.0), "");
   EXPECT_EQ(parse("force:const:3")->given_until_s(), std::numeric_limits<double>::infinity());

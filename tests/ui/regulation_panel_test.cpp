@@ -263,6 +263,9 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
       qPrintable(QString("%1 mm shown, %2 mm in the replay").arg(row->value_mm()).arg(turned_mm)));
   QVERIFY(!row->slider()->isEnabled() && !row->spin_box()->isEnabled());
   QCOMPARE(row->measured_label()->text(), QString("replay"));
+  // the panel's log says why, and the way back to the live action
+  QVERIFY2(window.regulation()->log_text().contains("Start from rest returns to the live action"),
+           qPrintable(window.regulation()->log_text()));
   // and the status line says where the screw is in the frame shown, as the class reads it
   // (it had said "settings hammer_blow=1.2345mm")
   const QString turned = QString("a recorded replay, hammer blow +%1 mm").arg(turned_mm, 0, 'f', 2);
