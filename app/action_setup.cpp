@@ -27,28 +27,32 @@ void refuse_repeated_names(const std::string& option, const std::vector<std::str
 
 }  // namespace
 
-ActionModel load_configured_action(const CommandLine& cl) {
+ActionModel load_configured_action(const CommandLine& cl, bool needs_rest) {
   refuse_repeated_names("--set", cl.values("--set"));
   refuse_repeated_names("--effect", cl.values("--effect"));
-  ActionModel model = load_action(cl.value("--action"));
+  const ActionModel loaded = load_action(cl.value("--action"));
+  ActionModel model = loaded;
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
   std::set<std::string> removed;
-  for (const std::string& part : cl.values("--without"))
-    if (removed.insert(part).second) model = without_part(model, part);  // twice is once
+  for (const std::string& part : cl.values("--without")) {
+    if (!removed.insert(part).second) continue;  // twice is once
+    // a part the action cannot rest without (the grand's jack spring holds the jack under the
+    // knuckle): refused as the choice it is, not reported later as a run that failed. Tried on
+    // the preset as given, so that a --set or --effect is not blamed on the part
+    if (needs_rest) {
+      try {
+        find_rest_state(without_part(loaded, part));
+      } catch (const InputError&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw InputError("--without " + part + ": without it the action has no rest (" + e.what() +
+                         "); it holds the action at rest, so no run can leave it out");
+      }
+    }
+    model = without_part(model, part);
+  }
   for (const std::string& effect : cl.values("--effect"))
     model = with_effect(model, parse_effect(effect));
-  // a part the action cannot rest without (the grand's jack spring holds the jack under the
-  // knuckle): refused as the choice it is, not reported later as a run that failed
-  if (!removed.empty()) {
-    try {
-      find_rest_state(model);
-    } catch (const std::exception& e) {
-      std::string parts;
-      for (const std::string& part : removed) parts += (parts.empty() ? "" : ", ") + part;
-      throw InputError("--without " + parts + ": without it the action has no rest (" + e.what() +
-                       "); it holds the action at rest, so no run can leave it out");
-    }
-  }
   return model;
 }
 

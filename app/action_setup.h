@@ -8,7 +8,8 @@ namespace pat::app {
 
 /// Loads --action (grand, upright or a preset file) and applies --set NAME=MM and
 /// --without PART, then every --effect NAME=VALUE (model/effects.h). Throws InputError naming the
-/// option or the file.
-ActionModel load_configured_action(const CommandLine& cl);
+/// option or the file. `needs_rest`: a --without part the whole action cannot rest without is
+/// refused (false for the commands that take one body alone: swing, keyfall).
+ActionModel load_configured_action(const CommandLine& cl, bool needs_rest = true);
 
 }  // namespace pat::app

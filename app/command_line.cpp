@@ -7,15 +7,11 @@
 
 #include "core/error.h"
 #include "io/csv.h"
+#include "model/preset_loader.h"
 
 namespace pat::app {
 
 namespace {
-
-/// The options whose values are files the command writes.
-bool is_output_option(const std::string& option) {
-  return option == "--out" || option == "--plot";
-}
 
 std::string normalized_path(const std::string& path) {
   std::error_code error;
@@ -117,11 +113,13 @@ std::string CommandLine::output_path(const std::string& option, bool required) c
                        ", which this command reads; writing there would destroy it, so give the "
                        "output its own file");
   }
-  const auto [named, fresh] = outputs_.emplace(normalized_path(path), option);
-  if (!fresh && named->second != option)
-    throw InputError(option + ": " + path + " is also the " + named->second +
-                     " file; the second output would overwrite the first, so give each its own "
-                     "file");
+  for (const auto& [named, named_by] : outputs_) {
+    if (named_by != option && same_file(path, named))
+      throw InputError(option + ": " + path + " is also the " + named_by +
+                       " file; the second output would overwrite the first, so give each its own "
+                       "file");
+  }
+  outputs_.emplace_back(path, option);
   return path;
 }
 
@@ -131,17 +129,23 @@ void CommandLine::add_input_file(const std::string& what, const std::string& pat
 
 std::vector<std::pair<std::string, std::string>> CommandLine::input_files() const {
   std::vector<std::pair<std::string, std::string>> files;
-  for (const auto& [option, values] : values_) {
-    if (is_output_option(option)) continue;
-    for (const std::string& value : values) {
-      // an input SPEC names its file after "csv:"; a file actually called "csv:..." wins
-      const bool spec = value.rfind("csv:", 0) == 0 && !is_regular_file(value);
-      const std::string path = spec ? value.substr(4) : value;
-      if (is_regular_file(path)) files.emplace_back("the file given to " + option, path);
-    }
-  }
-  for (const auto& [what, path] : extra_inputs_)
+  const auto add = [&files](const std::string& what, const std::string& path) {
     if (is_regular_file(path)) files.emplace_back(what, path);
+  };
+  // the options that name files the commands read, as the commands read them
+  for (const std::string& action : values("--action")) {
+    // an action's name reads the shipped preset (load_action)
+    if (action == "grand" || action == "upright")
+      add("the shipped preset of --action " + action, preset_directory() + "/" + action + ".json");
+    else
+      add("the file given to --action", action);
+  }
+  for (const std::string& input : values("--input"))
+    if (input.rfind("csv:", 0) == 0) add("the file given to --input", input.substr(4));
+  for (const char* option : {"--measured", "--calibration", "--exercise"})
+    for (const std::string& path : values(option))
+      add(std::string("the file given to ") + option, path);
+  for (const auto& [what, path] : extra_inputs_) add(what, path);
   return files;
 }
 

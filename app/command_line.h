@@ -37,9 +37,9 @@ class CommandLine {
   /// A file the command reads that is not an option's value (a positional argument), with the
   /// words that name it in a message ("the raw trace").
   void add_input_file(const std::string& what, const std::string& path);
-  /// The existing files the command reads, each with the words that name it: the values of every
-  /// option that is not an output (--out, --plot), a "csv:" prefix taken off, that name a file,
-  /// and those added with add_input_file.
+  /// The existing files the command reads, each with the words that name it: --action's preset
+  /// (the shipped one for grand and upright), --input's CSV, --measured, --calibration and
+  /// --exercise files, and those added with add_input_file.
   std::vector<std::pair<std::string, std::string>> input_files() const;
   /// Every file the command reads or has named as an output, except the output `option`'s own,
   /// each with the words that name it ("--out", "the file given to --input"): what a file the
@@ -50,8 +50,8 @@ class CommandLine {
  private:
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_;
-  /// Output files named so far (absolute, normalized) and the option that named each.
-  mutable std::map<std::string, std::string> outputs_;
+  /// Output files named so far, each with the option that named it.
+  mutable std::vector<std::pair<std::string, std::string>> outputs_;
   std::vector<std::pair<std::string, std::string>> extra_inputs_;  ///< (words, path)
 };
 

@@ -14,7 +14,7 @@ namespace pat::app {
 int run_keyfall(const std::vector<std::string>& args) {
   const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--duration", "--plot"},
                        {"--json"});
-  const ActionModel model = load_configured_action(cl);
+  const ActionModel model = load_configured_action(cl, false);  // one body alone: no rest needed
   KeyFallOptions options;
   options.duration_s = cl.positive_number_or("--duration", options.duration_s);
   const PlotOption plot(cl);

@@ -63,10 +63,11 @@ int run_measure(const std::vector<std::string>& args) {
     std::cout << "cannot be read: " << aftertouch_problem << "\n";
   else
     std::cout << number_in(aftertouch_mm, "mm") << " mm, "
-              << aftertouch_against_gauge(aftertouch_mm)
-              << (std::string(aftertouch_against_gauge(aftertouch_mm)) == "within"
-                      ? " that\n"
-                      : " than that\n");
+              << (aftertouch_against_gauge(aftertouch_mm) == AgainstGauge::within ? "within that"
+                  : aftertouch_against_gauge(aftertouch_mm) == AgainstGauge::less
+                      ? "less than that"
+                      : "more than that")
+              << "\n";
   std::cout << (all_within ? "every setting within its tolerance\n"
                            : "not every setting is within its tolerance (regulate adjusts them)\n");
   return 0;

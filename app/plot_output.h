@@ -36,6 +36,7 @@ class PlotOption {
  public:
   /// Reads --plot from the command line (CommandLine::output_path), which must outlive this.
   explicit PlotOption(const CommandLine& command_line);
+  PlotOption(const CommandLine&&) = delete;  // it keeps the reference: no temporaries
   bool given() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
   /// A CSV export: one table per x axis (write_plots puts the plots over another x beside it).

@@ -16,7 +16,7 @@ namespace pat::app {
 int run_swing(const std::vector<std::string>& args) {
   const CommandLine cl(args, {"--action", "--set", "--without", "--out", "--release-deg", "--plot"},
                        {"--json"});
-  const ActionModel model = load_configured_action(cl);
+  const ActionModel model = load_configured_action(cl, false);  // one body alone: no rest needed
   SwingOptions options;
   if (cl.has("--release-deg")) {
     const double degrees = cl.positive_number("--release-deg");

@@ -90,7 +90,7 @@ AnalysisEntry technician_measurements() {
       // the aftertouch the settings leave (technicians check dip by it), against their gauge
       try {
         const double aftertouch = measure_aftertouch(*model);
-        const std::string against = aftertouch_against_gauge(aftertouch);
+        const AgainstGauge against = aftertouch_against_gauge(aftertouch);
         // as short as the settings' values beside it ("0.94 (within 0.89–1.14)"): the dock's
         // value column is narrow
         const QString range = QStringLiteral("%1–%2").arg(
@@ -100,9 +100,9 @@ AnalysisEntry technician_measurements() {
             {QObject::tr("aftertouch (key travel left at let-off; gauge .035–.045 in)"),
              QObject::tr("%1 (%2 %3)")
                  .arg(QString::fromStdString(format_fixed(aftertouch, 2)))
-                 .arg(against == "within" ? QObject::tr("within")
-                      : against == "less" ? QObject::tr("less than")
-                                          : QObject::tr("more than"))
+                 .arg(against == AgainstGauge::within ? QObject::tr("within")
+                      : against == AgainstGauge::less ? QObject::tr("less than")
+                                                      : QObject::tr("more than"))
                  .arg(range),
              QStringLiteral("mm")});
       } catch (const std::exception& e) {

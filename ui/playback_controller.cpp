@@ -114,10 +114,15 @@ QString PlaybackController::inputs_text(bool in_words) const {
 void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) {
   if (replay_) return;  // a recorded analysis cannot change
   model_ = model;
-  // the run takes it from its next step: a paused run stays on the frame shown (a screw turned
+  // the run takes it from its next step: a paused run stays at the time shown (a screw turned
   // with the arrow keys must not step the run too; the window's status line says the change acts
-  // as the run goes on)
-  worker_->request_model(std::move(model));
+  // as the run goes on), but its frame is drawn again with the screw where it now is (the parts
+  // respond as the run goes on)
+  worker_->request_model(model);
+  if (!playing_ && has_frame_) {
+    current_.model = std::move(model);
+    emit frameShown(current_);
+  }
 }
 
 void PlaybackController::strike(const std::string& force_spec) {

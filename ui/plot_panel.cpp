@@ -198,6 +198,14 @@ double PlotPanel::tick_label_point_size() const {
   return plot_->xAxis->tickLabelFont().pointSizeF();
 }
 
+void PlotPanel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  if (cursors_enabled_ && cursors_[0] && cursors_[1]) {
+    update_cursor_items();
+    request_replot();
+  }
+}
+
 void PlotPanel::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
   if (event->type() != QEvent::FontChange) return;
@@ -317,22 +325,25 @@ QString PlotPanel::cursor_readout() const {
                .arg((b - a) * k, 0, 'f', 2)
                .arg(x_readout_unit_)
                .arg(x_symbol_);
-  // the changes to the hundredth of the unit (deg, mm, N): no "6.858e-16 deg" for two frames at
-  // rest, no "-0.00"
+  // the changes to the hundredth of the unit (deg, mm, N, m/s), a fraction to the thousandth: no
+  // "6.858e-16 deg" for two frames at rest, no "-0.00"
   QStringList changes;
   for (int s = 0; s < series_count(); ++s) {
     const auto va = value_at(s, a), vb = value_at(s, b);
     if (!va || !vb) continue;
+    const QString unit = unit_of(series_[s].column);
+    const int decimals = unit.isEmpty() || unit == "fraction" ? 3 : 2;
     const double change = *vb - *va;
     changes << tr("Δ %1 = %2 %3")
                    .arg(series_[s].label)
-                   .arg(std::abs(change) < 0.005 ? 0.0 : change, 0, 'f', 2)
-                   .arg(unit_of(series_[s].column));
+                   .arg(std::abs(change) < 0.5 * std::pow(10.0, -decimals) ? 0.0 : change, 0, 'f',
+                        decimals)
+                   .arg(unit);
   }
   // on as few lines as the plot's width takes (a line each squeezed a short plot's data into a
   // strip): the cursors' times, then the changes, side by side where they fit
   const QFontMetricsF metrics(plot_->xAxis->tickLabelFont());
-  const double room = std::max(100, width() - 20);
+  const double room = std::max(100, (readout_width_px_ > 0 ? readout_width_px_ : width()) - 20);
   for (const QString& change : changes) {
     const QString joined = lines.back() + QStringLiteral("   ") + change;
     if (metrics.horizontalAdvance(joined) <= room)
@@ -398,7 +409,9 @@ void PlotPanel::render(QPaintDevice& device, const std::vector<std::pair<PlotPan
   painter.fillRect(QRect(0, 0, device.width(), device.height()), Qt::white);
   painter.scale(scale, scale);
   for (const auto& [panel, rect] : plots) {
+    panel->readout_width_px_ = rect.width();  // the readout wraps to the picture's width
     panel->update_cursor_items(true);
+    panel->readout_width_px_ = -1;
     panel->align_marker_labels();  // drawing to a file replots nothing: its range as it is now
     panel->time_mark_line_->setVisible(false);
     painter.save();

@@ -116,6 +116,8 @@ class PlotPanel : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  /// The cursor readout wraps to the new width (its changes beside the times where they fit).
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   /// Sets the title, axis, legend, readout and marker fonts from the widget's font.
@@ -171,6 +173,7 @@ class PlotPanel : public QWidget {
   bool legend_below_for_good_ = false;  ///< below whatever the width (categories, many series)
   QMargins legend_margins_inside_;
   bool rendering_ = false;     ///< drawn into a picture (render()): the legend stays where it is
+  int readout_width_px_ = -1;  ///< the width the cursor readout wraps to (render: the picture's)
   int fitted_height_px_ = -1;  ///< the plot area's height the value axis was last fitted for
   std::optional<double> cursors_[2];
   bool cursors_enabled_ = true;

@@ -178,7 +178,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
     d->addItem(tr("less than its target"), "less");
     d->setPlaceholderText(tr("more or less?"));
   }
-  // no choice made for the student: an answer needs both chosen (clear_answer_form)
+  // no choice made for the student: an answer needs both chosen (each exercise starts unchosen)
   for (QComboBox* setting : {answer_setting_, second_setting_})
     setting->setPlaceholderText(tr("which setting?"));
   second_setting_->setToolTip(tr("Level 2: the second hidden setting"));

@@ -131,7 +131,8 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
           with_adjuster(model, s.name, a.value + sign * options.step_mm * 1e-3)));
   }
   std::vector<RestState> rests(variants.size());
-  std::vector<char> failed(variants.size(), 0);  // a variant without a rest state
+  std::vector<char> failed(variants.size(), 0);            // a variant without a rest state
+  std::vector<std::string> rest_problem(variants.size());  // why it has none
   std::vector<std::vector<double>> metrics(variants.size(), std::vector<double>(n_metrics, kNaN));
   // measured[s][p]: setting s measured on its own variant at −step, 0, +step
   std::vector<std::array<double, 3>> measured(n_settings, {kNaN, kNaN, kNaN});
@@ -151,9 +152,10 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
       [&](std::size_t v) {
         try {
           rests[v] = find_rest_state(*variants[v]);
-        } catch (const std::exception&) {
+        } catch (const std::exception& e) {
           if (v == 0) throw;  // the model as given must rest; a variant may not (NaN below)
           failed[v] = 1;
+          rest_problem[v] = std::string("the action does not come to rest there: ") + e.what();
         }
       },
       &reporter);
@@ -179,7 +181,11 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
         const std::size_t k = job - metric_jobs, setting = k / 3;
         const int position = static_cast<int>(k % 3);
         const std::size_t v = variant_of(setting, position);
-        if (failed[v]) return;
+        if (failed[v]) {  // not read: said why
+          readings_note[setting][position] = rest_problem[v];
+          readings_failed[setting][position] = true;
+          return;
+        }
         // read as a technician reads it (read_setting: e.g. the let-off with the drop screw out
         // of the way); one that cannot be read there stays NaN with its reason
         const SettingReading reading =

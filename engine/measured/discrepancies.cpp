@@ -135,9 +135,12 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
   };
   const MeasuredEvent* impact = first_of(events, "impact");
   const MeasuredEvent* check = first_of(events, "check");
-  const MeasuredEvent* model_impact = first_of(model_events, "impact");
-  const MeasuredEvent* model_check = first_of(model_events, "check");
-  const bool model_strikes = model_impact || !model.impact_t.empty();
+  // a peak of the model's trace is its strike only when the model did touch the string (a hammer
+  // that rises and falls back short of it has a peak too), and its check only when it was caught
+  const bool model_strikes = !model.impact_t.empty();
+  const MeasuredEvent* model_impact = model_strikes ? first_of(model_events, "impact") : nullptr;
+  const MeasuredEvent* model_check =
+      model.check_t.empty() ? nullptr : first_of(model_events, "check");
   if (impact && model_impact) {
     add("impact_time", "ms", impact->t * 1e3, model_impact->t * 1e3, "first impact time");
     add("impact_velocity", "deg/s",
@@ -150,8 +153,7 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
                                 format_fixed(impact->t * 1e3) + " ms but the model never does"});
   } else if (impact) {
     out.features.push_back(
-        {"impact_time", "ms", impact->t * 1e3, (model.impact_t.front() + dt_shift) * 1e3, 0.0,
-         false,
+        {"impact_time", "ms", impact->t * 1e3, (model.impact_t.front() + dt_shift) * 1e3, 0.0, true,
          "the model touches the string at " +
              format_fixed((model.impact_t.front() + dt_shift) * 1e3) +
              " ms, too lightly for its trace to show a strike the way the file's does"});
@@ -167,9 +169,23 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
              " ms; a hammer trace does not show let-off directly";
     out.features.push_back(f);
   }
-  if (check && model_check)
+  if (check && model_check) {
     add("check_angle", "deg", check->angle_deg, model_check->angle_deg,
         "hammer angle when caught by the backcheck");
+  } else if (check && !model.check_t.empty()) {
+    // caught in both, but the model's hammer is not held still long enough for the file's rule
+    out.features.push_back({"check_angle", "deg", check->angle_deg,
+                            model_at(model.check_t.front() + dt_shift), 0.0, true,
+                            "the model's backcheck catches the hammer at " +
+                                format_fixed((model.check_t.front() + dt_shift) * 1e3) +
+                                " ms but does not hold it still as the file's does (measured " +
+                                format_fixed(check->angle_deg) + " deg when held)"});
+  } else if (check) {
+    out.features.push_back({"check_angle", "deg", check->angle_deg, 0.0, 0.0, true,
+                            "the file's backcheck holds the hammer at " +
+                                format_fixed(check->angle_deg) +
+                                " deg but the model's never catches it"});
+  }
   // settling level: the last 20 ms
   {
     double sm = 0, sn = 0;

@@ -38,6 +38,14 @@ std::string child(const std::string& path, const std::string& key) {
   return path.empty() ? key : path + "." + key;
 }
 
+/// "bodies[3] (hammer)": an item of a list by its place and, where it has one, its name.
+std::string item_path(const std::string& list, std::size_t i, const json& item) {
+  std::string path = list + "[" + std::to_string(i) + "]";
+  if (item.is_object() && item.contains("name") && item["name"].is_string())
+    path += " (" + item["name"].get<std::string>() + ")";
+  return path;
+}
+
 /// Reads fields with their JSON path, so that every message names the field.
 class PresetReader {
  public:
@@ -143,23 +151,23 @@ class PresetReader {
   /// fields that only document: `kDocumentationFields`.
   void check_unknown_fields(const json& value, const std::string& path) const {
     if (value.is_array()) {
-      for (std::size_t i = 0; i < value.size(); ++i) {
-        const json& item = value[i];
-        std::string at = path + "[" + std::to_string(i) + "]";
-        if (item.is_object() && item.contains("name") && item["name"].is_string())
-          at += " (" + item["name"].get<std::string>() + ")";
-        check_unknown_fields(item, at);
-      }
+      for (std::size_t i = 0; i < value.size(); ++i)
+        check_unknown_fields(value[i], item_path(path, i, value[i]));
       return;
     }
     if (!value.is_object()) return;
     const auto read = read_keys_.find(&value);
     for (const auto& [key, item] : value.items()) {
+      // "_comment", "$comment": the usual ways of commenting JSON
+      const bool comment = !key.empty() && (key[0] == '_' || key[0] == '$');
       if (read != read_keys_.end() && !read->second.count(key) &&
-          !kDocumentationFields.count(key)) {
+          !kDocumentationFields.count(key) && !comment) {
         std::string known;
         for (const std::string& k : read->second) known += (known.empty() ? "" : ", ") + k;
-        fail(child(path, key), "unknown field (misspelt? the fields read here are " + known + ")");
+        fail(child(path, key),
+             "a field that is not read here: misspelt, or not used by this kind of item (the "
+             "fields read here are " +
+                 known + ")");
       }
       check_unknown_fields(item, child(path, key));
     }
@@ -173,13 +181,6 @@ class PresetReader {
   /// The fields asked for in each object read (present or not).
   mutable std::map<const json*, std::set<std::string>> read_keys_;
 };
-
-std::string item_path(const char* list, std::size_t i, const json& item) {
-  std::string path = std::string(list) + "[" + std::to_string(i) + "]";
-  if (item.is_object() && item.contains("name") && item["name"].is_string())
-    path += " (" + item["name"].get<std::string>() + ")";
-  return path;
-}
 
 int body_reference(const PresetReader& r, const ActionModel& model, const json& object,
                    const std::string& path, const char* key) {

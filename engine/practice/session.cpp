@@ -62,12 +62,19 @@ std::string reading_text(double value, const std::string& unit) {
 
 namespace {
 
-std::optional<double> try_measure(const ActionModel& model, const std::string& setting) {
+/// The setting read as a technician reads it, as the regulation panel does (read_setting: the
+/// let-off with the drop screw out of the way); empty when it cannot be read there (no
+/// escapement, no check, no rest), which scores as not corrected.
+std::optional<double> try_read(const ActionModel& model, const std::string& setting) {
+  const int index = model.setting_index(setting);
+  if (index < 0) return std::nullopt;
   try {
-    return measure_setting(model, setting);
-  } catch (const std::runtime_error&) {
-    return std::nullopt;  // not measurable (no escapement, no check): scored as not corrected
+    const double measured =
+        read_setting(model, model.regulation[static_cast<std::size_t>(index)]).measured;
+    if (std::isfinite(measured)) return measured;
+  } catch (const std::runtime_error&) {  // no rest state
   }
+  return std::nullopt;
 }
 
 }  // namespace
@@ -314,7 +321,7 @@ SessionScore PracticeSession::score(const std::vector<CorrectionReading>& readin
     const int index = regulated_.setting_index(r.setting);
     if (index < 0) continue;
     const RegulationSetting& setting = regulated_.regulation[static_cast<std::size_t>(index)];
-    if (r.corrected && std::abs(*r.corrected - setting.target) <= setting.tolerance) continue;
+    if (r.corrected && within_tolerance(setting, *r.corrected)) continue;
     left_out +=
         (left_out.empty() ? "" : ", ") + setting_words(r.setting) + " " +
         (r.corrected ? reading_text(*r.corrected, setting.unit) : std::string("cannot be read")) +
@@ -356,14 +363,13 @@ std::vector<CorrectionReading> measure_corrections(const PracticeSession& sessio
   std::vector<CorrectionReading> readings;
   const std::vector<std::string> scored = session.scored_settings();
   for (const std::string& setting : scored)
-    readings.push_back({setting, try_measure(session.regulated(), setting),
-                        try_measure(hidden, setting), try_measure(corrected, setting)});
-  // every other setting on the corrected action, read as the regulation panel reads it
-  for (const SettingReading& r : read_settings(corrected)) {
-    if (std::find(scored.begin(), scored.end(), r.name) != scored.end()) continue;
-    CorrectionReading other{r.name, std::nullopt, std::nullopt, std::nullopt, false};
-    if (std::isfinite(r.measured)) other.corrected = r.measured;
-    readings.push_back(other);
+    readings.push_back({setting, try_read(session.regulated(), setting), try_read(hidden, setting),
+                        try_read(corrected, setting)});
+  // every other setting on the corrected action alone, as the regulation panel reads it
+  for (const RegulationSetting& setting : corrected.regulation) {
+    if (std::find(scored.begin(), scored.end(), setting.name) != scored.end()) continue;
+    readings.push_back(
+        {setting.name, std::nullopt, std::nullopt, try_read(corrected, setting.name), false});
   }
   return readings;
 }

@@ -98,8 +98,12 @@ double bridle_slack_mm(const ActionModel& model, const RestState& rest) {
 
 }  // namespace
 
+bool within_tolerance(const RegulationSetting& setting, double measured) {
+  return std::abs(measured - setting.target) <= setting.tolerance;  // false for NaN
+}
+
 bool SettingReading::within_tolerance() const {
-  return std::abs(measured - target) <= tolerance;
+  return std::abs(measured - target) <= tolerance;  // the same test as above, on its own copy
 }
 
 double measure_setting(const ActionModel& model, const std::string& name,

@@ -38,6 +38,9 @@ struct SettingReading {
   bool within_tolerance() const;  ///< false when not read
 };
 
+/// Whether `measured` (the setting's unit) lies within the setting's tolerance of its target.
+bool within_tolerance(const RegulationSetting& setting, double measured);
+
 /// Measures setting `name` of `model` (its unit). `rest` may pass the model's rest state.
 /// Throws InputError for an unknown setting, std::runtime_error when the measurement cannot be
 /// taken (e.g. the action never escapes in the slow press) with the reason.
@@ -54,11 +57,12 @@ double measure_aftertouch(const ActionModel& model, const RestState* rest = null
 /// (domain.md, table row 8: Yamaha about .035, Steinway .045).
 inline constexpr double kAftertouchGaugeLowMm = 0.035 * 25.4;
 inline constexpr double kAftertouchGaugeHighMm = 0.045 * 25.4;
-/// Where an aftertouch (mm) lies against that gauge: "within", "less" or "more".
-inline const char* aftertouch_against_gauge(double aftertouch_mm) {
-  return aftertouch_mm < kAftertouchGaugeLowMm    ? "less"
-         : aftertouch_mm > kAftertouchGaugeHighMm ? "more"
-                                                  : "within";
+/// Where an aftertouch lies against that gauge.
+enum class AgainstGauge { less, within, more };
+inline AgainstGauge aftertouch_against_gauge(double aftertouch_mm) {
+  return aftertouch_mm < kAftertouchGaugeLowMm    ? AgainstGauge::less
+         : aftertouch_mm > kAftertouchGaugeHighMm ? AgainstGauge::more
+                                                  : AgainstGauge::within;
 }
 
 /// Setting `setting` of `model` as a technician reads it (its problem when it cannot be read).

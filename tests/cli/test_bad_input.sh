@@ -246,6 +246,26 @@ cp "$grand" own_preset.json
 mkdir -p sub
 expect_input_kept "--out onto the --action preset (another spelling of its path)" own_preset.json \
   simulate --action own_preset.json --input mass:1kg --duration 0.01 --out ./sub/../own_preset.json
+# --action grand reads the shipped preset: an --out onto it is refused (a copy of the presets,
+# found through PAT_PRESET_DIR, so that a failure here cannot spoil the source tree's)
+mkdir -p shipped
+cp "$source_dir"/presets/*.json shipped/
+PAT_PRESET_DIR="$PWD/shipped" expect_input_kept "--out onto the shipped preset of --action grand" \
+  "$PWD/shipped/grand.json" \
+  simulate --action grand --input mass:1kg --duration 0.01 --out "$PWD/shipped/grand.json"
+if ! grep -qF "the shipped preset of --action grand" stderr.txt; then
+  fail "the shipped preset is not named: $(cat stderr.txt)"
+fi
+# an option's value that only happens to name a file is not an input: a file called 'grand'
+# here is not what --action grand reads, and may be an output
+cases=$((cases + 1))
+printf 'old\n' >grand
+if "$exe" simulate --action grand --input mass:1kg --duration 0.01 --out grand >stdout.txt \
+  2>stderr.txt && grep -q '^time_s' grand; then
+  echo "ok: --out onto a file that only shares --action's value is written"
+else
+  fail "--out grand (a file that is not the preset) was refused: $(cat stderr.txt)"
+fi
 printf '0 1 2\n' >raw_input.txt
 expect_input_kept "import-raw --out onto its raw trace" raw_input.txt \
   import-raw raw_input.txt --rate 2000 --out raw_input.txt

@@ -181,6 +181,17 @@ TEST(Diagnosis, RealStrikeWithItsKeyMotionStrikesWhenTheRealHammerDoes) {
   EXPECT_NEAR(r.baseline.hammer_at(r.baseline.check_t.front()), check->angle_deg, 1.0);
 }
 
+/// A model's hammer trace as a measured file records it: `samples` + 1 samples at 2000 fps.
+MeasuredTrial sampled_at_2000_fps(const ModelTrace& m, const std::string& path, int samples) {
+  MeasuredTrial trial;
+  trial.path = path;
+  for (int i = 0; i <= samples; ++i) {
+    trial.t.push_back(i * 5e-4);
+    trial.hammer_deg.push_back(m.hammer_at(i * 5e-4));
+  }
+  return trial;
+}
+
 TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
   // a model hammer: at rest, a rise from 50 ms (escapement at 78, impact at 80 ms), caught at
   // 90 ms and held while creeping 2 deg/s, thrown up at 100 deg/s from 0.30 s as the key rises,
@@ -208,12 +219,7 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
   m.escapement_t = {0.078};
   m.impact_t = {0.080};
   m.check_t = {0.090};
-  MeasuredTrial trial;
-  trial.path = "phases.csv";
-  for (int i = 0; i <= 1200; ++i) {
-    trial.t.push_back(i * 5e-4);
-    trial.hammer_deg.push_back(m.hammer_at(i * 5e-4));
-  }
+  const MeasuredTrial trial = sampled_at_2000_fps(m, "phases.csv", 1200);
   Alignment al;
   al.residual.assign(trial.t.size(), 0.0);
   const TrialDiscrepancies d = find_discrepancies(trial, m, al, {}, 0.01);
@@ -243,12 +249,7 @@ TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
   const ModelTrace m = simulate_trace(grand, "force:pulse:5:40", 0.2);
   ASSERT_TRUE(m.completed) << m.stop_cause;
   ASSERT_FALSE(m.impact_t.empty());
-  MeasuredTrial trial;
-  trial.path = "own_trace.csv";
-  for (int i = 0; i <= 400; ++i) {
-    trial.t.push_back(i * 5e-4);
-    trial.hammer_deg.push_back(m.hammer_at(i * 5e-4));
-  }
+  const MeasuredTrial trial = sampled_at_2000_fps(m, "own_trace.csv", 400);
   Alignment al;
   al.residual.assign(trial.t.size(), 0.0);
   const double noise_deg = 0.01;

@@ -196,17 +196,18 @@ TEST(PresetErrors, AMisspeltFieldIsNamedNotIgnored) {
   ASSERT_TRUE(preset["bodies"][hammer].contains("friction"));
   preset["bodies"][hammer]["fricton"] = preset["bodies"][hammer]["friction"];
   preset["bodies"][hammer].erase("friction");
-  expect_preset_error(preset, {"bodies", "(hammer)", "fricton", "unknown field", "friction"});
+  expect_preset_error(preset, {"bodies", "(hammer)", "fricton", "not read here", "friction"});
   // the same inside a nested object, and at the top
   json nested = preset_json("grand");
   nested["springs"][0]["preload_n_mn"] = 1.0;
-  expect_preset_error(nested, {"springs[0]", "preload_n_mn", "unknown field"});
+  expect_preset_error(nested, {"springs[0]", "preload_n_mn", "not read here"});
   json top = preset_json("grand");
   top["adjuster"] = json::array();
-  expect_preset_error(top, {"adjuster", "unknown field", "adjusters"});
+  expect_preset_error(top, {"adjuster", "not read here", "adjusters"});
   // what only documents a value is not a field the model reads, and is allowed anywhere read
   json documented = preset_json("grand");
   documented["bodies"][0]["note"] = "weighed on a kitchen scale";
+  documented["contacts"][0]["_comment"] = "the usual JSON comment";
   EXPECT_NO_THROW(parse_action(documented.dump(1), kBrokenName));
 }
 

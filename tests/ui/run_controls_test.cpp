@@ -365,6 +365,9 @@ void RunControlsTest::moving_a_slider_changes_the_running_model() {
   QTest::qWait(300);  // frames computed for the change would have arrived by now
   QCOMPARE(c->display_time(), paused_at);
   QVERIFY(!c->playing());
+  // the frame shown is drawn again with the screw where it now is (nothing had moved on screen)
+  QCOMPARE(c->current_frame().model->adjusters[a].value, 0.83e-3);
+  QCOMPARE(window.view()->frame()->model->adjusters[a].value, 0.83e-3);
   QVERIFY2(window.statusBar()->currentMessage().contains("acts as the run goes on") ||
                window.statusBar()->toolTip().contains("acts as the run goes on"),
            qPrintable(window.statusBar()->currentMessage()));
