@@ -255,17 +255,38 @@ void PlotPanel::fit_values() {
   }
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
   // as many ticks as the plot's size gives room for: their labels must not run together on a
-  // short or narrow plot. A label is a line high and, on the time axis, up to six characters
-  // wide ("0.0035"); the ticker rounds the count to a nice step, which can double it (0–5 ms in
-  // 0.5 ms steps ran ten labels together), hence two labels' room per tick asked for
+  // short or narrow plot. A label is a line high; along x its width follows the step the
+  // ticker will take (0–5 ms in 0.5 ms steps is ten labels "0.0035" wide, which ran together)
   if (height_px > 0.0 && width_px > 0.0) {
     const QFontMetricsF ticks(plot_->xAxis->tickLabelFont());
     plot_->yAxis->ticker()->setTickCount(
         std::clamp(static_cast<int>(height_px / (2.0 * ticks.height())), 2, 6));
-    const double label_px = ticks.horizontalAdvance(QStringLiteral("0.0000")) + 8.0;
-    plot_->xAxis->ticker()->setTickCount(
-        std::clamp(static_cast<int>(width_px / (2.0 * label_px)), 2, 8));
+    plot_->xAxis->ticker()->setTickCount(x_tick_count(width_px, ticks));
   }
+}
+
+int PlotPanel::x_tick_count(double width_px, const QFontMetricsF& ticks) const {
+  const QCPRange range = plot_->xAxis->range();
+  if (categories_ > 0 || !(range.size() > 0.0)) return std::clamp(int(width_px / 60.0), 2, 8);
+  const double digit_px = ticks.horizontalAdvance(QStringLiteral("0"));
+  const double magnitude = std::max(std::abs(range.lower), std::abs(range.upper));
+  const int integer_digits = magnitude >= 1.0 ? int(std::floor(std::log10(magnitude))) + 1 : 1;
+  for (int count = 8; count > 2; --count) {
+    // the step the ticker rounds range/count to (QCPAxisTicker's readability strategy: the
+    // nearest of 1, 2, 2.5, 5 and 10 times a power of ten), and the decimals its labels need
+    const double raw = range.size() / count;
+    const double power = std::pow(10.0, std::floor(std::log10(raw)));
+    double step = power;
+    for (const double mantissa : {2.0, 2.5, 5.0, 10.0})
+      if (std::abs(raw / power - mantissa) < std::abs(raw / power - step / power))
+        step = mantissa * power;
+    const int decimals = std::max(0, int(std::ceil(-std::log10(step) - 1e-9)) +
+                                         (std::abs(step / power - 2.5) < 1e-9 ? 1 : 0));
+    const double label_px = (integer_digits + decimals + (decimals > 0 ? 1 : 0)) * digit_px;
+    const int labels = int(std::floor(range.size() / step)) + 1;
+    if (labels * (label_px + 2.5 * digit_px) <= width_px) return count;  // a gap of 2.5 digits
+  }
+  return 2;
 }
 
 void PlotPanel::fit_all() {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <QColor>
+#include <QFontMetricsF>
 #include <QRect>
 #include <QString>
 #include <QWidget>
@@ -122,6 +123,9 @@ class PlotPanel : public QWidget {
  private:
   /// Sets the title, axis, legend, readout and marker fonts from the widget's font.
   void apply_fonts();
+  /// The most ticks (2–8) whose labels fit `width_px` side by side on the x axis as it stands,
+  /// for the step the ticker rounds to and the digits its labels then have.
+  int x_tick_count(double width_px, const QFontMetricsF& ticks) const;
   /// The panel's minimum height for its fonts and its legend's place (plot_panel.cpp).
   void update_minimum_height();
   /// update_minimum_height() once the event loop is back (from inside a layout or replot).
