@@ -61,13 +61,14 @@ int run_measure(const std::vector<std::string>& args) {
                ".035-.045 in, 0.89-1.14 mm): ";
   if (!aftertouch_problem.empty())
     std::cout << "cannot be read: " << aftertouch_problem << "\n";
-  else
+  else {
+    const AgainstGauge against = aftertouch_against_gauge(aftertouch_mm);
     std::cout << number_in(aftertouch_mm, "mm") << " mm, "
-              << (aftertouch_against_gauge(aftertouch_mm) == AgainstGauge::within ? "within that"
-                  : aftertouch_against_gauge(aftertouch_mm) == AgainstGauge::less
-                      ? "less than that"
-                      : "more than that")
+              << (against == AgainstGauge::within ? "within that"
+                  : against == AgainstGauge::less ? "less than that"
+                                                  : "more than that")
               << "\n";
+  }
   std::cout << (all_within ? "every setting within its tolerance\n"
                            : "not every setting is within its tolerance (regulate adjusts them)\n");
   return 0;

@@ -134,10 +134,8 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
   std::vector<char> failed(variants.size(), 0);            // a variant without a rest state
   std::vector<std::string> rest_problem(variants.size());  // why it has none
   std::vector<std::vector<double>> metrics(variants.size(), std::vector<double>(n_metrics, kNaN));
-  // measured[s][p]: setting s measured on its own variant at −step, 0, +step
-  std::vector<std::array<double, 3>> measured(n_settings, {kNaN, kNaN, kNaN});
-  std::vector<std::array<std::string, 3>> readings_note(n_settings);
-  std::vector<std::array<bool, 3>> readings_failed(n_settings, {false, false, false});
+  // readings[s][p]: setting s read on its own variant at −step, 0, +step
+  std::vector<std::array<SettingReading, 3>> readings(n_settings);
   auto variant_of = [](std::size_t setting, int position) -> std::size_t {
     return position == 1 ? 0 : 1 + 2 * setting + (position == 2 ? 1 : 0);
   };
@@ -181,18 +179,15 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
         const std::size_t k = job - metric_jobs, setting = k / 3;
         const int position = static_cast<int>(k % 3);
         const std::size_t v = variant_of(setting, position);
+        SettingReading& reading = readings[setting][position];
         if (failed[v]) {  // not read: said why
-          readings_note[setting][position] = rest_problem[v];
-          readings_failed[setting][position] = true;
+          reading.measured = kNaN;
+          reading.problem = rest_problem[v];
           return;
         }
         // read as a technician reads it (read_setting: e.g. the let-off with the drop screw out
-        // of the way); one that cannot be read there stays NaN with its reason
-        const SettingReading reading =
-            read_setting(*variants[v], model.regulation[setting], &rests[v]);
-        measured[setting][position] = reading.measured;
-        readings_note[setting][position] = reading.problem.empty() ? reading.note : reading.problem;
-        readings_failed[setting][position] = !reading.problem.empty();
+        // of the way); one that cannot be read there is NaN with its reason
+        reading = read_setting(*variants[v], model.regulation[setting], &rests[v]);
       },
       &reporter);
 
@@ -202,9 +197,9 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
     row.setting = model.regulation[s].name;
     row.unit = model.regulation[s].unit;
     for (int p = 0; p < 3; ++p) {
-      row.measured[p] = measured[s][p];
-      (readings_failed[s][p] ? row.measured_problem[p] : row.measured_note[p]) =
-          readings_note[s][p];
+      row.measured[p] = readings[s][p].measured;
+      row.measured_problem[p] = readings[s][p].problem;
+      row.measured_note[p] = readings[s][p].note;
     }
     row.minus = metrics[variant_of(s, 0)];
     row.plus = metrics[variant_of(s, 2)];
