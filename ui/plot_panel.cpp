@@ -4,6 +4,7 @@
 
 #include <QEvent>
 #include <QFontMetricsF>
+#include <QImage>
 #include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
@@ -439,6 +440,13 @@ void PlotPanel::render(QPaintDevice& device, const std::vector<std::pair<PlotPan
     painter.translate(rect.topLeft());
     panel->rendering_ = true;
     const QString screen_y_label = panel->plot_->yAxis->label();  // the picture fits its own
+    // a first pass, drawn nowhere, lays the plot out at the picture's size, where the legend's
+    // headroom is refitted (the afterLayout handler); the ticks of the pass drawn follow that
+    // range (made for the range before it, they stood above the plot area, into the title's row)
+    QImage nowhere(1, 1, QImage::Format_ARGB32_Premultiplied);
+    QCPPainter layout_pass(&nowhere);
+    panel->plot_->toPainter(&layout_pass, rect.width(), rect.height());
+    layout_pass.end();
     panel->plot_->toPainter(&painter, rect.width(), rect.height());
     panel->plot_->yAxis->setLabel(screen_y_label);
     panel->rendering_ = false;

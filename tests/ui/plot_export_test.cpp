@@ -3,8 +3,10 @@
 // command line's --plot writes.
 #include "plot_export.h"
 
+#include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QFontMetrics>
 #include <QImage>
 #include <QSettings>
 #include <QSignalSpy>
@@ -40,6 +42,7 @@ class PlotExportTest : public QObject {
   void export_dialogs_open_in_the_last_export_folder_or_documents();
   void the_live_plots_span_a_chosen_window_or_the_whole_run();
   void a_legend_under_a_stacked_plot_keeps_its_height();
+  void a_picture_draws_no_value_tick_above_its_plot_area();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -363,6 +366,28 @@ void PlotExportTest::a_legend_under_a_stacked_plot_keeps_its_height() {
   const QRect legend = contacts->legend_rect();
   QVERIFY2(legend.height() >= needed,
            qPrintable(QString("legend %1 px high, needs %2").arg(legend.height()).arg(needed)));
+}
+
+// A picture lays the plot out at its own height, and the legend's headroom is refitted to it:
+// the value axis' ticks must follow that range. They had been made for the range before it, so
+// a 300 px analysis plot showed a tick label and sub-ticks above its plot area, up into the
+// title's row (the touchweight plot's "70" over a range that ended at 67).
+void PlotExportTest::a_picture_draws_no_value_tick_above_its_plot_area() {
+  const QString path = dir_.filePath("short.png");
+  // 800 px wide: drawn at the layout's own scale, so the plot area's rect is in the picture's
+  // pixels
+  pat::ui::export_plots({angles_.get()}, path, QSize(800, 300));
+  const QImage image(path);
+  const QRect area = angles_->plot_area_rect();
+  const int label_height = QFontMetrics(QApplication::font()).height();
+  // left of the plot area and above its top tick label's reach: only white
+  int dark = 0;
+  for (int y = 0; y < area.top() - label_height; ++y)
+    for (int x = 0; x < area.left(); ++x)
+      if (qGray(image.pixel(x, y)) < 160) ++dark;
+  QVERIFY2(dark == 0, qPrintable(QString("%1 dark pixels left of the plot area, above y %2")
+                                     .arg(dark)
+                                     .arg(area.top() - label_height)));
 }
 
 QTEST_MAIN(PlotExportTest)
