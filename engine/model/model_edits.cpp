@@ -52,11 +52,16 @@ ActionModel with_adjuster(const ActionModel& model, const std::string& name, dou
         out.straps[e.index].slack += delta;
         break;
       case AdjusterEffect::Target::StrapPointA:
-        out.straps[e.index].point_a += shift;
+      case AdjusterEffect::Target::StrapPointB: {
+        // the tape keeps its length when the end it hangs on moves (bending the bridle wire): its
+        // rest length is the span between the ends in the drawing configuration plus the slack
+        // (ActionDynamics), so the slack gives what the span gains
+        Strap& strap = out.straps[e.index];
+        const double span_before = (strap.point_a - strap.point_b).norm();
+        (e.target == AdjusterEffect::Target::StrapPointA ? strap.point_a : strap.point_b) += shift;
+        strap.slack -= (strap.point_a - strap.point_b).norm() - span_before;
         break;
-      case AdjusterEffect::Target::StrapPointB:
-        out.straps[e.index].point_b += shift;
-        break;
+      }
     }
   }
   for (Fixture& f : out.fixtures)

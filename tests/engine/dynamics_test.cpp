@@ -13,6 +13,7 @@
 #include "dynamics/action_dynamics.h"
 #include "dynamics/contact_geometry.h"
 #include "integrators/integrator_factory.h"
+#include "model/model_edits.h"
 #include "sim/static_equilibrium.h"
 #include "test_support.h"
 
@@ -185,6 +186,44 @@ TEST(Dynamics, TautStrapActsAsAOneSidedSpringAndConservesEnergyWithoutDamping) {
   // L = L0, crossed twice, costs the W-method its order there; 1e-5 still fails for a wrong
   // stiffness term or a strap energy left out (an error of order 1)
   EXPECT_LT(worst, 1e-5 * 0.5 * inertia * omega0 * omega0);
+}
+
+// Bending the wire a strap hangs on moves the strap's end, not the strap's length: an end moved
+// 2 mm away from the other along the strap stretches it 2 mm (the rest length had been measured
+// again from the moved end, so such an adjuster did nothing).
+TEST(Dynamics, MovingAStrapsEndByItsAdjusterStretchesTheStrap) {
+  ActionModel m = pendulum(false);
+  Strap strap;
+  strap.body_a = -1;
+  strap.point_a = Vec2(0.2, 0.05);
+  strap.body_b = 0;
+  strap.point_b = Vec2(0.2, 0.0);
+  strap.slack = 1e-3;       // m
+  strap.stiffness = 200.0;  // N/m
+  m.straps.push_back(strap);
+  // the tension at rest in the drawing configuration: k × stretch when taut
+  auto tension = [](const ActionModel& model) {
+    ActionDynamics dynamics(model, nullptr);
+    DynamicsReading reading;
+    dynamics.evaluate(0.0, DofVector::Zero(1), DofVector::Zero(1), reading);
+    return reading.strap_tension.at(0);
+  };
+  using Target = AdjusterEffect::Target;
+  for (const Target target : {Target::StrapPointA, Target::StrapPointB}) {
+    ActionModel edited = m;
+    Adjuster wire;
+    wire.name = "wire";
+    AdjusterEffect effect;
+    effect.target = target;
+    effect.index = 0;
+    effect.direction = target == Target::StrapPointA ? Vec2(0.0, 1.0) : Vec2(0.0, -1.0);  // away
+    wire.effects.push_back(effect);
+    edited.adjusters.push_back(wire);
+    EXPECT_EQ(tension(edited), 0.0);  // 1 mm slack
+    // the slack taken up and 1 mm more: 0.2 N (metres rounded: 1e-9 N)
+    EXPECT_NEAR(tension(with_adjuster(edited, "wire", 2e-3)), 0.2, 1e-9);
+    EXPECT_EQ(tension(with_adjuster(edited, "wire", -2e-3)), 0.0);  // 3 mm slack
+  }
 }
 
 TEST(Dynamics, SmallOscillationPeriodMatchesClosedForm) {
