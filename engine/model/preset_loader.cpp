@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -204,6 +205,21 @@ FeltCurve read_curve(const PresetReader& r, const json& object, const std::strin
   return curve;
 }
 
+// The first penetration (m) in (0, max_penetration] where the unloading curve pushes harder
+// than the loading one, if any: such a felt gives back more energy than it takes (the unloading
+// branch of the paper's eq. 3 lies above the loading branch). Sampled every 1/400 of the range,
+// with the exact exponential.
+std::optional<double> unloading_above_loading(const FeltLaw& law, double max_penetration) {
+  auto force = [](const FeltCurve& k, double x) { return k.a * x * std::exp(k.b * x) + k.c * x; };
+  constexpr int kSamples = 400;
+  for (int i = 1; i <= kSamples; ++i) {
+    const double x = max_penetration * i / kSamples;
+    const double loading = force(law.loading, x);
+    if (force(law.unloading, x) > loading + 1e-9 * std::abs(loading)) return x;
+  }
+  return std::nullopt;
+}
+
 FeltLaw read_felt(const PresetReader& r, const json& object, const std::string& path) {
   r.require_source(object, path);
   FeltLaw law;
@@ -318,6 +334,19 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
           r.positive(*f, path + ".friction", "slip_velocity_mm_per_s") * kMm;
     }
     contact.max_penetration = r.positive(item, path, "max_penetration_mm") * kMm;
+    if (const auto x = unloading_above_loading(contact.law, contact.max_penetration)) {
+      auto force = [&](const FeltCurve& k) {
+        return format_fixed(k.a * *x * std::exp(k.b * *x) + k.c * *x, 2) + " N";
+      };
+      r.fail(path + ".felt",
+             (felt.is_string() ? "felt law '" + felt.get<std::string>() + "': its" : "its") +
+                 std::string(" unloading curve pushes harder than its loading curve at ") +
+                 format_fixed(*x / kMm, 2) + " mm (" + force(contact.law.unloading) + " against " +
+                 force(contact.law.loading) + "), within this contact's " +
+                 format_fixed(contact.max_penetration / kMm, 2) +
+                 " mm max_penetration_mm: the felt would give back more energy than it takes "
+                 "(unloading must stay at or below loading)");
+    }
     r.require_source(item, path);
     model.contacts.push_back(contact);
   }

@@ -155,6 +155,24 @@ TEST(PresetErrors, UnknownFeltLaw) {
   expect_preset_error(preset, {"contacts[0]", "felt", "unknown felt law", "velvet"});
 }
 
+// A felt whose unloading curve lies above its loading curve runs its hysteresis loop backwards
+// and gives back more energy than it took: refused, naming the contact, the law and where.
+TEST(PresetErrors, AnUnloadingCurveAboveTheLoadingCurveIsRefused) {
+  json preset = preset_json("grand");
+  const std::string law = preset["contacts"][0]["felt"];
+  json& felt = preset["felts"][law];
+  felt["unloading"] = felt["loading"];
+  for (const char* key : {"a_n_per_mm", "c_n_per_mm"})
+    if (felt["unloading"].contains(key))
+      felt["unloading"][key] = 3.0 * felt["loading"][key].get<double>();
+  expect_preset_error(preset, {"contacts[0]", "felt", law.c_str(), "unloading curve pushes harder",
+                               "max_penetration_mm"});
+  // in a contact's own law, too
+  json own = preset_json("grand");
+  own["contacts"][0]["felt"] = felt;
+  expect_preset_error(own, {"contacts[0]", ").felt: its unloading curve pushes harder"});
+}
+
 TEST(PresetErrors, ClosedEndNamesTheChoicesAndRefusesRoundedCorners) {
   json preset = preset_json("grand");
   preset["contacts"][0]["closed_end"] = "middle";
