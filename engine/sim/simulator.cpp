@@ -37,10 +37,17 @@ std::string beyond_travel_note(const ActionModel& model, const DofVector& rest,
     }
   }
   if (farthest < 0) return "";
+  // a setting far off can throw a part out of the geometry, and so can a step too long for the
+  // blow; with every setting at its regulated place only the second is left to suspect
+  bool regulated = true;
+  for (const Adjuster& adjuster : model.adjusters)
+    if (std::abs(adjuster.value) > 1e-9) regulated = false;  // m: a micrometre's thousandth
   return "; just before, the " + part_name(model, farthest) + " stood " +
          format_number(turn * 180.0 / M_PI) +
          "° from rest, beyond the travel of a working action (the parts have left the geometry "
-         "the model describes: look for a setting far off)";
+         "the model describes: " +
+         (regulated ? std::string("every setting is regulated, so a shorter step may help)")
+                    : std::string("look for a setting far off, or try a shorter step)"));
 }
 
 }  // namespace

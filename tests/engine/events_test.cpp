@@ -1,6 +1,7 @@
 // Simulation events (sim/simulator.h): each is reported once, in time order, among the step's new
 // events; the check is a catch (the backcheck takes a fifth of the returning hammer's speed), not
-// a brush; a catch still being confirmed when the run ends is reported; each stroke escapes once.
+// a brush; a catch still being confirmed when the run ends is reported; each stroke escapes once;
+// a run that blows up says what to suspect.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "model/model_edits.h"
 #include "sim/simulator.h"
 #include "test_support.h"
 
@@ -95,6 +97,30 @@ TEST(Events, EachStrokeEscapesOnce) {
   }
   // 8 Hz over one second, full stroke: eight strokes (the grand strikes twice in some of them)
   EXPECT_EQ(count(test::run(test::shipped("grand"), "motion:sine:8:full", 1.0), "escapement"), 8);
+}
+
+// A 20 N blow with a 0.2 ms step throws the grand's jack 43° and the whippen round its pivot.
+// With every setting regulated the stop says the step may be too long; with a setting turned it
+// names both suspects (it had blamed a setting far off on the regulated action).
+TEST(Stops, ADivergedRunNamesTheStepWhenEverySettingIsRegulated) {
+  auto stop_cause = [](const ActionModel& model) {
+    const RestState rest = find_rest_state(model);
+    const auto input = parse_input_spec("force:pulse:20:30", input_context(model, rest));
+    SimulationOptions options;
+    options.duration_s = 0.15;
+    options.integrator_options.fixed_step_s = 2e-4;
+    const SimulationResult r = simulate(model, input.get(), options, &rest);
+    EXPECT_EQ(r.status, "stopped");
+    return r.stop_cause;
+  };
+  const ActionModel grand = test::shipped("grand");
+  const std::string regulated = stop_cause(grand);
+  EXPECT_NE(regulated.find("every setting is regulated, so a shorter step may help"),
+            std::string::npos)
+      << regulated;
+  const std::string turned = stop_cause(with_adjuster(grand, "let_off", 1e-3));
+  EXPECT_NE(turned.find("look for a setting far off, or try a shorter step"), std::string::npos)
+      << turned;
 }
 
 }  // namespace
