@@ -251,14 +251,17 @@ void ActionDynamics::arm_cull(std::size_t c, const DofVector& q, const Vec2& cen
 void ActionDynamics::contact_penetrations(const DofVector& q, std::vector<double>& penetration) {
   update_positions(q);
   penetration.resize(contacts_.size());
-  for (std::size_t c = 0; c < contacts_.size(); ++c) {
-    if (!exact_[c]) {
-      Vec2 center_a;
-      distances_[c] = contact_distance(contacts_[c], center_a);
-      exact_[c] = 1;
-    }
-    penetration[c] = distances_[c].penetration;
+  for (std::size_t c = 0; c < contacts_.size(); ++c) penetration[c] = contact_penetration(c, q);
+}
+
+double ActionDynamics::contact_penetration(std::size_t c, const DofVector& q) {
+  update_positions(q);
+  if (!exact_[c]) {
+    Vec2 center_a;
+    distances_[c] = contact_distance(contacts_[c], center_a);
+    exact_[c] = 1;
   }
+  return distances_[c].penetration;
 }
 
 void ActionDynamics::contact_penetration_bounds(const DofVector& q,

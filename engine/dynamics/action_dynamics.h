@@ -90,6 +90,9 @@ class ActionDynamics : public OdeSystem {
   /// bound of its penetration instead (negative, m). Enough for what needs the signs only (events,
   /// the unphysical-penetration check), and cheaper.
   void contact_penetration_bounds(const DofVector& q, std::vector<double>& penetration);
+  /// Contact c's signed penetration at q (m), exact even where contact_penetration_bounds gives
+  /// a bound: for the one contact whose distance near zero matters (the key's bottom).
+  double contact_penetration(std::size_t c, const DofVector& q);
   /// Whether contact c's circle lies behind the line of B's face (m·(p − s0) < 0) beyond one of
   /// the face's closed ends (t* < 0 with closed_start, t* > 1 with closed_end), at q. A circle
   /// pressed into the face that ends up there has gone round an end that A's body cannot pass

@@ -136,6 +136,8 @@ class Simulator {
   void release_held_events();
   bool marks_check_closed() const;
   double last_key_bottom_ = -1.0;
+  bool key_was_at_bottom_ = false;  // within kKeyBottomReach of the punching at the last step
+  bool key_at_bottom(const std::vector<double>& penetration);
   double last_letoff_active_ = -1.0;
   // the jack has stood under the knuckle (butt) with its toe off the let-off button since the
   // last escapement: one escapement per stroke, not one each time the checked hammer's knuckle
