@@ -145,7 +145,7 @@ AnalysisEntry impact_velocity_range() {
             SimulationOptions options;
             options.duration_s = 0.6;  // a 2 N touch reaches the string in about 0.3 s
             options.sample_interval_s = 0.0;
-            options.on_step = [&reporter](double) { return !reporter.cancelled(); };
+            options.on_step = [&reporter](double) { return reporter.still_wanted(); };
             const SimulationResult r = simulate(*model, input.get(), options, &rest);
             for (const SimEvent& ev : r.events)
               if (ev.type == "impact") {

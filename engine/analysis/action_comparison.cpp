@@ -62,7 +62,7 @@ ComparisonResult compare_actions(const std::vector<const ActionModel*>& models,
   const std::size_t per_action = o.repetition_limits ? 3 : 1;
   ProgressReporter reporter(progress, models.size() * per_action);
   const ProgressCallback keep_going = [&](double, const std::string&) {
-    return !reporter.cancelled();
+    return reporter.still_wanted();
   };
   run_parallel(
       models.size() * per_action,
@@ -77,7 +77,7 @@ ComparisonResult compare_actions(const std::vector<const ActionModel*>& models,
           options.integrator_options.fixed_step_s = o.sweep.step_s;
           options.duration_s = o.duration_s;
           options.sample_interval_s = o.sample_interval_s;
-          options.on_step = [&](double) { return !reporter.cancelled(); };
+          options.on_step = [&](double) { return reporter.still_wanted(); };
           out.run = simulate(model, input.get(), options, &rests[a]);
           for (const SimEvent& e : out.run.events) {
             if (e.type != "impact") continue;

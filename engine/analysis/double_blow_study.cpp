@@ -68,7 +68,7 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
             parse_input_spec(second_run ? twice : single, input_context(model, rest));
         SimulationOptions sim;
         sim.duration_s = options.duration_s;
-        sim.on_step = [&reporter](double) { return !reporter.cancelled(); };
+        sim.on_step = [&reporter](double) { return reporter.still_wanted(); };
         SimulationResult run = simulate(model, input.get(), sim, &rest);
         if (reporter.cancelled()) return;
         DoubleBlowVariant& out = study.variants[v];

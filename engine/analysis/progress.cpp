@@ -1,6 +1,7 @@
 #include "analysis/progress.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace pat {
 
@@ -18,7 +19,27 @@ void ProgressReporter::item_done(const std::string& stage) {
 
 void ProgressReporter::report(double fraction, const std::string& stage) {
   // called with mutex_ held: the callback sees reports one at a time and in order
+  last_fraction_ = fraction;
+  last_stage_ = stage;
   if (callback_ && !cancelled_.load() && !callback_(fraction, stage)) cancelled_.store(true);
+}
+
+bool ProgressReporter::still_wanted() {
+  if (cancelled_.load(std::memory_order_relaxed)) return false;
+  if (!callback_ || calls_since_poll_.fetch_add(1, std::memory_order_relaxed) + 1 < kPollEvery)
+    return true;
+  calls_since_poll_.store(0, std::memory_order_relaxed);
+  const long long now_ms = std::chrono::duration_cast<std::chrono::milliseconds>(
+                               std::chrono::steady_clock::now().time_since_epoch())
+                               .count();
+  long long last_ms = last_poll_ms_.load(std::memory_order_relaxed);
+  // one thread asks; the others go on until the answer
+  if (now_ms - last_ms < kPollIntervalMs ||
+      !last_poll_ms_.compare_exchange_strong(last_ms, now_ms, std::memory_order_relaxed))
+    return true;
+  std::lock_guard<std::mutex> lock(mutex_);
+  report(last_fraction_, last_stage_);
+  return !cancelled_.load();
 }
 
 }  // namespace pat

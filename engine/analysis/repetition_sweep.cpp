@@ -468,7 +468,7 @@ void run_steps(const ActionModel& model, const RestState& rest, const SweepOptio
         const double origin = o.stroke == Stroke::half ? 0.5 / f : 0.0;
         const double duration = origin + cycles / f + kTailS;
         SimulationOptions options = simulation_options(o, duration);
-        options.on_step = [&](double) { return !reporter.cancelled(); };
+        options.on_step = [&](double) { return reporter.still_wanted(); };
         const SimulationResult run = simulate(model, input.get(), options, &rest);
         FrequencyResult& out = results[i];
         out.frequency_hz = f;
