@@ -59,6 +59,14 @@
 #include "status_fit.h"
 
 namespace pat::ui {
+namespace {
+
+// the same action, adjusters and removed parts aside: its kind from the same file (or shipped)
+bool same_action(const ActionModel& a, const ActionModel& b) {
+  return a.kind == b.kind && a.source_file == b.source_file;
+}
+
+}  // namespace
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   setWindowTitle(tr("Piano Action Trainer"));
@@ -248,10 +256,19 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     else
       regulate_automatically();
   });
-  connect(regulation_runner_, &RegulationRunner::stepDone, regulation_, &RegulationPanel::log);
+  connect(regulation_runner_, &RegulationRunner::stepDone, this, [this](const QString& line) {
+    if (model_ && regulation_model_ && same_action(*regulation_model_, *model_))
+      regulation_->log(line);  // not into the log of an action opened meanwhile
+  });
   connect(regulation_runner_, &RegulationRunner::finished, this,
           [this](std::shared_ptr<const ActionModel> model, bool converged, const QString& msg) {
             regulate_button_->setText(tr("Regulate automatically"));
+            if (!model_ || !same_action(*model, *model_)) {  // another action opened meanwhile
+              statusBar()->showMessage(
+                  tr("The regulation of the %1 was dropped: another action was opened.")
+                      .arg(QString::fromStdString(model->name)));
+              return;
+            }
             regulation_->log(converged ? tr("Regulated: %1.").arg(msg)
                                        : tr("Not regulated: %1.").arg(msg));
             regulation_->show_adjusters(*model);
@@ -313,6 +330,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
           [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
             progress_->hide();
             deregulate_button_->setText(tr("Deregulation demo"));
+            if (!model_ || !demo_model_ || !same_action(*demo_model_, *model_)) {
+              statusBar()->showMessage(
+                  tr("The deregulation demo of the %1 was dropped: another action was opened.")
+                      .arg(QString::fromStdString(demo_model_ ? demo_model_->name : "")));
+              return;
+            }
             const std::string& id = demo_setting_;  // as the demo ran, whatever is chosen now
             const int index = model_ ? model_->setting_index(id) : -1;
             const std::string unit = index >= 0 ? model_->regulation[index].unit : "mm";
@@ -666,7 +689,7 @@ void MainWindow::show_practice(bool on) {
 }
 
 void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {
-  if (model_ && model_->kind == model->kind && model_->source_file == model->source_file) {
+  if (model_ && same_action(*model_, *model)) {
     change_model(std::move(model));
     return;
   }
@@ -699,6 +722,9 @@ void MainWindow::open_action(const std::string& name_or_path) {
   if (practice_took_over_ && !practising_) give_back_class_input();
   action_name_ = name_or_path;
   model_ = model;
+  // a regulation or demo of the action before ends (its result is dropped when it comes)
+  regulation_runner_->cancel();
+  deregulation_runner_->cancel();
   grand_action_->setChecked(model->kind == "grand");
   upright_action_->setChecked(model->kind == "upright");
   regulation_->set_model(*model);
@@ -913,6 +939,7 @@ void MainWindow::regulate_automatically() {
   regulation_->log(tr("Regulating %1 from the current adjuster positions…")
                        .arg(QString::fromStdString(model_->name)));
   regulate_button_->setText(tr("Cancel regulation"));
+  regulation_model_ = model_;
   regulation_runner_->start(model_);
 }
 
@@ -936,6 +963,7 @@ void MainWindow::run_deregulation_demo() {
   progress_->setValue(0);
   progress_->show();
   deregulate_button_->setText(tr("Cancel the deregulation demo"));
+  demo_model_ = model_;
   deregulation_runner_->start(model_, options);
 }
 

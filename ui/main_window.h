@@ -225,6 +225,8 @@ class MainWindow : public QMainWindow {
   QString running_input_shown_;        ///< what the status line names for the frames being played
   bool setting_waits_ = false;         ///< a setting changed while paused in a run, not yet played
   std::string demo_setting_;  ///< the setting the running (or last) deregulation demo moves
+  std::shared_ptr<const ActionModel> demo_model_;        ///< the action the demo runs on
+  std::shared_ptr<const ActionModel> regulation_model_;  ///< the action being regulated
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

@@ -92,6 +92,7 @@ class PlotPanel : public QWidget {
   QRect plot_area_rect() const;
 
   void set_cursors_enabled(bool enabled);
+  bool cursors_enabled() const { return cursors_enabled_; }
   /// Places cursor 0 (A) or 1 (B) at time t.
   void set_cursor(int which, double t);
   std::optional<double> cursor(int which) const;

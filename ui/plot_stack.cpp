@@ -90,6 +90,10 @@ void PlotStack::set_model(const ActionModel& model) {
           [this, panel = contacts_](double lo, double hi) { sync_time_range(panel, lo, hi); });
   contacts_->set_minimum_value_span(kMinimumForceSpanN);
   contacts_->set_time_mark(marked_t_);
+  // as the plots beside it: their time span and the cursors on or off (View > Plot cursors)
+  const auto [lo, hi] = angles_->x_range();
+  contacts_->set_x_range(lo, hi);
+  contacts_->set_cursors_enabled(angles_->cursors_enabled());
   plotted_contacts_ = wanted;
   int colour = 0;
   for (int c : wanted) {
@@ -119,8 +123,10 @@ void PlotStack::clear() {
 void PlotStack::append(const std::vector<Frame>& frames) {
   if (frames.empty()) return;
   for (const Frame& f : frames) {
-    angles_->append(0, f.t, f.angle_deg[key_body_]);
-    angles_->append(1, f.t, f.angle_deg[hammer_body_]);
+    // a frame of another action (more bodies) is never handed here; fewer would read past it
+    const int bodies = static_cast<int>(f.angle_deg.size());
+    if (key_body_ < bodies) angles_->append(0, f.t, f.angle_deg[key_body_]);
+    if (hammer_body_ < bodies) angles_->append(1, f.t, f.angle_deg[hammer_body_]);
     gap_->append(0, f.t, f.hammer_string_gap_mm);
     finger_->append(0, f.t, f.finger_force_n);
     for (std::size_t s = 0; s < plotted_contacts_.size(); ++s) {

@@ -43,6 +43,7 @@ class RegulationPanelTest : public QObject {
   void reset_to_regulated();
   void regulate_automatically_shows_steps_and_can_be_cancelled();
   void deregulation_demo_can_be_cancelled_and_replays();
+  void a_result_for_the_action_before_is_dropped();
   void deregulation_demo_shows_the_blow_shrinking();
   void deregulation_demo_rate_follows_the_setting();
   void saved_state_loads_back();
@@ -213,6 +214,38 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
            qPrintable(window.analyses()->description()));
   window.start("");  // back to a live run
   QVERIFY(!window.controller()->replaying());
+}
+
+// Another action opened while a regulation or a demo runs: the result, when it comes, is the
+// action before's and is dropped (the upright's panel had shown the grand's regulated hammer
+// blow, 45 mm against its 46 mm target, and the demo replayed the grand's frames under the
+// upright's legends).
+void RegulationPanelTest::a_result_for_the_action_before_is_dropped() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.set_adjuster("hammer_blow", 1.0);
+  QSignalSpy regulated(window.regulation_runner(), &pat::ui::RegulationRunner::finished);
+  window.regulate_automatically();
+  QVERIFY(window.regulation_runner()->running());
+  window.open_action("upright");
+  QVERIFY(wait_until([&] { return regulated.count() == 1; }, 120000));
+  QCOMPARE(window.model()->kind, std::string("upright"));
+  QVERIFY2(window.statusBar()->currentMessage().contains("dropped"),
+           qPrintable(window.statusBar()->currentMessage()));
+  QCOMPARE(window.regulation()->row("hammer_blow")->value_mm(), 0.0);  // the upright's own
+  QVERIFY(!window.regulation()->log_text().contains("egulated"));
+
+  QSignalSpy demo_done(window.deregulation_runner(), &pat::ui::DeregulationRunner::finished);
+  window.open_action("grand");
+  window.run_deregulation_demo();
+  QVERIFY(window.deregulation_runner()->running());
+  window.open_action("upright");
+  QVERIFY(wait_until([&] { return demo_done.count() == 1; }, 120000));
+  QCOMPARE(window.model()->kind, std::string("upright"));
+  QVERIFY(!window.controller()->replaying());
+  QVERIFY2(window.statusBar()->currentMessage().contains("deregulation demo"),
+           qPrintable(window.statusBar()->currentMessage()));
 }
 
 // Fact F7 in the window: the hammer blow screw turned at 1 mm/s while the key plays; the demo
