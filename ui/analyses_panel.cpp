@@ -465,6 +465,7 @@ void AnalysesPanel::clear_result() {
     page->deleteLater();
   }
   plots_.clear();
+  ++result_serial_;
   grids_.clear();
   result_ = AnalysisResult{};
   result_title_.clear();

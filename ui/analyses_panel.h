@@ -55,6 +55,8 @@ class AnalysesPanel : public QWidget {
   QString description() const;
   QTableWidget* table() const { return table_; }
   std::vector<PlotPanel*> plots() const { return plots_; }
+  /// Changes whenever the result shown is cleared or replaced (its plots deleted).
+  int result_serial() const { return result_serial_; }
   /// The tables of the result that have their own columns (ranking, cycles), one tab each.
   std::vector<QTableWidget*> grids() const { return grids_; }
 
@@ -132,6 +134,7 @@ class AnalysesPanel : public QWidget {
   QVariantMap remembered_;
   QString form_kind_;  ///< the kind of action the form was built for
   std::vector<PlotPanel*> plots_;
+  int result_serial_ = 0;
   std::vector<QTableWidget*> grids_;
   AnalysisResult result_;
   QString result_title_;

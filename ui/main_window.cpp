@@ -122,7 +122,9 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   dock->raise();
   connect(analyses_, &AnalysesPanel::exportRequested, this,
           [this](const std::vector<PlotPanel*>& plots, const QString& what) {
-            export_from_menu(plots, what, false);
+            const int result = analyses_->result_serial();
+            export_from_menu(plots, what, false,
+                             [this, result] { return analyses_->result_serial() == result; });
           });
 
   connect(controller_, &PlaybackController::frameShown, view_, &ActionView::show_frame);
@@ -1102,11 +1104,15 @@ void MainWindow::open_preset_from_menu() {
   }
 }
 
-void MainWindow::export_from_menu(const std::vector<PlotPanel*>& plots, const QString& what,
-                                  bool run_plots) {
+void MainWindow::export_from_menu(std::vector<PlotPanel*> plots, QString what, bool run_plots,
+                                  const std::function<bool()>& still_shown) {
+  // copies: the plots and title asked for, not whatever they refer to once the dialog is closed
   export_to_chosen_file(
       what, tr("PNG image (*.png);;PDF (*.pdf);;SVG (*.svg);;CSV of the visible range (*.csv)"),
       run_plots, [&](const QString& path) {
+        if (still_shown && !still_shown())
+          throw InputError(path.toStdString() + ": not written: another result replaced " +
+                           what.toStdString() + " while the file was chosen; export again");
         export_plots(plots, path, export_size_, export_metadata(run_plots));
       });
 }

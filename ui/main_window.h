@@ -136,8 +136,10 @@ class MainWindow : public QMainWindow {
   /// while the file is chosen, and a CSV names the input), not an analysis result's.
   AnimationOptions animation_options() const;
   void export_animation_from_menu();
-  void export_from_menu(const std::vector<class PlotPanel*>& plots, const QString& what,
-                        bool run_plots);
+  /// With `still_shown`, the plots are written only if it still says yes once the file is chosen
+  /// (the dialog runs the event loop, in which an analysis may replace, and delete, its plots).
+  void export_from_menu(std::vector<class PlotPanel*> plots, QString what, bool run_plots,
+                        const std::function<bool()>& still_shown = {});
   /// Asks for a file (filter `filter`; the run paused meanwhile when `pause_run`), writes it
   /// with `write`, and says where, or in a dialog why not; `what` names it in both.
   void export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,

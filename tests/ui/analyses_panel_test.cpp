@@ -4,9 +4,14 @@
 // passes failures on as messages.
 #include "analyses_panel.h"
 
+#include <QApplication>
 #include <QComboBox>
 #include <QFile>
+#include <QFileDialog>
 #include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -35,6 +40,7 @@ class AnalysesPanelTest : public QObject {
   void cancel_from_the_panel_keeps_the_window_live();
   void table_exports_as_csv();
   void long_names_and_summaries_leave_the_values_and_plots_readable();
+  void plots_replaced_while_the_file_is_chosen_are_not_written();
 };
 
 void AnalysesPanelTest::runner_reports_progress_and_result() {
@@ -229,6 +235,55 @@ void AnalysesPanelTest::long_names_and_summaries_leave_the_values_and_plots_read
   QVERIFY(summary);
   QVERIFY(summary->parentWidget()->height() <= 6 * summary->fontMetrics().lineSpacing() + 2);
   QVERIFY(panel.plots().front()->height() >= 150);
+}
+
+// The file dialog of "Export plots…" runs the event loop: a result arriving meanwhile replaces
+// (and deletes) the plots asked for. Nothing is written then, and a message says why (the other
+// result's plots had been written under the first one's file name and title).
+void AnalysesPanelTest::plots_replaced_while_the_file_is_chosen_are_not_written() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  pat::ui::AnalysesPanel* panel = window.analyses();
+  auto result_titled = [](const QString& title) {
+    AnalysisResult r;
+    r.summary = title;
+    pat::ui::AnalysisPlot plot{title, "time (s)", "time_s", "s", "angle (deg)", {}, {}, {}, {}};
+    plot.series.push_back({"hammer", "hammer_angle_deg", {0.0, 0.1}, {0.0, 1.0}});
+    r.plots.push_back(plot);
+    return r;
+  };
+  panel->show_result("Key fall", result_titled("Key fall"));
+  QTemporaryDir dir;
+  const QString path = dir.filePath("keyfall.png");
+  QString warning;
+  bool replaced = false;
+  QTimer driver;  // plays the user at the dialogs: another result comes, then the file is chosen
+  connect(&driver, &QTimer::timeout, this, [&] {
+    QWidget* modal = QApplication::activeModalWidget();
+    if (auto* dialog = qobject_cast<QFileDialog*>(modal); dialog && !replaced) {
+      panel->show_result("Deregulation", result_titled("Deregulation"));
+      replaced = true;
+      QTest::qWait(50);  // the old plots' deferred deletion
+      auto* name = dialog->findChild<QLineEdit*>("fileNameEdit");
+      QVERIFY(name);
+      name->setText(path);
+      QTest::keyClick(name, Qt::Key_Return);
+    } else if (auto* box = qobject_cast<QMessageBox*>(modal)) {
+      warning = box->text();
+      box->accept();
+    }
+  });
+  driver.start(20);
+  QPushButton* export_button = nullptr;
+  for (QPushButton* b : panel->findChildren<QPushButton*>())
+    if (b->text().startsWith("Export plots")) export_button = b;
+  QVERIFY(export_button && export_button->isEnabled());
+  export_button->click();  // returns once the dialog and the message are closed
+  driver.stop();
+  QVERIFY(replaced);
+  QVERIFY2(!QFile::exists(path), "the replaced plots were written");
+  QVERIFY2(warning.contains("another result replaced Key fall"), qPrintable(warning));
 }
 
 QTEST_MAIN(AnalysesPanelTest)
