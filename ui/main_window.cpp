@@ -1249,7 +1249,9 @@ void MainWindow::closeEvent(QCloseEvent* event) {
   settings.setValue("window/geometry", saveGeometry());
   settings.setValue("window/state", saveState());
   settings.setValue("export/size", export_size_);
-  settings.setValue("run/speed_index", run_controls_->speed_index());
+  // the class's speed, not one a practice test took over (a forte blow shown at 1/100)
+  settings.setValue("run/speed_index",
+                    practice_took_over_ ? speed_before_practice_ : run_controls_->speed_index());
   QMainWindow::closeEvent(event);
 }
 

@@ -16,6 +16,7 @@
 #include <QPushButton>
 #include <QScopeGuard>
 #include <QScrollArea>
+#include <QSettings>
 #include <QShortcut>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -58,6 +59,7 @@ class PracticePanelTest : public QObject {
   void correction_sliders_say_which_way_is_which();
   void a_result_left_behind_by_a_new_exercise_is_dropped();
   void the_report_files_take_the_name_chosen();
+  void closing_while_a_test_took_the_speed_saves_the_class_speed();
 };
 
 // The save dialog's name, typed with either of the report's extensions or none, gives NAME.pdf
@@ -430,6 +432,20 @@ void start_shown_exercise(MainWindow& window, int seed) {
   window.show();
   window.show_practice(true);
   window.practice()->start_seed("grand", static_cast<std::uint64_t>(seed), 1);
+}
+
+// A practice test shown to the class takes the speed over (a forte blow at 1/100); the window
+// closed meanwhile saves the class's own speed, not that one (every later start had opened at
+// 1/100).
+void PracticePanelTest::closing_while_a_test_took_the_speed_saves_the_class_speed() {
+  MainWindow window;
+  const int class_speed = 0;  // real time
+  window.run_controls()->set_speed_index(class_speed);
+  start_shown_exercise(window, 3);
+  window.practice()->run_test(pat::PracticeTest::ForteBlow);
+  QVERIFY(wait_until([&] { return window.run_controls()->speed_index() != class_speed; }));
+  window.close();
+  QCOMPARE(QSettings().value("run/speed_index").toInt(), class_speed);
 }
 
 void PracticePanelTest::larger_text_widens_the_practice_form() {
