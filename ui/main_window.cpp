@@ -859,7 +859,12 @@ void MainWindow::show_run_status() {
     input = controller_->replaying() ? running_input_ : controller_->input_at(t);
     const QString paused_at = tr("Paused at t = %1 ms").arg(t * 1e3, 0, 'f', 2);
     if (controller_->run_stopped()) {
-      state = tr("Stopped at t = %1 ms").arg(controller_->display_time() * 1e3, 0, 'f', 2);
+      // where the run stopped (its last frame), and the frame shown when stepped back from it
+      const double stopped_t =
+          controller_->history().empty() ? t : controller_->history().last_time();
+      state = tr("Stopped at t = %1 ms").arg(stopped_t * 1e3, 0, 'f', 2);
+      if (std::abs(t - stopped_t) > 1e-9)
+        state += tr(", showing t = %1 ms").arg(t * 1e3, 0, 'f', 2);
       hint = tr("see the message above the action; Start from rest runs again");
     } else if (t <= 0.0 && !controller_->replaying() && controller_->at_start()) {
       // the first frame of a run not yet played (the window's launch, an action opened)

@@ -401,6 +401,14 @@ void RunControlsTest::a_diverging_run_pauses_and_shows_its_cause() {
   QVERIFY(window.banner_text().contains("unphysical penetration"));
   c->play();  // a stopped run does not resume
   QVERIFY(!c->playing());
+  // stepped back to its start, the status still says where it stopped, and what it shows
+  const double stopped_ms = c->history().last_time() * 1e3;
+  QVERIFY(stopped_ms > 5.0);
+  c->rewind();
+  const QString status = window.statusBar()->currentMessage();
+  QVERIFY2(status.startsWith(
+               QString("Stopped at t = %1 ms, showing t = 0.00 ms").arg(stopped_ms, 0, 'f', 2)),
+           qPrintable(status));
   window.start("");  // a new run clears the message
   QVERIFY(window.banner_text().isEmpty());
 }
