@@ -39,6 +39,7 @@
 #include "deregulation_runner.h"
 #include "export_folder.h"
 #include "export_size_dialog.h"
+#include "focused_input_keys.h"
 #include "input_spec_form.h"
 #include "inputs/key_input.h"
 #include "measurement_service.h"
@@ -568,6 +569,8 @@ void MainWindow::fit_regulation_dock(bool within_screen, int width_before) {
 }
 
 void MainWindow::build_shortcuts() {
+  // a focused combo box, field, list or slider keeps the keys it uses (focused_input_keys.h)
+  qApp->installEventFilter(new FocusedInputKeys(this));
   auto shortcut = [this](const QKeySequence& keys, auto slot) {
     auto* s = new QShortcut(keys, this);
     connect(s, &QShortcut::activated, this, slot);

@@ -5,6 +5,8 @@
 #include "run_controls.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
@@ -53,6 +55,7 @@ class RunControlsTest : public QObject {
   void the_regulation_dock_shows_every_column();
   void switching_actions_rebuilds_panel_and_view();
   void the_run_trace_export_holds_every_column();
+  void a_focused_input_keeps_its_keys_and_the_view_strikes();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -619,6 +622,29 @@ void RunControlsTest::the_run_trace_export_holds_every_column() {
   const QString none = dir.filePath("none.csv");
   QVERIFY_THROWS_EXCEPTION(pat::InputError, empty.export_run_trace(none.toStdString()));
   QVERIFY(!QFile::exists(none));
+}
+
+// Space strikes a blow and P plays, window-wide; but a focused combo box keeps Space (it opens)
+// and a typed letter, and a list its arrows: the class's keys are not lost to the run. With the
+// action view focused, Space strikes (the combo box had struck a blow instead of opening).
+void RunControlsTest::a_focused_input_keeps_its_keys_and_the_view_strikes() {
+  MainWindow window;
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  window.open_action("grand");
+  window.start("");
+  PlaybackController* c = window.controller();
+  QVERIFY(wait_until([&] { return c->display_time() > 0.002; }));
+  const QString before = c->inputs_text();
+  QComboBox* combo = window.run_controls()->findChild<QComboBox*>();
+  QVERIFY(combo);
+  combo->setFocus();
+  QTest::keyClick(combo, Qt::Key_Space);
+  QCOMPARE(c->inputs_text(), before);  // no blow struck
+  if (QWidget* popup = QApplication::activePopupWidget()) popup->close();
+  window.view()->setFocus();
+  QTest::keyClick(window.view(), Qt::Key_Space);
+  QVERIFY2(c->inputs_text() != before, qPrintable(c->inputs_text()));  // struck
 }
 
 QTEST_MAIN(RunControlsTest)
