@@ -58,9 +58,7 @@ void PlaybackController::restart(std::shared_ptr<const ActionModel> model,
   key_played_ = false;
   inputs_.clear();
   note_input(0.0, input_in_words(input_spec), input_spec);
-  const RunSetup setup{model_, input_spec, run_id_};
-  QMetaObject::invokeMethod(
-      worker_, [w = worker_, setup] { w->start_run(setup); }, Qt::QueuedConnection);
+  worker_->request_run(RunSetup{model_, input_spec, run_id_});
   emit runRestarted();
 }
 

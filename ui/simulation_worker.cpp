@@ -73,18 +73,40 @@ void SimulationWorker::schedule_compute() {
   QMetaObject::invokeMethod(this, &SimulationWorker::compute, Qt::QueuedConnection);
 }
 
-void SimulationWorker::start_run(const RunSetup& setup) {
-  run_id_ = setup.run_id;
-  sim_.reset();
-  live_key_.reset();
-  unreported_events_.clear();
+void SimulationWorker::request_run(const RunSetup& setup) {
   {
     std::lock_guard lock(pending_mutex_);
+    pending_run_ = setup;
+    // a blow, key move or model asked for before belonged to the run being replaced
     pending_model_.reset();
     pending_blow_.clear();
     pending_key_ = false;
     has_pending_.store(false);
   }
+  if (!run_requested_.exchange(true))
+    QMetaObject::invokeMethod(
+        this, [this] { start_requested_run(); }, Qt::QueuedConnection);
+}
+
+void SimulationWorker::start_requested_run() {
+  RunSetup setup;
+  {
+    std::lock_guard lock(pending_mutex_);
+    if (!pending_run_) return;
+    setup = std::move(*pending_run_);
+    pending_run_.reset();
+    run_requested_.store(false);
+  }
+  start_run(setup);
+  // what was asked for since (a blow struck as the run started) acts on it
+  if (has_pending_.load()) schedule_compute();
+}
+
+void SimulationWorker::start_run(const RunSetup& setup) {
+  run_id_ = setup.run_id;
+  sim_.reset();
+  live_key_.reset();
+  unreported_events_.clear();
   QString notes;
   try {
     SimulationOptions options;
@@ -113,6 +135,8 @@ void SimulationWorker::start_run(const RunSetup& setup) {
 
 void SimulationWorker::compute() {
   compute_scheduled_.store(false);
+  // a new run is on its way: what is pending is for it, not for the run it replaces
+  if (run_requested_.load()) return;
   if (!sim_ || sim_->stopped()) return;
   // a state computed past the last frame with no frame for it yet (the run went ahead at a
   // faster speed's wider frame spacing): recorded now, or a slower playback, asking for less than

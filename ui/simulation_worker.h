@@ -10,6 +10,7 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "frame.h"
@@ -43,6 +44,12 @@ class SimulationWorker : public QObject {
   /// transition to each new target lasts `transition_s` of simulated time.
   void request_key_angle(double angle_rad, double transition_s);
 
+  /// A new run wanted (any thread): the worker builds the latest one asked for when it gets to
+  /// it, so that a slider dragged at rest (a restart at every move, each finding its rest state)
+  /// does not leave a queue of runs to build. Requests made before it are dropped (they were the
+  /// old run's); those made after it wait for the new run.
+  void request_run(const RunSetup& setup);
+
   /// Takes the recorded frames (oldest first).
   std::vector<Frame> take_frames();
 
@@ -64,6 +71,7 @@ class SimulationWorker : public QObject {
 
  private:
   void schedule_compute();
+  void start_requested_run();
   void apply_pending();
   void record_frame();
   /// The run is a frame spacing (at the current playback speed) past its last frame.
@@ -83,6 +91,8 @@ class SimulationWorker : public QObject {
   std::atomic<bool> has_pending_{false};
 
   std::mutex pending_mutex_;
+  std::optional<RunSetup> pending_run_;  // the latest run asked for, not yet built
+  std::atomic<bool> run_requested_{false};
   std::shared_ptr<const ActionModel> pending_model_;
   std::string pending_blow_;
   bool pending_key_ = false;

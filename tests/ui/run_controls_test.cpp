@@ -10,12 +10,14 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
 #include <QStatusTipEvent>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 #include <QTimer>
 #include <algorithm>
 #include <cmath>
@@ -27,11 +29,13 @@
 #include "io/csv.h"
 #include "main_window.h"
 #include "measured/measured_data.h"
+#include "model/preset_loader.h"
 #include "playback_controller.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
 #include "regulation_panel.h"
 #include "sim/simulation.h"
+#include "simulation_worker.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
@@ -56,6 +60,7 @@ class RunControlsTest : public QObject {
   void switching_actions_rebuilds_panel_and_view();
   void the_run_trace_export_holds_every_column();
   void a_focused_input_keeps_its_keys_and_the_view_strikes();
+  void the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -645,6 +650,41 @@ void RunControlsTest::a_focused_input_keeps_its_keys_and_the_view_strikes() {
   window.view()->setFocus();
   QTest::keyClick(window.view(), Qt::Key_Space);
   QVERIFY2(c->inputs_text() != before, qPrintable(c->inputs_text()));  // struck
+}
+
+// A slider dragged at rest restarts the run at every move: the worker builds only the latest
+// run asked for (it had built all of them, each finding its rest state, and was still busy 3 s
+// after a drag). A blow struck just after a restart acts on the new run (the run's start had
+// dropped it while the status line said it was struck).
+void RunControlsTest::the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after() {
+  pat::ui::SimulationWorker worker;
+  QThread thread;
+  worker.moveToThread(&thread);
+  thread.start();
+  auto stop_thread = qScopeGuard([&] {
+    thread.quit();
+    thread.wait();
+  });
+  QSignalSpy started(&worker, &pat::ui::SimulationWorker::runStarted);
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  constexpr int kRequests = 20;
+  for (int id = 1; id <= kRequests; ++id) worker.request_run(pat::ui::RunSetup{model, "", id});
+  worker.request_blow("force:pulse:20:40");
+  QVERIFY(wait_until(
+      [&] { return !started.isEmpty() && started.last().first().toInt() == kRequests; }));
+  worker.set_target_time(0.03);  // as the window's playback asks, once the run has started
+  // the first request may have been taken before the others came: at most one more
+  QVERIFY2(started.count() <= 2, qPrintable(QString("%1 runs built").arg(started.count())));
+  // the blow struck after the last restart drives the new run: the hammer rises
+  const int hammer = model->landmarks.hammer;
+  double highest = 0.0;
+  QVERIFY(wait_until(
+      [&] {
+        for (const pat::ui::Frame& f : worker.take_frames())
+          highest = std::max(highest, f.angle_deg[hammer]);
+        return highest > 5.0;
+      },
+      10000));
 }
 
 QTEST_MAIN(RunControlsTest)
