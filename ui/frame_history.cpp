@@ -17,6 +17,7 @@ std::size_t FrameHistory::index_at(double t) const {
 }
 
 Frame FrameHistory::interpolated(double t) const {
+  if (frames_.empty()) return Frame{};  // nothing recorded (a run cleared meanwhile)
   const std::size_t i = index_at(t);
   Frame frame = frames_[i];
   if (i + 1 < frames_.size() && t > frame.t) {

@@ -1142,7 +1142,17 @@ AnimationOptions MainWindow::animation_options() const {
 
 int MainWindow::export_animation(const QString& folder,
                                  const std::function<bool(int, int)>& progress) {
-  return export_action_animation(controller_->history(), animation_options(), folder, progress);
+  // the frames of the span drawn, copied: the progress dialog runs the event loop, in which a
+  // restart or a replay clears the run's history
+  const AnimationOptions options = animation_options();
+  const FrameHistory& history = controller_->history();
+  FrameHistory span;
+  if (!history.empty()) {
+    const std::size_t last = std::min(history.index_at(options.to_s) + 1, history.size() - 1);
+    for (std::size_t i = history.index_at(options.from_s); i <= last; ++i)
+      span.append(history.at(i));
+  }
+  return export_action_animation(span, options, folder, progress);
 }
 
 void MainWindow::export_animation_from_menu() {

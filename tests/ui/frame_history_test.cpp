@@ -32,6 +32,15 @@ Frame recorded(double t, double angle, double gap_mm, double force_n,
 class FrameHistoryTest : public QObject {
   Q_OBJECT
  private slots:
+  // a history cleared (a restart while a picture sequence is drawn from it) gives an empty frame,
+  // not a read past its end
+  void an_empty_history_gives_an_empty_frame() {
+    const FrameHistory history;
+    const Frame f = history.interpolated(0.5);
+    QCOMPARE(f.t, 0.0);
+    QVERIFY(f.angle_deg.empty());
+    QVERIFY(!f.model);
+  }
   void between_frames_the_readings_are_blended_with_the_state() {
     const auto model = std::make_shared<const pat::ActionModel>();
     FrameHistory history;
