@@ -141,6 +141,10 @@ ActionView::ActionView(QWidget* parent) : QWidget(parent) {
   setMinimumSize(320, 240);
   setMouseTracking(true);
   setFocusPolicy(Qt::ClickFocus);
+  setAccessibleName(tr("Piano action"));
+  setAccessibleDescription(
+      tr("The action drawn as it moves; drag the key front down to play the key, the space bar "
+         "strikes a blow"));
   setToolTip(
       tr("Wheel: zoom · right or middle drag: pan · double click: fit\n"
          "View menu: close-ups of the escapement (Ctrl+2) and the checking (Ctrl+3)\n"

@@ -68,8 +68,10 @@ InputSpecForm::InputSpecForm(QWidget* parent) : QWidget(parent) {
   auto* row = new QHBoxLayout(this);
   row->setContentsMargins(0, 0, 0, 0);
   // the input a run starts with; a blow struck into the run on screen is the run controls' own
-  row->addWidget(new QLabel(tr("Run input:"), this));
+  auto* kind_label = new QLabel(tr("Run input:"), this);
+  row->addWidget(kind_label);
   kind_ = new QComboBox(this);
+  kind_label->setBuddy(kind_);
   for (const Kind& k : kKinds) kind_->addItem(tr(k.text));
   kind_->setToolTip(
       tr("What drives the key in a run started from rest (Start from rest): a force at the key "
@@ -79,6 +81,7 @@ InputSpecForm::InputSpecForm(QWidget* parent) : QWidget(parent) {
     value_label_[i] = new QLabel(this);
     value_[i] = new QDoubleSpinBox(this);
     value_[i]->setMaximumWidth(100);
+    value_label_[i]->setBuddy(value_[i]);  // the label names the value (and to a screen reader)
     row->addWidget(value_label_[i]);
     row->addWidget(value_[i]);
     connect(value_[i], &QDoubleSpinBox::valueChanged, this, &InputSpecForm::specChanged);
@@ -117,6 +120,7 @@ void InputSpecForm::show_fields() {
     if (!shown) continue;
     const Kind::Param& p = k.params[i];
     value_label_[i]->setText(tr(p.label));
+    value_[i]->setAccessibleName(tr(p.label).remove(':').trimmed());
     const QSignalBlocker block(value_[i]);
     value_[i]->setRange(p.min, p.max);
     value_[i]->setDecimals(p.decimals);

@@ -48,6 +48,11 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   spin_->setSuffix(" mm");
   spin_->setToolTip(tip);
   spin_->setKeyboardTracking(false);
+  // named for a screen reader by the setting they turn (their label is rich text beside them)
+  const QString accessible = tr("%1 adjuster").arg(setting_title(adjuster.name));
+  slider_->setAccessibleName(accessible);
+  spin_->setAccessibleName(tr("%1, mm from regulated").arg(accessible));
+  name_label_->setBuddy(spin_);
 
   measured_label_ = new QLabel(tr("—"), parent);
   fit_to_font();  // bold, and wide enough

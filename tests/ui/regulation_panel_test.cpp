@@ -28,6 +28,7 @@
 #include "playback_controller.h"
 #include "regulation/deregulation.h"
 #include "regulation_runner.h"
+#include "setting_names.h"
 #include "run_controls.h"
 #include "ui_test_support.h"
 
@@ -72,6 +73,10 @@ void RegulationPanelTest::rows_follow_the_settings_with_their_ranges() {
     QCOMPARE(row->spin_box()->minimum(), a.min * 1e3);
     QCOMPARE(row->spin_box()->maximum(), a.max * 1e3);
     QVERIFY(row->spin_box()->toolTip().contains(QString::fromStdString(a.description)));
+    // named by the setting it turns, for a screen reader ("let-off adjuster, mm from regulated")
+    QVERIFY2(row->spin_box()->accessibleName().contains(pat::ui::setting_title(a.name)),
+             qPrintable(row->spin_box()->accessibleName()));
+    QVERIFY(row->slider()->accessibleName().contains(pat::ui::setting_title(a.name)));
   }
   // the technician's order of the preset's settings
   for (std::size_t i = 0; i < model.regulation.size(); ++i)
