@@ -205,10 +205,12 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
          std::isfinite(c.training_rms_deg) ? number(c.training_rms_deg) : QObject::tr("—"),
          std::isfinite(c.delta_bic) ? number(c.delta_bic) : QObject::tr("—"),
          QString::fromStdString(c.note)});
-    if (!std::isfinite(c.validated_rms_deg)) continue;
+    // one trial: no held-out error, the training one is plotted (the axis says which)
+    const double error = d.held_out ? c.validated_rms_deg : c.training_rms_deg;
+    if (!c.completed || !std::isfinite(error)) continue;
     ranking.x_categories.push_back(effect_label(c.effect));
     validated.x.push_back(double(ranking.x_categories.size() - 1));
-    validated.y.push_back(c.validated_rms_deg);
+    validated.y.push_back(error);
   }
   if (!validated.x.empty()) {
     base_line.x = {-0.5, validated.x.back() + 0.5};  // across every category
