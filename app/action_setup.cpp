@@ -10,10 +10,7 @@
 #include "sim/simulation.h"
 
 namespace pat::app {
-namespace {
 
-/// Refuses a NAME given twice among an option's NAME=VALUE assignments: one of the two values
-/// would be dropped without a word (the edits' own parsers name any other problem).
 void refuse_repeated_names(const std::string& option, const std::vector<std::string>& assignments) {
   std::map<std::string, std::string> seen;  // name → its first assignment
   for (const std::string& assignment : assignments) {
@@ -24,8 +21,6 @@ void refuse_repeated_names(const std::string& option, const std::vector<std::str
                        assignment + "'); give it once");
   }
 }
-
-}  // namespace
 
 ActionModel load_configured_action(const CommandLine& cl, bool needs_rest) {
   refuse_repeated_names("--set", cl.values("--set"));

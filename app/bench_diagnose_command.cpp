@@ -23,6 +23,10 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
   const int seeds = static_cast<int>(cl.positive_number_or("--seeds", 3));
   const int null_seeds = static_cast<int>(cl.positive_number_or("--null-seeds", 3));
   const std::vector<std::string> only = cl.values("--family");
+  if (!only.empty() && cl.has("--null-seeds"))
+    throw InputError(
+        "--null-seeds with --family: the null cases (nothing hidden) run only with the whole "
+        "library, without --family; give one or the other");
   const std::vector<HiddenEffectRange> ranges = hidden_effect_ranges(model);
   for (const std::string& family : only)
     if (std::none_of(ranges.begin(), ranges.end(),

@@ -50,8 +50,9 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
       "rms error (deg)", "candidate", "candidate_index");
   PlotCurve rms = point_curve("fitted candidate", "validated_rms_deg");
   for (const CandidateFit& c : d.ranking) {
-    if (!c.completed) continue;
-    rms.add(double(ranking.x_categories.size()), c.validated_rms_deg);
+    const double error = d.held_out ? c.validated_rms_deg : c.training_rms_deg;
+    if (!c.completed || !std::isfinite(error)) continue;
+    rms.add(double(ranking.x_categories.size()), error);
     ranking.x_categories.push_back(c.effect);
   }
   // the baseline error as a flat line across the candidates, for scale
@@ -100,6 +101,13 @@ int run_diagnose(const std::vector<std::string>& args) {
     throw InputError("missing option --measured (one or more measured CSV files)");
   DiagnoseOptions options;
   options.candidates = cl.values("--candidate");
+  {
+    std::set<std::string> named;
+    for (const std::string& name : options.candidates)
+      if (!named.insert(name).second)
+        throw InputError("--candidate: " + name +
+                         " is given twice (each candidate is fitted once); give it once");
+  }
   if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
   const std::string report = cl.value_or("--report", "");
   if (cl.has("--report")) check_report_folder(report);
@@ -126,26 +134,35 @@ int run_diagnose(const std::vector<std::string>& args) {
   std::cout << "what the model gets wrong:\n";
   for (std::size_t i = 0; i < d.discrepancies.size() && i < 12; ++i)
     std::cout << "  " << d.discrepancies[i] << "\n";
-  std::cout << "ranking (" << (d.held_out ? "held-out" : "training, a single trial") << " rms):\n";
+  std::cout << "ranking (rms fitted on every trial"
+            << (d.held_out ? "; held-out: each trial under the fit without it"
+                           : "; one trial: nothing can be held out")
+            << "):\n";
   for (const CandidateFit& c : d.ranking) {
-    std::cout << "  " << c.effect << " = " << c.value << " " << c.unit << ": ";
+    std::cout << "  " << c.effect << " = " << c.value << " " << c.unit << ": " << c.training_rms_deg
+              << " deg";
     if (std::isfinite(c.validated_rms_deg))
-      std::cout << c.validated_rms_deg << " deg";
-    else
-      std::cout << "not validated";
+      std::cout << ", held-out " << c.validated_rms_deg << " deg";
+    else if (d.held_out)
+      std::cout << ", not validated";
     if (!c.note.empty()) std::cout << " (" << c.note << ")";
     std::cout << "\n";
   }
   if (d.cause)
     std::cout << "cause: " << d.cause->name << " = " << d.cause->value << " " << d.cause_unit
               << "\n";
+  else if (d.ambiguous)
+    std::cout << "cause: none named, the ranking is ambiguous (" << d.ranking.front().note << ")\n";
   else
     std::cout << "cause: none beyond the noise\n";
   std::cout << "baseline " << d.baseline_rms_deg << " deg, extended " << d.extended_rms_deg
-            << " deg, gain " << d.gain * 100 << " %"
-            << (d.held_out ? " on held-out trials"
-                           : " on the fitted trial itself (one trial: nothing held out)")
-            << "  (" << d.simulations << " simulations, " << d.wall_time_s << " s)\n";
+            << " deg, gain " << d.gain * 100 << " %, measured on " << d.gain_basis << "  ("
+            << d.simulations << " simulations, " << d.wall_time_s << " s)\n";
+  for (const TrialReport& r : d.trials)
+    if (!r.held_out_effect.empty())
+      std::cout << "  held out " << r.path << ": " << r.held_out_rms_deg << " deg under "
+                << r.held_out_effect << " = " << r.held_out_value << " " << r.held_out_unit
+                << " fitted on the other trials\n";
   if (!report.empty()) std::cout << "report written to " << report << "\n";
   if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   return 0;

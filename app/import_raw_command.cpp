@@ -114,6 +114,11 @@ int run_import_raw(const std::vector<std::string>& args) {
     check_calibration_fits(*o.calibration, raw_path, column);
   }
   const RawTrace trace = read_raw_trace(raw_path, column, bits);
+  if (cl.has("--bits") && !trace.counts)  // it would be ignored without a word
+    throw InputError("--bits " + cl.value("--bits") + ": " + raw_path + " column " +
+                     std::to_string(column) +
+                     " holds normalized readings in [0, 1], not ADC counts: --bits applies to "
+                     "counts only; leave it out");
   if (cl.has("--key-column")) {
     const int key_column = whole_number(cl, "--key-column", 2, 1);
     if (!o.calibration)

@@ -1,5 +1,6 @@
 // pianoaction synth: measured-like data from the model with effects hidden in it (DESIGN.md
 // sections 4 and 5).
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,20 @@
 #include "plot_output.h"
 
 namespace pat::app {
+namespace {
+
+/// Refuses to write synthetic data over a file whose metadata says it holds real measured data
+/// (import-raw writes '# source:'): nothing real is ever replaced by a synthesised trace.
+void refuse_real_data(const std::string& out_path) {
+  std::ifstream existing(out_path);
+  std::string line;
+  while (std::getline(existing, line) && !line.empty() && line.front() == '#')
+    if (line.rfind("# source:", 0) == 0)
+      throw InputError("--out " + out_path + ": the file holds real measured data (" +
+                       line.substr(2) + "); synth does not overwrite it: choose another file name");
+}
+
+}  // namespace
 
 int run_synth(const std::vector<std::string>& args) {
   const CommandLine cl(
@@ -21,6 +36,9 @@ int run_synth(const std::vector<std::string>& args) {
        "--angle-offset-deg", "--seed", "--set", "--out", "--plot"},
       {"--json"});
   const std::string out_path = cl.output_path("--out", true);
+  refuse_real_data(out_path);
+  refuse_repeated_names("--set", cl.values("--set"));
+  refuse_repeated_names("--effect", cl.values("--effect"));
   // --set adjusts the base model; the effects go into SynthOptions so that they are recorded
   ActionModel model = load_action(cl.value("--action"));
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);

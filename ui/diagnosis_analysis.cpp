@@ -95,16 +95,18 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                                         .arg(QString::fromStdString(d.cause_unit))
                                   : QObject::tr("none beyond the noise");
   const QString error_kind = d.held_out ? QObject::tr("held-out") : QObject::tr("training");
-  result.summary = has_cause
-                       ? (d.held_out ? QObject::tr("cause %1; the error on held-out trials "
-                                                   "falls from %2 to %3 deg (gain %4 %).")
-                                     : QObject::tr("cause %1; the error on the single "
-                                                   "trial (no held-out data) falls from %2 "
-                                                   "to %3 deg (gain %4 %)."))
-                             .arg(cause)
-                             .arg(number(d.baseline_rms_deg))
-                             .arg(number(d.extended_rms_deg))
-                             .arg(number(d.gain * 100.0, 2))
+  result.summary = has_cause ? (d.held_out ? QObject::tr("cause %1; the error on held-out trials "
+                                                         "falls from %2 to %3 deg (gain %4 %).")
+                                           : QObject::tr("cause %1; the error on the single "
+                                                         "trial (no held-out data) falls from %2 "
+                                                         "to %3 deg (gain %4 %)."))
+                                   .arg(cause)
+                                   .arg(number(d.baseline_rms_deg))
+                                   .arg(number(d.extended_rms_deg))
+                                   .arg(number(d.gain * 100.0, 2))
+                   : d.ambiguous
+                       ? QObject::tr("no cause named: the ranking is ambiguous (%1).")
+                             .arg(QString::fromStdString(d.ranking.front().note))
                        : QObject::tr(
                              "no candidate explains the residual (%1 deg) beyond the noise (%2 "
                              "deg): no cause named.")
@@ -205,10 +207,12 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
          std::isfinite(c.training_rms_deg) ? number(c.training_rms_deg) : QObject::tr("—"),
          std::isfinite(c.delta_bic) ? number(c.delta_bic) : QObject::tr("—"),
          QString::fromStdString(c.note)});
-    if (!std::isfinite(c.validated_rms_deg)) continue;
+    // one trial: no held-out error, the training one is plotted (the axis says which)
+    const double error = d.held_out ? c.validated_rms_deg : c.training_rms_deg;
+    if (!c.completed || !std::isfinite(error)) continue;
     ranking.x_categories.push_back(effect_label(c.effect));
     validated.x.push_back(double(ranking.x_categories.size() - 1));
-    validated.y.push_back(c.validated_rms_deg);
+    validated.y.push_back(error);
   }
   if (!validated.x.empty()) {
     base_line.x = {-0.5, validated.x.back() + 0.5};  // across every category

@@ -207,6 +207,7 @@ CsvTable read_csv(const std::string& path) {
                                        "expected " + std::to_string(table.columns.size()) +
                                            " values, got " + std::to_string(fields.size())));
     }
+    table.row_lines.push_back(line_number);
     std::vector<double>& row = table.rows.emplace_back(fields.size());
     for (std::size_t i = 0; i < fields.size(); ++i) {
       const NumberParse result = parse_number(fields[i], row[i]);

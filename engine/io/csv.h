@@ -12,6 +12,7 @@ struct CsvTable {
   std::map<std::string, std::string> metadata;  ///< from "# key: value" lines, key trimmed
   std::vector<std::string> columns;             ///< header names, trimmed
   std::vector<std::vector<double>> rows;        ///< every row has columns.size() values
+  std::vector<int> row_lines;  ///< the file line of each row (read_csv); empty when built in memory
 
   /// Index of a column, or -1.
   int column_index(const std::string& name) const;

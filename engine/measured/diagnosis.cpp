@@ -243,8 +243,11 @@ struct CandidateWork {
   std::vector<double> held_out_rss;           // per trial
   std::vector<std::vector<double>> scan_rss;  // [scan point][trial], inf when failed
   std::vector<double> scan_s;
-  double all_s = 0.0;          // fitted on every trial
-  double scan_best_rss = 0.0;  // lowest scan cost over every trial
+  double all_s = 0.0;                     // fitted on every trial
+  double all_rss = 0.0;                   // its cost over every trial (the selection's criterion)
+  std::vector<double> fold_s;             // fitted leaving out trial f
+  std::vector<double> fold_training_rss;  // its cost on the trials it was fitted on
+  double scan_best_rss = 0.0;             // lowest scan cost over every trial
   bool refined = false;
 };
 
@@ -345,21 +348,21 @@ void densify_scan(Evaluator& ev, const ActionModel& base, const std::vector<std:
   w.scan_rss = std::move(rss);
 }
 
-/// Further starts for the fit on every trial (`all`; the fit so far w.all_s at cost
-/// `all_cost`): each trial's own minimum. The cost of one trial can be jagged on a scale finer
-/// than any scan: in a double blow, whether the backcheck holds the hammer or lets it bounce back
-/// to the string changes within a few percent of the hammer felt's stiffness or the backcheck's,
-/// and there the summed cost's minimum is a narrow dip at the true value, missed by the scan,
-/// while a smoother trial (a sine, a 1 kg blow) has its own minimum within a few percent of it.
-/// Each trial's best scan point (parabola vertex) is refined on that trial alone (one
-/// Levenberg–Marquardt iteration); the sum is evaluated there, and the best of these starts, when
-/// better than the fit so far, is refined on every trial (kFoldLmIterations).
-void fit_from_trial_minima(Evaluator& ev, const ActionModel& base, CandidateWork& w,
-                           const std::vector<std::size_t>& all, double& all_cost) {
+/// Further starts for the fit on the trials of `set` (the fit so far `s` at cost `cost`): each
+/// trial's own minimum. The cost of one trial can be jagged on a scale finer than any scan: in a
+/// double blow, whether the backcheck holds the hammer or lets it bounce back to the string
+/// changes within a few percent of the hammer felt's stiffness or the backcheck's, and there the
+/// summed cost's minimum is a narrow dip at the true value, missed by the scan, while a smoother
+/// trial (a sine, a 1 kg blow) has its own minimum within a few percent of it. Each trial's best
+/// scan point (parabola vertex) is refined on that trial alone (one Levenberg–Marquardt
+/// iteration); the sum is evaluated there, and the best of these starts, when better than the
+/// fit so far, is refined on the set (kTrialMinimumLmIterations).
+void fit_from_trial_minima(Evaluator& ev, const ActionModel& base, const CandidateWork& w,
+                           const std::vector<std::size_t>& set, double& s, double& cost) {
   const Parameter& p = w.param;
-  double best_start = w.all_s;
-  double best_start_cost = all_cost;
-  for (std::size_t j : all) {
+  double best_start = s;
+  double best_start_cost = cost;
+  for (std::size_t j : set) {
     int k_j = -1;
     double lowest = std::numeric_limits<double>::infinity();
     for (std::size_t k = 0; k < w.scan_s.size(); ++k)
@@ -370,16 +373,93 @@ void fit_from_trial_minima(Evaluator& ev, const ActionModel& base, CandidateWork
         levenberg_marquardt(ev, base, p, parabola_start(w, {j}, k_j), {j}, trial_cost, 1);
     // a trial whose own minimum is the fit so far (within the local fit's resolution) adds no
     // start
-    if (!std::isfinite(trial_cost) || std::abs(s_j - w.all_s) < 1e-3 * (p.hi - p.lo)) continue;
-    const double joint = evaluate_set(ev, base, p, s_j, all).cost;
+    if (!std::isfinite(trial_cost) || std::abs(s_j - s) < 1e-3 * (p.hi - p.lo)) continue;
+    const double joint = evaluate_set(ev, base, p, s_j, set).cost;
     if (joint < best_start_cost) best_start_cost = joint, best_start = s_j;
   }
-  if (!(best_start_cost < all_cost)) return;
+  if (!(best_start_cost < cost)) return;
   // the local fit only accepts steps that lower the cost: it ends at or below best_start_cost
-  w.all_s = levenberg_marquardt(ev, base, p, best_start, all, all_cost, kFoldLmIterations);
+  s = levenberg_marquardt(ev, base, p, best_start, set, cost, kTrialMinimumLmIterations);
 }
 
-/// The local fits and the leave-one-out validation of a scanned candidate.
+/// The best scan point of a candidate on the trials of `set` (its index, -1 when every point
+/// failed) and its cost.
+int best_scan_point(const CandidateWork& w, const std::vector<std::size_t>& set, double& cost) {
+  int best_k = -1;
+  cost = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < static_cast<int>(w.scan_s.size()); ++k) {
+    double c = 0.0;
+    for (std::size_t j : set) c += w.scan_rss[k][j];
+    if (c < cost) cost = c, best_k = k;
+  }
+  return best_k;
+}
+
+/// Fits a scanned candidate on the trials of `set` alone, from scratch: the scan's costs summed
+/// over those trials find the basin (the scan itself does not depend on the data of other
+/// trials), then the finer scan, the local fits and the further starts. Returns the parameter s,
+/// and its cost over the set in `cost` (inf: the model fails over the whole range).
+double fit_on_trials(Evaluator& ev, const ActionModel& base, const CandidateWork& w,
+                     const std::vector<std::size_t>& set, double& cost) {
+  const Parameter& p = w.param;
+  const double inf = std::numeric_limits<double>::infinity();
+  cost = inf;
+  double best = inf;
+  const int best_k = best_scan_point(w, set, best);
+  if (best_k < 0) return w.scan_s.front();
+  // A second basin of the scan (a point not next to the best one whose cost is within
+  // kSecondBasinRatio of it) gets its own local fit: the cost of a contact-switching simulation
+  // has local minima.
+  const double fine_start = fine_scan_start(ev, base, w, set, best_k);
+  bool blocked = false;
+  double s = levenberg_marquardt(ev, base, p, fine_start, set, cost, kMaxLmIterations, &blocked);
+  // the model may stop (a contact turns unphysical) between the finer scan's best point and the
+  // minimum, which the local fit cannot cross: then the best scan point gets its own local fit
+  if (blocked && fine_start != w.scan_s[best_k]) {
+    double scan_start_cost = inf;
+    const double from_scan =
+        levenberg_marquardt(ev, base, p, w.scan_s[best_k], set, scan_start_cost, kMaxLmIterations);
+    if (scan_start_cost < cost) s = from_scan, cost = scan_start_cost;
+  }
+  const int points = static_cast<int>(w.scan_s.size());
+  auto summed_over_set = [&](int k) {
+    double c = 0.0;
+    for (std::size_t j : set) c += w.scan_rss[k][j];
+    return c;
+  };
+  int second_k = -1;
+  double second = inf;
+  for (int k = 0; k < points; ++k) {
+    if (std::abs(k - best_k) < 2) continue;
+    bool local_min = true;
+    const double c = summed_over_set(k);
+    for (int nb : {k - 1, k + 1}) {
+      if (nb < 0 || nb >= points) continue;
+      local_min = local_min && c <= summed_over_set(nb);
+    }
+    if (local_min && c < second) second = c, second_k = k;
+  }
+  if (second_k >= 0 && second < kSecondBasinRatio * best) {
+    double other_cost = inf;
+    const double other = levenberg_marquardt(ev, base, p, parabola_start(w, set, second_k), set,
+                                             other_cost, kMaxLmIterations);
+    if (other_cost < cost) s = other, cost = other_cost;
+  }
+  if (set.size() > 1) fit_from_trial_minima(ev, base, w, set, s, cost);
+  return s;
+}
+
+/// The trials but `left_out` (every trial when left_out is out of range).
+std::vector<std::size_t> trials_but(std::size_t trial_count, std::size_t left_out) {
+  std::vector<std::size_t> set;
+  for (std::size_t j = 0; j < trial_count; ++j)
+    if (j != left_out) set.push_back(j);
+  return set;
+}
+
+/// The local fits and the leave-one-out validation of a scanned candidate: the fit on every
+/// trial (the value named), then for each trial a fit from scratch on the others alone (its own
+/// scan sums, finer scan and local fits, as above) evaluated on the trial left out.
 void refine_candidate(Evaluator& ev, const ActionModel& base,
                       const std::vector<std::size_t>& samples, CandidateWork& w) {
   const std::size_t trial_count = samples.size();
@@ -387,75 +467,32 @@ void refine_candidate(Evaluator& ev, const ActionModel& base,
   const double inf = std::numeric_limits<double>::infinity();
   const bool held_out = trial_count > 1;
   w.held_out_rss.assign(trial_count, inf);
-  std::vector<std::size_t> all(trial_count);
-  for (std::size_t j = 0; j < trial_count; ++j) all[j] = j;
+  w.fold_training_rss.assign(trial_count, inf);
+  w.fold_s.assign(trial_count, 0.0);
   densify_scan(ev, base, samples, w);
-  const int points = static_cast<int>(w.scan_s.size());
-  int best_k = -1;
-  double best = inf;
-  for (int k = 0; k < points; ++k) {
-    const double c = summed(w.scan_rss[k]);
-    if (c < best) best = c, best_k = k;
-  }
-  if (best_k < 0) {
+  double all_cost = inf;
+  w.all_s = fit_on_trials(ev, base, w, trials_but(trial_count, trial_count), all_cost);
+  if (!std::isfinite(all_cost)) {
     w.fit.completed = false;
     w.fit.note = "the model fails to run over the whole range of this effect";
     return;
   }
-  // on every trial: the candidate's value. A second basin of the scan (a point not next to the
-  // best one whose cost is within kSecondBasinRatio of it) gets its own local fit: the cost of
-  // a contact-switching simulation has local minima.
-  double all_cost = inf;
-  const double fine_start = fine_scan_start(ev, base, w, all, best_k);
-  bool blocked = false;
-  w.all_s = levenberg_marquardt(ev, base, p, fine_start, all, all_cost, kMaxLmIterations, &blocked);
-  // the model may stop (a contact turns unphysical) between the finer scan's best point and the
-  // minimum, which the local fit cannot cross: then the best scan point gets its own local fit
-  if (blocked && fine_start != w.scan_s[best_k]) {
-    double scan_start_cost = inf;
-    const double from_scan =
-        levenberg_marquardt(ev, base, p, w.scan_s[best_k], all, scan_start_cost, kMaxLmIterations);
-    if (scan_start_cost < all_cost) w.all_s = from_scan, all_cost = scan_start_cost;
-  }
-  int second_k = -1;
-  double second = inf;
-  for (int k = 0; k < points; ++k) {
-    if (std::abs(k - best_k) < 2) continue;
-    bool local_min = true;
-    const double c = summed(w.scan_rss[k]);
-    for (int nb : {k - 1, k + 1}) {
-      if (nb < 0 || nb >= points) continue;
-      local_min = local_min && c <= summed(w.scan_rss[nb]);
-    }
-    if (local_min && c < second) second = c, second_k = k;
-  }
-  if (second_k >= 0 && second < kSecondBasinRatio * best) {
-    double other_cost = inf;
-    const double other = levenberg_marquardt(ev, base, p, parabola_start(w, all, second_k), all,
-                                             other_cost, kMaxLmIterations);
-    if (other_cost < all_cost) w.all_s = other, all_cost = other_cost;
-  }
-  if (held_out) fit_from_trial_minima(ev, base, w, all, all_cost);
+  w.all_rss = all_cost;
   w.fit.value = p.value(w.all_s);
-  double training_cost = 0.0;
-  std::size_t training_samples = 0;
-  for (std::size_t f = 0; f < (held_out ? trial_count : 1); ++f) {
-    // leave trial f out: refit on the others from the all-trial value
-    std::vector<std::size_t> set;
-    for (std::size_t j = 0; j < trial_count; ++j)
-      if (!held_out || j != f) set.push_back(j);
+  std::size_t all_samples = 0;
+  for (std::size_t n : samples) all_samples += n;
+  w.fit.training_rms_deg = std::sqrt(all_cost / static_cast<double>(all_samples));
+  if (!held_out) return;
+  for (std::size_t f = 0; f < trial_count; ++f) {
+    // leave trial f out: a fit that never sees it
     double cost = inf;
-    const double s = held_out
-                         ? levenberg_marquardt(ev, base, p, w.all_s, set, cost, kFoldLmIterations)
-                         : w.all_s;
-    if (!held_out) cost = all_cost;
+    const double s = fit_on_trials(ev, base, w, trials_but(trial_count, f), cost);
+    w.fold_s[f] = s;
+    w.fold_training_rss[f] = cost;
     w.fit.fold_values.push_back(p.value(s));
-    training_cost += cost;
-    for (std::size_t j : set) training_samples += samples[j];
-    const SetResult validation = held_out ? evaluate_set(ev, base, p, s, {f}) : SetResult{};
-    w.held_out_rss[f] = held_out ? (validation.ok ? validation.cost : inf) : all_cost;
+    const SetResult validation = evaluate_set(ev, base, p, s, {f});
+    w.held_out_rss[f] = validation.ok ? validation.cost : inf;
   }
-  w.fit.training_rms_deg = std::sqrt(training_cost / static_cast<double>(training_samples));
 }
 
 /// "FILE: hammer_angle_deg runs from LOW to HIGH deg, " : the start of a units message.
@@ -607,100 +644,183 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   }
   std::vector<std::size_t> samples;
   for (const PreparedTrial& p : prepared) samples.push_back(p.data.t.size());
-  // screening: every candidate is scanned; the kRefinedCandidates with the lowest scan cost are
-  // fitted locally and validated (the others cannot win: their best scan point is already
-  // worse than the refined ones' starting points)
+  // screening: every candidate is scanned. A fit refines only the kRefinedCandidates with the
+  // lowest scan cost on its own trials (the others cannot win there: their best scan point is
+  // already worse than the refined ones' starting points): the fit on every trial, and each
+  // leave-one-out fit, whose shortlist is chosen on its training trials alone.
   run_parallel(
       work.size(), [&](std::size_t c) { scan_candidate(ev, model, samples, work[c]); },
       options.progress, options.threads);
-  std::vector<std::size_t> order(work.size());
-  for (std::size_t c = 0; c < work.size(); ++c) order[c] = c;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return work[a].scan_best_rss < work[b].scan_best_rss;
-  });
-  const std::size_t refined_count = std::min<std::size_t>(kRefinedCandidates, work.size());
+  auto shortlist = [&work](const std::vector<std::size_t>& set) {
+    std::vector<double> cost(work.size());
+    std::vector<std::size_t> order(work.size());
+    for (std::size_t c = 0; c < work.size(); ++c) {
+      order[c] = c;
+      best_scan_point(work[c], set, cost[c]);
+    }
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return cost[a] < cost[b]; });
+    order.resize(std::min<std::size_t>(kRefinedCandidates, work.size()));
+    return order;
+  };
+  std::vector<bool> to_refine(work.size(), false);
+  for (std::size_t c : shortlist(trials_but(n_trials, n_trials))) to_refine[c] = true;
+  std::vector<std::vector<std::size_t>> fold_shortlists;
+  if (d.held_out)
+    for (std::size_t f = 0; f < n_trials; ++f) {
+      fold_shortlists.push_back(shortlist(trials_but(n_trials, f)));
+      for (std::size_t c : fold_shortlists.back()) to_refine[c] = true;
+    }
+  std::vector<std::size_t> refined;
+  for (std::size_t c = 0; c < work.size(); ++c)
+    if (to_refine[c]) refined.push_back(c);
   run_parallel(
-      refined_count,
+      refined.size(),
       [&](std::size_t i) {
-        CandidateWork& w = work[order[i]];
+        CandidateWork& w = work[refined[i]];
         w.refined = true;
         refine_candidate(ev, model, samples, w);
       },
       options.progress, options.threads);
+  if (options.progress)  // the progress counted every candidate as refinable
+    for (std::size_t i = refined.size(); i < work.size(); ++i)
+      options.progress->item_done("screened out");
 
-  // compare on held-out trials
+  // The gain, honestly held out: each trial's error under the candidate chosen (lowest training
+  // cost among its fold's shortlist) and fitted on the other trials alone.
+  struct FoldChoice {
+    std::string effect, unit;
+    double value = 0.0;
+  };
+  std::vector<double> held_out_rss(n_trials, std::numeric_limits<double>::infinity());
+  std::vector<std::optional<FoldChoice>> fold_choice(n_trials);
+  for (std::size_t f = 0; f < fold_shortlists.size(); ++f) {
+    const CandidateWork* chosen = nullptr;
+    for (std::size_t c : fold_shortlists[f]) {
+      const CandidateWork& w = work[c];
+      if (!w.fit.completed || !std::isfinite(w.fold_training_rss[f])) continue;
+      if (!chosen || w.fold_training_rss[f] < chosen->fold_training_rss[f]) chosen = &w;
+    }
+    if (!chosen) continue;
+    held_out_rss[f] = chosen->held_out_rss[f];
+    fold_choice[f] = FoldChoice{chosen->param.info.name, chosen->param.info.unit,
+                                chosen->param.value(chosen->fold_s[f])};
+  }
+
+  // each candidate: its fit on every trial (the selection's criterion) and its held-out error
   double sample_interval = 0.0;
   for (const PreparedTrial& p : prepared) sample_interval += p.data.sample_interval_s();
   sample_interval /= static_cast<double>(n_trials);
   const double n_eff = std::max(2.0, n * sample_interval / kCorrelationTimeS);
   const double base_ms = base_rss / n;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (CandidateWork& w : work) {
     CandidateFit& f = w.fit;
     f.effect = w.param.info.name;
     f.unit = w.param.info.unit;
+    f.validated_rms_deg = nan;
+    f.delta_bic = nan;
     if (!w.refined) {
       f.completed = std::isfinite(w.scan_best_rss);
-      f.validated_rms_deg = std::numeric_limits<double>::infinity();
       f.training_rms_deg = std::sqrt(w.scan_best_rss / n);
       f.note = "screened out: its best scan point (rms " + format_fixed(f.training_rms_deg) +
                " deg) is worse than the " + std::to_string(kRefinedCandidates) +
-               " candidates fitted and validated";
-      f.delta_bic = std::numeric_limits<double>::quiet_NaN();
+               " candidates fitted";
       int k = 0;
       for (std::size_t i = 0; i < w.scan_rss.size(); ++i)
         if (summed(w.scan_rss[i]) <= w.scan_best_rss) k = static_cast<int>(i);
       f.value = w.param.value(w.scan_s[k]);
       continue;
     }
-    double held = 0.0;
-    for (double r : w.held_out_rss) held += r;
-    if (!f.completed || !std::isfinite(held)) {
-      f.completed = false;
-      if (f.note.empty()) f.note = "the model failed on a held-out trial at the fitted value";
-      f.validated_rms_deg = std::numeric_limits<double>::infinity();
-      continue;
+    if (!f.completed) continue;
+    // a value pinned at a limit of the physical range is not identified: the family may point
+    // the right way, but the effect as modelled does not explain the data (1 % of the range: the
+    // local fit's clamped steps end exactly there)
+    const double margin = 0.01 * (w.param.hi - w.param.lo);
+    if (w.all_s <= w.param.lo + margin || w.all_s >= w.param.hi - margin)
+      f.note = "its fitted value is at a limit of the physical range: not identified";
+    double criterion_ms = w.all_rss / n;  // one trial: nothing is held out
+    if (d.held_out) {
+      double held = 0.0;
+      for (double r : w.held_out_rss) held += r;
+      if (!std::isfinite(held)) {
+        f.completed = false;
+        f.note = "the model failed on a held-out trial at the value fitted without it";
+        continue;
+      }
+      criterion_ms = held / n;
+      f.validated_rms_deg = std::sqrt(criterion_ms);
     }
-    const double ms = held / n;
-    f.validated_rms_deg = std::sqrt(ms);
-    f.delta_bic = n_eff * std::log(base_ms / ms) - std::log(n_eff);
+    f.delta_bic = n_eff * std::log(base_ms / criterion_ms) - std::log(n_eff);
   }
+  // ranked by the fit on every trial (the held-out errors are reported, not chosen on)
   std::sort(work.begin(), work.end(), [](const CandidateWork& a, const CandidateWork& b) {
     if (a.refined != b.refined) return a.refined;
-    if (a.refined) return a.fit.validated_rms_deg < b.fit.validated_rms_deg;
+    if (a.fit.completed != b.fit.completed) return a.fit.completed;
+    if (a.refined) return a.all_rss < b.all_rss;
     return a.scan_best_rss < b.scan_best_rss;
   });
   for (const CandidateWork& w : work) d.ranking.push_back(w.fit);
 
   d.extended_rms_deg = d.baseline_rms_deg;
   const CandidateWork& best = work.front();
-  // (3) a value pinned at a limit of the physical range is not identified: the family may point
-  //     the right way, but the effect as modelled does not explain the data
-  const double margin = 0.01 * (best.param.hi - best.param.lo);
-  const bool at_limit =
-      best.all_s <= best.param.lo + margin || best.all_s >= best.param.hi - margin;
-  const bool explains =
-      best.fit.completed && !at_limit &&
-      best.fit.validated_rms_deg * best.fit.validated_rms_deg < kMaxExplainedRatio * base_ms &&
-      best.fit.delta_bic > kMinBicGain;
-  if (at_limit && best.fit.completed)
-    d.ranking.front().note = "its fitted value is at a limit of the physical range: not named";
-  if (explains) {
+  const bool at_limit = best.fit.note.rfind("its fitted value is at a limit", 0) == 0;
+  const double best_ms =
+      d.held_out ? best.fit.validated_rms_deg * best.fit.validated_rms_deg : best.all_rss / n;
+  // the runner-up of another effect, fitted: a cause is named only with a margin over it
+  const CandidateWork* runner_up = nullptr;
+  for (std::size_t i = 1; i < work.size() && !runner_up; ++i)
+    if (work[i].refined && work[i].fit.completed) runner_up = &work[i];
+  const bool decisive = !runner_up || runner_up->all_rss > kMinRunnerUpRatio * best.all_rss;
+  const bool explains = best.refined && best.fit.completed && !at_limit &&
+                        best_ms < kMaxExplainedRatio * base_ms && best.fit.delta_bic > kMinBicGain;
+  if (explains && !decisive) {
+    d.ambiguous = true;
+    d.ranking.front().note = "fits best, but " + runner_up->fit.effect + " fits within " +
+                             format_fixed(100.0 * (std::sqrt(kMinRunnerUpRatio) - 1.0), 0) +
+                             " % of its rms error (" +
+                             format_fixed(runner_up->fit.training_rms_deg, 3) + " against " +
+                             format_fixed(best.fit.training_rms_deg, 3) +
+                             " deg): the trials do not tell them apart, no cause named";
+  }
+  if (explains && decisive) {
     const double s = best.all_s;
     d.cause = Effect{best.param.info.name, best.param.value(s)};
     d.cause_unit = best.param.info.unit;
     d.ranking.front().value = d.cause->value;
-    d.extended_rms_deg = best.fit.validated_rms_deg;
+    if (d.held_out) {
+      double held = 0.0;
+      for (double r : held_out_rss) held += r;
+      d.extended_rms_deg = std::sqrt(held / n);
+    } else {
+      d.extended_rms_deg = best.fit.training_rms_deg;
+    }
     const ActionModel extended = with_effect(model, *d.cause);
     const RestState extended_rest = find_rest_state(extended);
     for (std::size_t j = 0; j < n_trials; ++j) {
-      d.trials[j].extended = simulate_trace(extended, prepared[j].spec,
-                                            prepared[j].model_duration_s, 1e-4, &extended_rest);
-      d.trials[j].extended_alignment =
-          referenced_to_rest(align(prepared[j].data, d.trials[j].extended, prepared[j].max_shift_s),
-                             d.trials[j].at_rest);
+      TrialReport& r = d.trials[j];
+      r.extended = simulate_trace(extended, prepared[j].spec, prepared[j].model_duration_s, 1e-4,
+                                  &extended_rest);
+      r.extended_alignment = referenced_to_rest(
+          align(prepared[j].data, r.extended, prepared[j].max_shift_s), r.at_rest);
+      add_extended_phases(r.discrepancies, r.extended_alignment);
+      if (d.held_out && fold_choice[j]) {
+        r.held_out_effect = fold_choice[j]->effect;
+        r.held_out_value = fold_choice[j]->value;
+        r.held_out_unit = fold_choice[j]->unit;
+        r.held_out_rms_deg = std::sqrt(held_out_rss[j] / static_cast<double>(samples[j]));
+      }
     }
   }
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;
+  d.gain_basis =
+      !d.cause ? std::string("no cause named: the extended model is the baseline") +
+                     (d.held_out ? "" : " (one trial: no trial can be held out)")
+      : d.held_out
+          ? "held-out trials: each trial's error under the candidate chosen (lowest training "
+            "cost) and fitted on the other trials alone, never on it"
+          : "the fitted trial itself: with one trial no trial can be held out (leave-one-out "
+            "needs two or more), so this is a training gain";
 
   // in words: the worst phases first, then the features
   struct Line {
@@ -719,6 +839,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
                 format_fixed(std::abs(p.mean_deg)) + " deg";
       else
         text += ", within the noise";
+      if (p.has_extended)
+        text += "; with " + d.cause->name + " " + format_fixed(p.extended_rms_deg) + " deg rms";
       lines.push_back({p.rms_deg, text});
     }
     for (const FeatureDiscrepancy& f : r.discrepancies.features)

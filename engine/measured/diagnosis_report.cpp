@@ -73,22 +73,34 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
       trial_events.push_back(item);
     }
     nlohmann::json phases = nlohmann::json::array();
-    for (const PhaseResidual& p : r.discrepancies.phases)
-      phases.push_back({{"phase", p.phase},
-                        {"samples", p.samples},
-                        {"rms_deg", p.rms_deg},
-                        {"mean_deg", p.mean_deg},
-                        {"noise_deg", p.noise_deg}});
+    for (const PhaseResidual& p : r.discrepancies.phases) {
+      nlohmann::json phase{{"phase", p.phase},
+                           {"samples", p.samples},
+                           {"rms_deg", p.rms_deg},
+                           {"mean_deg", p.mean_deg},
+                           {"noise_deg", p.noise_deg}};
+      if (p.has_extended) {  // the same samples with the cause
+        phase["extended_rms_deg"] = p.extended_rms_deg;
+        phase["extended_mean_deg"] = p.extended_mean_deg;
+      }
+      phases.push_back(phase);
+    }
     nlohmann::json features = nlohmann::json::array();
     for (const FeatureDiscrepancy& f : r.discrepancies.features)
       features.push_back(
           {{"feature", f.feature},
            {"unit", f.unit},
            {"measured", f.measured_known ? nlohmann::json(f.measured) : nlohmann::json(nullptr)},
-           {"model", f.model},
+           {"model", f.model_known ? nlohmann::json(f.model) : nlohmann::json(nullptr)},
            {"difference",
             f.measured_known ? nlohmann::json(f.difference) : nlohmann::json(nullptr)},
            {"text", f.text}});
+    if (r.discrepancies.residual_oscillation_hz > 0.0)  // the residual's own figures
+      for (nlohmann::json& f : features)
+        if (f["feature"] == "residual_oscillation") {
+          f["frequency_hz"] = r.discrepancies.residual_oscillation_hz;
+          f["amplitude_deg"] = r.discrepancies.residual_oscillation_deg;
+        }
     trials.push_back(
         {{"file", r.path},
          {"input", r.input_spec},
@@ -100,6 +112,13 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"baseline_rms_deg", std::sqrt(r.baseline_fitted_rss /
                                         static_cast<double>(r.baseline_alignment.residual.size()))},
          {"phases", phases},
+         {"held_out",
+          r.held_out_effect.empty()
+              ? nlohmann::json(nullptr)
+              : nlohmann::json{{"effect", r.held_out_effect},
+                               {"value", r.held_out_value},
+                               {"unit", r.held_out_unit},
+                               {"extended_rms_deg", finite_or_null(r.held_out_rms_deg)}}},
          {"features", features},
          {"measured_events", trial_events}});
   }
@@ -108,9 +127,11 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
     cause = {{"effect", d.cause->name}, {"value", d.cause->value}, {"unit", d.cause_unit}};
   return {{"action", d.action},
           {"baseline_rms_deg", d.baseline_rms_deg},
-          {"extended_rms_deg", d.extended_rms_deg},
-          {"gain", d.gain},
+          {"extended_rms_deg", finite_or_null(d.extended_rms_deg)},
+          {"gain", finite_or_null(d.gain)},
+          {"gain_measured_on", d.gain_basis},
           {"held_out", d.held_out},
+          {"ambiguous", d.ambiguous},
           {"noise_deg", d.noise_deg},
           {"cause", cause},
           {"ranking", ranking},
@@ -181,12 +202,16 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
     const std::string file = fs::path(r.path).filename().string();
     for (const PhaseResidual& p : r.discrepancies.phases)
       phase_rows.push_back({file, p.phase, std::to_string(p.samples), csv_number(p.rms_deg),
-                            csv_number(p.mean_deg), csv_number(p.noise_deg)});
+                            csv_number(p.mean_deg), csv_number(p.noise_deg),
+                            p.has_extended ? csv_number(p.extended_rms_deg) : std::string(),
+                            p.has_extended ? csv_number(p.extended_mean_deg) : std::string()});
     write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
               trial_traces_table(r));
   }
   write_text_csv((fs::path(dir) / "phases.csv").string(),
-                 {"file", "phase", "samples", "rms_deg", "mean_deg", "noise_deg"}, phase_rows);
+                 {"file", "phase", "samples", "rms_deg", "mean_deg", "noise_deg",
+                  "extended_rms_deg", "extended_mean_deg"},
+                 phase_rows);
 }
 
 }  // namespace pat

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -11,43 +12,119 @@
 namespace pat {
 namespace {
 
-std::string label(const ModelTrace& m, double t) {
+/// The phase of every measured sample, read from the measurement and the key, not from the
+/// model being judged (DESIGN.md section 4): its impacts (detect_events), the measured hammer
+/// (lightly smoothed, referred to rest by the alignment's angle offset) and the key (the file's
+/// own key column, else the key of the input the model was driven with). Only let-off, which a
+/// hammer trace does not show, is taken from the model: its escapement splits the rise into
+/// acceleration and free flight. After an impact the hammer is in rebound and check until the
+/// key starts to rise (release: once its angle has fallen kKeyRiseFraction of its travel below
+/// its highest point since the impact, dated back to where that fall began), and back once it is
+/// within kNearRestDeg of rest (return). A later stroke starts where its rise leaves the lowest
+/// level since the last impact.
+std::vector<std::string> measured_phases(const MeasuredTrial& trial, const ModelTrace& model,
+                                         const Alignment& al,
+                                         const std::vector<MeasuredEvent>& events,
+                                         double noise_deg) {
   constexpr double kNearRestDeg = 0.3;
-  const double angle = m.hammer_at(t);
-  const double rate = (m.hammer_at(t + 5e-4) - m.hammer_at(t - 5e-4)) / 1e-3;  // deg/s
-  double last_impact = -1.0, last_check = -1.0, next_escapement = 1e9, next_impact = 1e9;
-  for (double x : m.impact_t) {
-    if (x <= t + 1e-3) last_impact = std::max(last_impact, x);
-    if (x > t + 1e-3) next_impact = std::min(next_impact, x);
+  // 5 % of the key's travel (0.5 mm at the key front for a 10 mm dip): above the key sensor's
+  // ±0.1 mm scatter near rest, well below the whole release
+  constexpr double kKeyRiseFraction = 0.05;
+  const std::size_t n = trial.t.size();
+  std::vector<std::string> phase(n, "rest");
+  if (n == 0) return phase;
+  // the hammer: a 5-sample moving average (the noise / √5), in degrees from rest
+  std::vector<double> h(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
+    double sum = 0.0;
+    for (std::size_t j = a; j <= b; ++j) sum += trial.hammer_deg[j];
+    h[i] = sum / static_cast<double>(b - a + 1) - al.angle_offset_deg;
   }
-  for (double x : m.check_t)
-    if (x <= t) last_check = std::max(last_check, x);
-  for (double x : m.escapement_t)
-    if (x > t) next_escapement = std::min(next_escapement, x);
-  if (last_impact >= 0 && t >= last_impact - 1e-3 && t <= last_impact + 2e-3) return "impact";
-  if (last_impact >= 0 && t > last_impact) {
-    const bool caught_after = last_check > last_impact;
-    if ((caught_after && t <= last_check + 10e-3) || (!caught_after && t <= last_impact + 60e-3))
-      return "rebound_and_check";
+  const double near = std::max(kNearRestDeg, 3.0 * noise_deg / std::sqrt(5.0));
+  std::vector<double> key(n);
+  for (std::size_t i = 0; i < n; ++i)
+    key[i] =
+        trial.key_deg.size() == n ? trial.key_deg[i] : model.key_at(trial.t[i] - al.time_offset_s);
+  const auto [key_lo, key_hi] = std::minmax_element(key.begin(), key.end());
+  const double key_rise = kKeyRiseFraction * (*key_hi - *key_lo);
+  auto index_at = [&](double t) {
+    return static_cast<std::size_t>(std::lower_bound(trial.t.begin(), trial.t.end(), t) -
+                                    trial.t.begin());
+  };
+  std::vector<double> impacts;
+  for (const MeasuredEvent& e : events)
+    if (e.type == "impact") impacts.push_back(e.t);
+  std::sort(impacts.begin(), impacts.end());
+  auto set_range = [&](std::size_t from, std::size_t to, const char* name) {
+    for (std::size_t i = from; i < std::min(to, n); ++i) phase[i] = name;
+  };
+  if (impacts.empty()) {  // no strike: rest, the rise to the highest point, the fall back
+    std::size_t rise = 0;
+    while (rise < n && h[rise] <= near) ++rise;
+    const std::size_t top =
+        static_cast<std::size_t>(std::max_element(h.begin(), h.end()) - h.begin());
+    set_range(rise, top + 1, "acceleration");
+    for (std::size_t i = top + 1; i < n; ++i) phase[i] = h[i] <= near ? "return" : "release";
+    return phase;
   }
-  // before any strike a hammer near rest is at rest, or starting its rise
-  if (angle < kNearRestDeg && last_impact < 0) return rate < 10.0 ? "rest" : "acceleration";
-  if (angle < kNearRestDeg) return "return";
-  // after a check the hammer is held (a creep of a few deg/s included) until the key lets it go:
-  // then it falls, or is thrown up by a repetition lever first, both at tens of deg/s or more
-  // (a rise into another strike within 50 ms is that strike's acceleration, below)
-  constexpr double kHeldRateDegPerS = 50.0;
-  const bool rising_to_strike = rate > 0.0 && next_impact - t < 50e-3;
-  if (last_impact >= 0 && last_check > last_impact && !rising_to_strike)
-    return std::abs(rate) < kHeldRateDegPerS ? "rebound_and_check" : "release";
-  if (rate > 5.0) {
-    double prev_escapement = -1.0;
-    for (double x : m.escapement_t)
-      if (x <= t) prev_escapement = std::max(prev_escapement, x);
-    return prev_escapement > last_impact && next_escapement > t ? "free_flight" : "acceleration";
+  std::size_t segment_start = 0;  // after the previous impact phase
+  double rest_level = 0.0;        // the hammer's level before the first rise, when seen
+  for (std::size_t k = 0; k < impacts.size(); ++k) {
+    const std::size_t impact_from = index_at(impacts[k] - 1e-3);
+    const std::size_t impact_to = std::min(n, index_at(impacts[k] + 2e-3 + 1e-9));
+    // the rise: after the last sample near the lowest level since the segment's start
+    double lowest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = segment_start; i < impact_from; ++i) lowest = std::min(lowest, h[i]);
+    std::size_t rise = segment_start;
+    for (std::size_t i = segment_start; i < impact_from; ++i)
+      if (h[i] <= lowest + near) rise = i + 1;
+    if (k == 0 && rise >= 10) {  // a median of the rest before the stroke
+      std::vector<double> before(h.begin(), h.begin() + static_cast<std::ptrdiff_t>(rise));
+      std::nth_element(before.begin(), before.begin() + before.size() / 2, before.end());
+      rest_level = before[before.size() / 2];
+    }
+    std::size_t flight = impact_from;
+    for (double e : model.escapement_t) {
+      const std::size_t i = index_at(e + al.time_offset_s);
+      if (i >= rise && i < impact_from) {
+        flight = i;
+        break;
+      }
+    }
+    // (a later stroke's rise relabels the end of the previous stroke's release or return)
+    set_range(rise, flight, "acceleration");
+    set_range(flight, impact_from, "free_flight");
+    set_range(impact_from, impact_to, "impact");
+    // after it, up to the next stroke's impact phase: rebound and check, release, return
+    const std::size_t end = k + 1 < impacts.size() ? index_at(impacts[k + 1] - 1e-3) : n;
+    std::size_t release = end;
+    if (key_rise > 0.0) {
+      std::size_t highest = std::min(index_at(impacts[k]), n - 1);
+      for (std::size_t i = highest; i < end; ++i) {
+        if (key[i] >= key[highest]) highest = i;
+        if (key[i] < key[highest] - key_rise) {
+          // dated where this rise began: back from here while the key stood higher before (the
+          // smoothed key falls monotonically; its slow scatter while held ends the walk there)
+          std::size_t start = i;
+          while (start > impact_to && key[start - 1] > key[start]) --start;
+          release = std::max(start, impact_to);
+          break;
+        }
+      }
+    }
+    std::size_t back = end;
+    for (std::size_t i = release; i < end; ++i)
+      if (h[i] <= rest_level + near) {
+        back = i;
+        break;
+      }
+    set_range(impact_to, release, "rebound_and_check");
+    set_range(release, back, "release");
+    set_range(back, end, "return");
+    segment_start = impact_to;
   }
-  if (rate < -5.0) return "release";
-  return last_check > last_impact && last_impact >= 0 ? "rebound_and_check" : "acceleration";
+  return phase;
 }
 
 /// Hammer angular rate just before the peak at tp: slope over [tp − 2.5 ms, tp − 0.5 ms].
@@ -74,9 +151,9 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
   const double dt_shift = al.time_offset_s;
   std::map<std::string, std::pair<double, double>> sums;  // Σr, Σr²
   std::map<std::string, int> counts;
+  out.phase_of_sample = measured_phases(trial, model, al, events, noise_deg);
   for (std::size_t i = 0; i < trial.t.size(); ++i) {
-    const std::string p = label(model, trial.t[i] - dt_shift);
-    out.phase_of_sample.push_back(p);
+    const std::string& p = out.phase_of_sample[i];
     sums[p].first += al.residual[i];
     sums[p].second += al.residual[i] * al.residual[i];
     ++counts[p];
@@ -198,36 +275,105 @@ TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTra
       }
     if (n > 0) add("settling_level", "deg", sm / n, sn / n, "hammer level over the last 20 ms");
   }
-  // oscillation in the residual after the impacts (rebound and check phases): a DFT scan
+  // oscillation in the residual after the impact: a DFT over the longest contiguous stretch of
+  // rebound and check (a transform over samples gathered from several stretches has peaks of
+  // their gaps), detrended (a drift is not an oscillation) and Hann-windowed. Searched from four
+  // periods in the stretch (or 10 Hz) to 500 Hz or a quarter of the sampling rate; a strongest
+  // amplitude at either end of that range is no peak (it rises beyond the range) and is not
+  // reported.
   {
-    std::vector<double> t, r;
-    for (std::size_t i = 0; i < trial.t.size(); ++i)
-      if (out.phase_of_sample[i] == "rebound_and_check" || out.phase_of_sample[i] == "impact") {
-        t.push_back(trial.t[i]);
-        r.push_back(al.residual[i]);
+    std::size_t best_from = 0, best_length = 0;
+    for (std::size_t i = 0; i < trial.t.size();) {
+      if (out.phase_of_sample[i] != "rebound_and_check") {
+        ++i;
+        continue;
       }
-    if (t.size() > 20) {
+      std::size_t j = i;
+      while (j < trial.t.size() && out.phase_of_sample[j] == "rebound_and_check") ++j;
+      if (j - i > best_length) best_from = i, best_length = j - i;
+      i = j;
+    }
+    if (best_length > 20) {
+      std::vector<double> t(trial.t.begin() + static_cast<std::ptrdiff_t>(best_from),
+                            trial.t.begin() + static_cast<std::ptrdiff_t>(best_from + best_length));
+      std::vector<double> r(
+          al.residual.begin() + static_cast<std::ptrdiff_t>(best_from),
+          al.residual.begin() + static_cast<std::ptrdiff_t>(best_from + best_length));
+      // remove the least-squares line
+      const double m = static_cast<double>(t.size());
+      double st = 0, sr = 0, stt = 0, str = 0;
+      for (std::size_t i = 0; i < t.size(); ++i)
+        st += t[i], sr += r[i], stt += t[i] * t[i], str += t[i] * r[i];
+      const double denominator = m * stt - st * st;
+      const double slope = denominator > 0 ? (m * str - st * sr) / denominator : 0.0;
+      const double intercept = (sr - slope * st) / m;
+      for (std::size_t i = 0; i < t.size(); ++i) r[i] -= intercept + slope * t[i];
+      const double span = t.back() - t.front();
+      const double interval = span / (m - 1.0);
+      // at least four periods in the stretch: a residual's slow curve after the detrend (a
+      // drift that is not a line) has its largest components at one to three periods
+      const double f_lo = std::max(10.0, 4.0 / span);
+      const double f_hi = std::min(500.0, 0.25 / interval);
+      const double f_step = std::min(2.0, 0.25 / span);  // a quarter of the resolution 1/span
+      // a Hann window: without it, the stretch's ends leak a slow curve into sidelobes that
+      // look like peaks at (k + 1/2) periods; amplitudes are divided by the window's sum
+      std::vector<double> window(t.size());
+      double window_sum = 0.0;
+      for (std::size_t i = 0; i < t.size(); ++i) {
+        window[i] = 0.5 - 0.5 * std::cos(2 * kPi * (t[i] - t.front()) / span);
+        window_sum += window[i];
+      }
       double best = 0, best_f = 0;
-      for (double f = 10.0; f <= 500.0; f += 2.0) {
+      for (double f = f_lo; f <= f_hi; f += f_step) {
         double c = 0, s = 0;
         for (std::size_t i = 0; i < t.size(); ++i) {
-          c += r[i] * std::cos(2 * kPi * f * t[i]);
-          s += r[i] * std::sin(2 * kPi * f * t[i]);
+          c += window[i] * r[i] * std::cos(2 * kPi * f * t[i]);
+          s += window[i] * r[i] * std::sin(2 * kPi * f * t[i]);
         }
-        const double amp = 2.0 * std::hypot(c, s) / static_cast<double>(t.size());
+        const double amp = 2.0 * std::hypot(c, s) / window_sum;
         if (amp > best) best = amp, best_f = f;
       }
-      out.residual_oscillation_hz = best_f;
-      out.residual_oscillation_deg = best;
-      FeatureDiscrepancy f{"residual_oscillation", "Hz", best_f, 0.0, best_f, true, ""};
-      f.text =
-          "strongest oscillation in the residual after the impact: " + format_fixed(best_f, 0) +
-          " Hz, amplitude " + format_fixed(best) + " deg" +
-          (best > 3.0 * noise_deg ? " (above the noise)" : " (within the noise)");
+      const std::string range = format_fixed(f_lo, 0) + "–" + format_fixed(f_hi, 0) + " Hz";
+      const std::string stretch = "the residual over " + format_fixed(1e3 * span, 0) +
+                                  " ms of rebound and check from " +
+                                  format_fixed(1e3 * t.front(), 1) + " ms";
+      FeatureDiscrepancy f{"residual_oscillation", "Hz", 0.0, 0.0, 0.0, false, ""};
+      f.model_known = false;  // a property of the residual alone: nothing measured or modelled
+      const bool inside = f_hi > f_lo && best_f > f_lo + 0.5 * f_step && best_f < f_hi - f_step;
+      if (inside && best > 3.0 * noise_deg) {
+        out.residual_oscillation_hz = best_f;
+        out.residual_oscillation_deg = best;
+        f.text = "strongest oscillation in " + stretch + ": " + format_fixed(best_f, 0) +
+                 " Hz, amplitude " + format_fixed(best) + " deg (above the noise)";
+      } else if (inside) {
+        f.text = "no oscillation above the noise in " + stretch + " within " + range +
+                 " (strongest " + format_fixed(best_f, 0) + " Hz, " + format_fixed(best, 3) +
+                 " deg)";
+      } else {
+        f.text = "no oscillation peak in " + stretch + " within " + range +
+                 " (the strongest component lies at the edge of that range)";
+      }
       out.features.push_back(f);
     }
   }
   return out;
+}
+
+void add_extended_phases(TrialDiscrepancies& d, const Alignment& extended) {
+  for (PhaseResidual& p : d.phases) {
+    double sum = 0.0, sum2 = 0.0;
+    int count = 0;
+    for (std::size_t i = 0; i < d.phase_of_sample.size() && i < extended.residual.size(); ++i)
+      if (d.phase_of_sample[i] == p.phase) {
+        sum += extended.residual[i];
+        sum2 += extended.residual[i] * extended.residual[i];
+        ++count;
+      }
+    if (count == 0) continue;
+    p.has_extended = true;
+    p.extended_rms_deg = std::sqrt(sum2 / count);
+    p.extended_mean_deg = sum / count;
+  }
 }
 
 }  // namespace pat

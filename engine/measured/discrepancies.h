@@ -29,6 +29,11 @@ struct PhaseResidual {
   /// noise when the phase has fewer than kMinPhaseNoiseSamples such differences, or when its
   /// own estimate is 0.
   double noise_deg = 0.0;
+  /// The same samples under the model with the named cause (add_extended_phases): what it
+  /// mends and what it makes worse, phase by phase.
+  bool has_extended = false;
+  double extended_rms_deg = 0.0;
+  double extended_mean_deg = 0.0;
 };
 
 /// Second differences a phase needs for its own noise estimate (a median of fewer scatters by
@@ -42,28 +47,34 @@ struct FeatureDiscrepancy {
   double model = 0.0;
   double difference = 0.0;  ///< measured − model
   bool measured_known = true;
-  std::string text;  ///< in words
+  std::string text;         ///< in words
+  bool model_known = true;  ///< false for a property of the residual alone (its oscillation)
 };
 
 struct TrialDiscrepancies {
   std::vector<std::string> phase_of_sample;  ///< one per measured sample
   std::vector<PhaseResidual> phases;         ///< every phase that has samples, in order
   std::vector<FeatureDiscrepancy> features;
-  double residual_oscillation_hz = 0.0;   ///< dominant frequency of the residual after impacts
-  double residual_oscillation_deg = 0.0;  ///< its amplitude
+  /// Dominant frequency of the residual over the longest stretch of rebound and check, and its
+  /// amplitude; 0 when there is no peak inside the range searched.
+  double residual_oscillation_hz = 0.0;
+  double residual_oscillation_deg = 0.0;
 };
 
-/// Phases come from the aligned model (its events and motion): rest before the first motion,
-/// acceleration while the hammer rises before escapement (from its first 10°/s), free flight
-/// from escapement to 1 ms before the impact, impact (−1 ms … +2 ms), rebound and check (until
-/// 10 ms after the check, or 60 ms after the impact, and then while the caught hammer moves less
-/// than 50°/s), release while the hammer falls (or, caught, moves faster: a repetition lever
-/// throwing it up as the key rises), return once it is within 0.3° of rest after a strike.
+/// Phases come from the measurement and the key, not from the model judged: rest before the
+/// stroke, acceleration from the rise (the last sample near the lowest level since the last
+/// impact), free flight from the model's escapement (let-off is not visible in a hammer trace)
+/// to 1 ms before the measured impact, impact (−1 ms … +2 ms around the measured impact), rebound
+/// and check until the key starts to rise (the file's key, else the input's), release while the
+/// hammer falls back from there, return once it is within 0.3 deg of its rest level.
 /// Features compare the measured events (detect_events) with the model's, read from the aligned
 /// model trace at the file's samples by the same detect_events (the same rule on both sides).
 TrialDiscrepancies find_discrepancies(const MeasuredTrial& trial, const ModelTrace& model,
                                       const Alignment& alignment,
                                       const std::vector<MeasuredEvent>& measured_events,
                                       double noise_deg);
+
+/// Adds the residual of the extended model (aligned like the baseline) to each phase.
+void add_extended_phases(TrialDiscrepancies& discrepancies, const Alignment& extended);
 
 }  // namespace pat

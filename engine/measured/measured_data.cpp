@@ -50,8 +50,14 @@ MeasuredTrial measured_from_table(const CsvTable& table, const std::string& path
   for (std::size_t i = 1; i < trial.t.size(); ++i)
     if (!(trial.t[i] > trial.t[i - 1])) {
       std::ostringstream out;
-      out << path << ": time_s is not increasing at data row " << i + 1 << " (" << trial.t[i - 1]
-          << " s, then " << trial.t[i] << " s)";
+      // the file's line where it was read from a file, as every other message names it
+      if (table.row_lines.size() == trial.t.size())
+        out << path << ": line " << table.row_lines[i] << ": time_s is not increasing ("
+            << trial.t[i - 1] << " s on line " << table.row_lines[i - 1] << ", then " << trial.t[i]
+            << " s)";
+      else
+        out << path << ": time_s is not increasing at data row " << i + 1 << " (" << trial.t[i - 1]
+            << " s, then " << trial.t[i] << " s)";
       throw InputError(out.str());
     }
   const double dt = trial.sample_interval_s();

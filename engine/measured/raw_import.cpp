@@ -179,6 +179,12 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
           ? std::min(total - 1, static_cast<std::size_t>(std::floor(o.to_s * o.rate_hz + 1e-9)))
           : total - 1;
   const std::size_t count = first <= last && first < total ? last - first + 1 : 0;
+  if (o.from_s > file_duration) {  // the window lies beyond the recording's end
+    problem << "--from " << o.from_s << " s is beyond the end of the recording: column "
+            << trace.column << " holds " << total << " samples, " << file_duration << " s at "
+            << o.rate_hz << " samples/s";
+    throw InputError(located_message(path, "", problem.str()));
+  }
   if (count < kMinMeasuredSamples) {
     problem << "only " << count << " sample" << (count == 1 ? "" : "s") << " in the window "
             << o.from_s << " s to " << std::min(o.to_s, file_duration) << " s of column "

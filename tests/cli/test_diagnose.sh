@@ -36,6 +36,11 @@ grep -q '"effect": "repetition_spring"' d.json || fail "diagnose: the hidden spr
 for f in diagnosis.json ranking.csv phases.csv mass_traces.csv sine_traces.csv diagnosis.png; do
   [[ -s "report/$f" ]] || fail "diagnose --report: no $f"
 done
+# what the gain is measured on, each trial's held-out error, and the extended model by phase
+grep -q '"gain_measured_on": "held-out trials' d.json || fail "diagnose: gain_measured_on"
+grep -q '"held_out": {' d.json || fail "diagnose: no per-trial held-out error"
+head -1 report/phases.csv | grep -q 'extended_rms_deg,extended_mean_deg' ||
+  fail "phases.csv: no extended_rms_deg/extended_mean_deg columns"
 
 # DESIGN.md's form, "--measured CSV...": several files after one option read as the repeated form
 "$exe" diagnose --action grand --measured mass.csv sine.csv --candidate repetition_spring \
@@ -65,6 +70,26 @@ expect_failure "unknown effect" "unknown effect 'wobble'" \
 [[ ! -e x.csv ]] || fail "synth wrote a file despite a bad effect"
 expect_failure "effect range" "outside its physical range" \
   simulate --action grand --input mass:1kg --duration 0.1 --effect joint_friction.hammer=1000
+# an option's value given twice, which one of them would silently win or count twice
+expect_failure "synth effect twice" "--effect: shank_flex is given twice" \
+  synth --action grand --input mass:1kg --duration 0.1 --effect shank_flex=100 \
+  --effect shank_flex=200 --out x.csv
+[[ ! -e x.csv ]] || fail "synth wrote a file despite an effect given twice"
+expect_failure "candidate twice" "--candidate: shank_flex is given twice" \
+  diagnose --action grand --measured mass.csv --candidate shank_flex --candidate shank_flex
+expect_failure "null seeds with a family" "--null-seeds with --family" \
+  bench-diagnose --null-seeds 1 --family shank_flex
+# synth never replaces real measured data (import-raw's '# source:' line)
+cp "$source_dir/assets/measured/kawai_kg3c_e4_strike_with_key.csv" real.csv
+expect_failure "synth over real data" "the file holds real measured data" \
+  synth --action grand --input mass:1kg --duration 0.1 --out real.csv
+cmp -s real.csv "$source_dir/assets/measured/kawai_kg3c_e4_strike_with_key.csv" ||
+  fail "synth changed a real measured file"
+# a non-increasing time is named by its file line, as every other error in a file is
+printf 'time_s,hammer_angle_deg\n0,0\n0.0005,0\n0.0005,1\n' >badtime.csv
+awk 'BEGIN { for (i = 1; i <= 30; ++i) printf "%g,0\n", 0.001 + i * 0.0005 }' >>badtime.csv
+expect_failure "time not increasing" "badtime.csv: line 4: time_s is not increasing" \
+  diagnose --action grand --measured badtime.csv
 
 if [[ $failures -ne 0 ]]; then
   echo "$failures failure(s)" >&2

@@ -68,6 +68,12 @@ expect_failure "calibration header" "no offset and gain for sensor 'hammer'" \
 expect_failure "calibration monotone" "bump.csv: line 5: the calibration is not monotone" \
   strike.txt --rate 2000 --column 2 --calibration bump.csv
 expect_failure "two files" "one raw trace at a time" strike.txt text.txt --rate 2000
+# a window beyond the recording's end names the end, not a window that "ends before it starts"
+expect_failure "window beyond the end" "--from 60 s is beyond the end of the recording" \
+  strike.txt --rate 2000 --column 2 --from 60 --to 70
+# --bits applies to counts only: refused on normalized readings rather than ignored
+expect_failure "bits on readings" "holds normalized readings in [0, 1], not ADC counts" \
+  strike.txt --rate 2000 --column 1 --bits 24
 # a calibration is one recording's: another's offsets and gains, or another sensor's column, are
 # refused (the data set's calibration.csv names its recording and lists hammer, then damper)
 printf '# Sensor calibration points for other.txt\n# hammer offset 0.5 gain 0.2\n%s\n0,0\n0.1,1\n' \

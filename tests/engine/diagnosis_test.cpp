@@ -52,7 +52,7 @@ TEST(MeasuredData, BadFilesGetClearMessages) {
   EXPECT_NE(read_error("hammer_angle_deg\n0\n1\n").find("missing column 'time_s'"),
             std::string::npos);
   EXPECT_NE(read_error("time_s,hammer_angle_deg\n" + rows(30, 5e-4) + "0.001,0\n")
-                .find("time_s is not increasing at data row 31"),
+                .find("line 32: time_s is not increasing"),
             std::string::npos);
   const std::string nan = read_error("time_s,hammer_angle_deg\n0,0\n0.0005,nan\n" + rows(30, 5e-4));
   EXPECT_NE(nan.find("line 3"), std::string::npos) << nan;
@@ -145,6 +145,10 @@ TEST(Diagnosis, RealStrikeRunsEndToEnd) {
   ASSERT_NE(at, std::string::npos) << impact_time->text;
   EXPECT_NEAR(std::stod(impact_time->text.substr(at + 9)), file_peak_ms, 2.0) << impact_time->text;
   EXPECT_FALSE(d.held_out);
+  // one trial: leave-one-out is impossible, so no held-out error is given, and the gain says it
+  // is measured on the fitted trial itself
+  for (const CandidateFit& c : d.ranking) EXPECT_TRUE(std::isnan(c.validated_rms_deg)) << c.effect;
+  EXPECT_NE(d.gain_basis.find("one trial"), std::string::npos) << d.gain_basis;
   EXPECT_EQ(d.ranking.size(), 2u);
   EXPECT_FALSE(d.discrepancies.empty());
   EXPECT_GT(d.baseline_rms_deg, 0.0);
@@ -192,15 +196,50 @@ MeasuredTrial sampled_at_2000_fps(const ModelTrace& m, const std::string& path, 
   return trial;
 }
 
-TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
-  // a model hammer: at rest, a rise from 50 ms (escapement at 78, impact at 80 ms), caught at
-  // 90 ms and held while creeping 2 deg/s, thrown up at 100 deg/s from 0.30 s as the key rises,
-  // then falling back to rest by 0.45 s
+/// A measured stroke at 2000 fps (0 … 0.6 s): at rest, a rise from 50 ms to the string at 80 ms,
+/// caught at 13 deg by 90 ms and held (creeping 2 deg/s) while the key stays down; the key rises
+/// from 0.30 s, and the hammer falls back to rest from 0.31 to 0.40 s.
+MeasuredTrial measured_stroke() {
+  MeasuredTrial trial;
+  trial.path = "stroke.csv";
+  for (int i = 0; i <= 1200; ++i) {
+    const double t = i * 5e-4;
+    double a = 0.0;
+    if (t < 0.05)
+      a = 0.0;
+    else if (t < 0.08)
+      a = 21.0 * (t - 0.05) / 0.03;
+    else if (t < 0.09)
+      a = 21.0 - 8.0 * (t - 0.08) / 0.01;
+    else if (t < 0.31)
+      a = 13.0 + 2.0 * (t - 0.09);
+    else if (t < 0.40)
+      a = 13.44 * (0.40 - t) / 0.09;
+    double key = 0.0;
+    if (t >= 0.045 && t < 0.07)
+      key = 5.0 * (t - 0.045) / 0.025;
+    else if (t >= 0.07 && t < 0.30)
+      key = 5.0;
+    else if (t >= 0.30 && t < 0.36)
+      key = 5.0 * (0.36 - t) / 0.06;
+    trial.t.push_back(t);
+    trial.hammer_deg.push_back(a);
+    trial.key_deg.push_back(key);
+  }
+  return trial;
+}
+
+TEST(Discrepancies, PhasesComeFromTheMeasurementAndTheKeyNotFromTheModel) {
+  // The model judged follows the measured stroke until the key rises, then its repetition lever
+  // throws the hammer up slowly (30 deg/s, 13.4 to 18 deg until 0.45 s): the real Kawai strikes'
+  // error. Labelled from the model, that throw was "rebound_and_check" (held: below 50 deg/s)
+  // and the check was blamed for the release's error; the key rising means release.
+  const MeasuredTrial trial = measured_stroke();
   ModelTrace m;
   m.dt = 1e-4;
   for (int i = 0; i <= 6000; ++i) {
     const double t = i * m.dt;
-    double a = 0.0;
+    double a = 17.92;  // thrown up, then held there
     if (t < 0.05)
       a = 0.0;
     else if (t < 0.08)
@@ -209,36 +248,102 @@ TEST(Discrepancies, PhasesFollowTheStrokeAndTheHeldHammer) {
       a = 21.0 - 8.0 * (t - 0.08) / 0.01;
     else if (t < 0.30)
       a = 13.0 + 2.0 * (t - 0.09);
-    else if (t < 0.35)
-      a = 13.42 + 100.0 * (t - 0.30);
     else if (t < 0.45)
-      a = 18.42 * (0.45 - t) / 0.10;
+      a = 13.42 + 30.0 * (t - 0.30);
     m.hammer_deg.push_back(a);
     m.key_deg.push_back(0.0);
   }
   m.escapement_t = {0.078};
   m.impact_t = {0.080};
   m.check_t = {0.090};
-  const MeasuredTrial trial = sampled_at_2000_fps(m, "phases.csv", 1200);
   Alignment al;
   al.residual.assign(trial.t.size(), 0.0);
-  const TrialDiscrepancies d = find_discrepancies(trial, m, al, {}, 0.01);
+  const auto events = detect_events(trial.t, trial.hammer_deg, 0.01);
+  const TrialDiscrepancies d = find_discrepancies(trial, m, al, events, 0.01);
   auto phase_at = [&](double t) {
     return d.phase_of_sample[static_cast<std::size_t>(std::lround(t / 5e-4))];
   };
   EXPECT_EQ(phase_at(0.02), "rest");
-  EXPECT_EQ(phase_at(0.050), "acceleration");  // at rest but rising: not a return
-  EXPECT_EQ(phase_at(0.0785), "free_flight");  // the impact phase starts 1 ms before it
+  EXPECT_EQ(phase_at(0.055), "acceleration");
+  EXPECT_EQ(phase_at(0.0785), "free_flight");  // from the model's let-off; impact 1 ms before
   EXPECT_EQ(phase_at(0.080), "impact");
-  EXPECT_EQ(phase_at(0.2), "rebound_and_check");  // held, creeping
-  EXPECT_EQ(phase_at(0.32), "release");           // thrown up as the key rises
-  EXPECT_EQ(phase_at(0.40), "release");           // falling
-  EXPECT_EQ(phase_at(0.55), "return");
-  // the same rise into a second strike (at 0.34 s) is that strike's acceleration
-  m.impact_t = {0.080, 0.340};
-  const TrialDiscrepancies again = find_discrepancies(trial, m, al, {}, 0.01);
-  EXPECT_EQ(again.phase_of_sample[static_cast<std::size_t>(std::lround(0.32 / 5e-4))],
-            "acceleration");
+  EXPECT_EQ(phase_at(0.2), "rebound_and_check");  // held, creeping, the key down
+  EXPECT_EQ(phase_at(0.299), "rebound_and_check");
+  EXPECT_EQ(phase_at(0.32), "release");  // the key rises: whatever the model does
+  EXPECT_EQ(phase_at(0.36), "release");
+  EXPECT_EQ(phase_at(0.5), "return");
+}
+
+TEST(Discrepancies, TheResidualOscillationIsReadOverOneStretchAndOnlyAsAPeak) {
+  const MeasuredTrial trial = measured_stroke();
+  ModelTrace m;
+  m.dt = 1e-4;
+  for (int i = 0; i <= 6000; ++i) {
+    m.hammer_deg.push_back(0.0);
+    m.key_deg.push_back(0.0);
+  }
+  m.escapement_t = {0.078};
+  const auto events = detect_events(trial.t, trial.hammer_deg, 0.01);
+  Alignment al;
+  al.residual.assign(trial.t.size(), 0.0);
+  // phases first (they do not depend on the residual)
+  const std::vector<std::string> phases =
+      find_discrepancies(trial, m, al, events, 0.01).phase_of_sample;
+  auto residual_feature = [](const TrialDiscrepancies& d) {
+    for (const FeatureDiscrepancy& f : d.features)
+      if (f.feature == "residual_oscillation") return f;
+    return FeatureDiscrepancy{};
+  };
+  // a 150 Hz ringing of 0.5 deg in the check, a drift and a step elsewhere: found at 150 Hz
+  // (the search steps by a quarter of 1/0.22 s, about 1.1 Hz; 2 Hz of tolerance) and 0.5 deg
+  // (within 10 %: the stretch holds 32 whole periods, the leakage is small)
+  for (std::size_t i = 0; i < trial.t.size(); ++i)
+    al.residual[i] = phases[i] == "rebound_and_check" ? 0.5 * std::sin(2 * kPi * 150.0 * trial.t[i])
+                     : phases[i] == "release"         ? -2.0
+                                                      : 0.1 * trial.t[i];
+  TrialDiscrepancies d = find_discrepancies(trial, m, al, events, 0.01);
+  EXPECT_NEAR(d.residual_oscillation_hz, 150.0, 2.0);
+  EXPECT_NEAR(d.residual_oscillation_deg, 0.5, 0.05);
+  // a property of the residual alone: nothing measured or modelled to compare
+  EXPECT_FALSE(residual_feature(d).measured_known);
+  EXPECT_FALSE(residual_feature(d).model_known);
+  // a slow curved drift in the check (2 deg over its 0.22 s) is no oscillation: after the
+  // detrend and the window it leaves nothing above the noise in the range searched, and nothing
+  // is reported (the old transform reported the 10 Hz floor of its search)
+  for (std::size_t i = 0; i < trial.t.size(); ++i) {
+    const double x = (trial.t[i] - 0.082) / 0.22;
+    al.residual[i] = phases[i] == "rebound_and_check" ? 2.0 * x * x : 0.0;
+  }
+  d = find_discrepancies(trial, m, al, events, 0.01);
+  EXPECT_EQ(d.residual_oscillation_hz, 0.0);
+  EXPECT_NE(residual_feature(d).text.find("no oscillation"), std::string::npos)
+      << residual_feature(d).text;
+}
+
+TEST(Diagnosis, EachLeaveOneOutFitNeverSeesItsHeldOutTrial) {
+  // Three synthetic trials with the repetition spring at 0.5: the fit that leaves the first out
+  // must be the fit on the other two alone, from scratch (it had started from the fit on all
+  // three and moved two steps, so it equalled that fit to 16 digits on the real strikes)
+  const ActionModel grand = test::shipped("grand");
+  const std::vector<MeasuredTrial> trials =
+      hidden_effect_trials(grand, Effect{"repetition_spring", 0.5}, 3);
+  DiagnoseOptions options;
+  options.candidates = {"repetition_spring"};
+  const Diagnosis all = diagnose(grand, trials, options);
+  const Diagnosis without_first = diagnose(grand, {trials[1], trials[2]}, options);
+  ASSERT_EQ(all.ranking.front().fold_values.size(), 3u);
+  // the same scan grid and the same local fits on the same two trials: equal to rounding
+  EXPECT_NEAR(all.ranking.front().fold_values[0], without_first.ranking.front().value, 1e-9);
+  ASSERT_TRUE(all.cause.has_value());
+  EXPECT_NE(all.gain_basis.find("held-out"), std::string::npos) << all.gain_basis;
+  // each trial's held-out error is reported, under the fit made without it
+  for (std::size_t j = 0; j < 3; ++j) {
+    EXPECT_EQ(all.trials[j].held_out_effect, "repetition_spring");
+    EXPECT_NEAR(all.trials[j].held_out_value, all.ranking.front().fold_values[j], 1e-12);
+    EXPECT_TRUE(std::isfinite(all.trials[j].held_out_rms_deg));
+    // and the extended model's error phase by phase beside the baseline's
+    for (const PhaseResidual& p : all.trials[j].discrepancies.phases) EXPECT_TRUE(p.has_extended);
+  }
 }
 
 TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
@@ -422,8 +527,9 @@ INSTANTIATE_TEST_SUITE_P(Seeds, NullDiagnosis, ::testing::Values(101, 102, 103))
 // and its closest rival as candidates (to keep the suite's time reasonable; the full library runs
 // in `pianoaction bench-diagnose`). A seed passes when the diagnosis names the hidden family,
 // estimates its value within 25 % and gains at least 50 % on held-out trials. Required: every
-// seed of every family (the must-show; 24 of 24 pass, the estimates within 1 % but one
-// backcheck seed, 4 %, and one hammer felt seed, 12 %).
+// seed of every family (the must-show; 24 of 24 pass with the held-out fits made from
+// scratch, the estimates within 2 %, the lowest held-out gains 54 % (a backcheck seed) and 60 %
+// (a repetition spring seed)).
 struct HiddenCase {
   std::string effect;
   std::vector<std::string> rivals;
