@@ -196,21 +196,25 @@ MeasuredTrial sampled_at_2000_fps(const ModelTrace& m, const std::string& path, 
   return trial;
 }
 
-/// A measured stroke at 2000 fps (0 … 0.6 s): at rest, a rise from 50 ms to the string at 80 ms,
-/// caught at 13 deg by 90 ms and held (creeping 2 deg/s) while the key stays down; the key rises
-/// from 0.30 s, and the hammer falls back to rest from 0.31 to 0.40 s.
+/// The stroke's start (deg, t < 0.09 s): at rest, a rise from 50 ms to the string (21 deg) at
+/// 80 ms, caught at 13 deg by 90 ms.
+double rise_and_catch_deg(double t) {
+  if (t < 0.05) return 0.0;
+  if (t < 0.08) return 21.0 * (t - 0.05) / 0.03;
+  return 21.0 - 8.0 * (t - 0.08) / 0.01;
+}
+
+/// A measured stroke at 2000 fps (0 … 0.6 s): the rise and catch above, held (creeping 2 deg/s)
+/// while the key stays down; the key rises from 0.30 s, and the hammer falls back to rest from
+/// 0.31 to 0.40 s.
 MeasuredTrial measured_stroke() {
   MeasuredTrial trial;
   trial.path = "stroke.csv";
   for (int i = 0; i <= 1200; ++i) {
     const double t = i * 5e-4;
     double a = 0.0;
-    if (t < 0.05)
-      a = 0.0;
-    else if (t < 0.08)
-      a = 21.0 * (t - 0.05) / 0.03;
-    else if (t < 0.09)
-      a = 21.0 - 8.0 * (t - 0.08) / 0.01;
+    if (t < 0.09)
+      a = rise_and_catch_deg(t);
     else if (t < 0.31)
       a = 13.0 + 2.0 * (t - 0.09);
     else if (t < 0.40)
@@ -240,12 +244,8 @@ TEST(Discrepancies, PhasesComeFromTheMeasurementAndTheKeyNotFromTheModel) {
   for (int i = 0; i <= 6000; ++i) {
     const double t = i * m.dt;
     double a = 17.92;  // thrown up, then held there
-    if (t < 0.05)
-      a = 0.0;
-    else if (t < 0.08)
-      a = 21.0 * (t - 0.05) / 0.03;
-    else if (t < 0.09)
-      a = 21.0 - 8.0 * (t - 0.08) / 0.01;
+    if (t < 0.09)
+      a = rise_and_catch_deg(t);
     else if (t < 0.30)
       a = 13.0 + 2.0 * (t - 0.09);
     else if (t < 0.45)
