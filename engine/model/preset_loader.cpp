@@ -209,13 +209,18 @@ FeltCurve read_curve(const PresetReader& r, const json& object, const std::strin
 // than the loading one, if any: such a felt gives back more energy than it takes (the unloading
 // branch of the paper's eq. 3 lies above the loading branch). Sampled every 1/400 of the range,
 // with the exact exponential.
+/// F = a x e^(b x) + c x (N, x in m) with the exact exponential (for the check below and its
+/// message; the dynamics use felt_curve_force's faster one).
+double exact_felt_force(const FeltCurve& curve, double x) {
+  return curve.a * x * std::exp(curve.b * x) + curve.c * x;
+}
+
 std::optional<double> unloading_above_loading(const FeltLaw& law, double max_penetration) {
-  auto force = [](const FeltCurve& k, double x) { return k.a * x * std::exp(k.b * x) + k.c * x; };
   constexpr int kSamples = 400;
   for (int i = 1; i <= kSamples; ++i) {
     const double x = max_penetration * i / kSamples;
-    const double loading = force(law.loading, x);
-    if (force(law.unloading, x) > loading + 1e-9 * std::abs(loading)) return x;
+    const double loading = exact_felt_force(law.loading, x);
+    if (exact_felt_force(law.unloading, x) > loading + 1e-9 * std::abs(loading)) return x;
   }
   return std::nullopt;
 }
@@ -336,7 +341,7 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
     contact.max_penetration = r.positive(item, path, "max_penetration_mm") * kMm;
     if (const auto x = unloading_above_loading(contact.law, contact.max_penetration)) {
       auto force = [&](const FeltCurve& k) {
-        return format_fixed(k.a * *x * std::exp(k.b * *x) + k.c * *x, 2) + " N";
+        return format_fixed(exact_felt_force(k, *x), 2) + " N";
       };
       r.fail(path + ".felt",
              (felt.is_string() ? "felt law '" + felt.get<std::string>() + "': its" : "its") +

@@ -98,12 +98,20 @@ double bridle_slack_mm(const ActionModel& model, const RestState& rest) {
 
 }  // namespace
 
+namespace {
+
+bool within(double measured, double target, double tolerance) {
+  return std::abs(measured - target) <= tolerance;  // false for NaN
+}
+
+}  // namespace
+
 bool within_tolerance(const RegulationSetting& setting, double measured) {
-  return std::abs(measured - setting.target) <= setting.tolerance;  // false for NaN
+  return within(measured, setting.target, setting.tolerance);
 }
 
 bool SettingReading::within_tolerance() const {
-  return std::abs(measured - target) <= tolerance;  // the same test as above, on its own copy
+  return within(measured, target, tolerance);
 }
 
 double measure_setting(const ActionModel& model, const std::string& name,
