@@ -60,20 +60,37 @@ QString test_title(PracticeTest test) {
 }
 
 /// The readings of a test, " (label value unit; …)", or "" when none has a value.
-QString readings_text(const std::vector<Observation>& seen) {
+/// A reading as the list shows it: a fraction of the hammer's travel as a percentage, a count
+/// (no unit: strikes of one blow) as a whole number, else two decimals ("0.00", not "-0.00").
+QString reading_value_text(const Observation& o, double raw) {
+  const bool fraction = o.unit == "fraction";
+  double value = fraction ? 100.0 * raw : raw;
+  if (std::abs(value) < 0.005) value = 0.0;
+  const bool count = o.unit.empty() && value == std::round(value);
+  return QStringLiteral("%1 %2")
+      .arg(value, 0, 'f', count ? 0 : 2)
+      .arg(fraction ? QStringLiteral("%") : QString::fromStdString(o.unit))
+      .trimmed();
+}
+
+/// " (label value; …)" of the readings, each that differs from the regulated action's by more
+/// than the rounding of the digits shown followed by that one ("45.45 mm, regulated action
+/// 45.00 mm"); `differing` counts those. (Shown to hundredths, 0.00 against −0.01 may be a
+/// difference of 0.005: 0.015 is the least that is surely more than rounding.)
+QString readings_text(const std::vector<Observation>& seen,
+                      const std::vector<Observation>& regulated, int& differing) {
   QStringList readings;
+  differing = 0;
   for (const Observation& o : seen) {
     if (!o.value) continue;
-    const bool fraction = o.unit == "fraction";  // of the hammer's travel: read as a percentage
-    double value = fraction ? 100.0 * *o.value : *o.value;
-    if (std::abs(value) < 0.005) value = 0.0;  // "0.00", not "-0.00"
-    // a count (no unit: strikes of one blow) as a whole number, "1" not "1.00"
-    const bool count = o.unit.empty() && value == std::round(value);
-    readings << QStringLiteral("%1 %2 %3")
-                    .arg(QString::fromStdString(o.label))
-                    .arg(value, 0, 'f', count ? 0 : 2)
-                    .arg(fraction ? QStringLiteral("%") : QString::fromStdString(o.unit))
-                    .trimmed();
+    QString text = QString::fromStdString(o.label) + " " + reading_value_text(o, *o.value);
+    const Observation* reg = find_observation(regulated, o.id);
+    const double scale = o.unit == "fraction" ? 100.0 : 1.0;  // in the units shown
+    if (reg && reg->value && std::abs(*o.value - *reg->value) * scale >= 0.015) {
+      text += QObject::tr(", regulated action %1").arg(reading_value_text(o, *reg->value));
+      ++differing;
+    }
+    readings << text;
   }
   return readings.isEmpty() ? QString() : " (" + readings.join("; ") + ")";
 }
@@ -278,7 +295,7 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
         const int used = session_->tests_used() - session_->check_tests();
         const bool check = session_->tests_are_checks();
         const int number = session_->tests_used();
-        held_readings_ = [this, name, symptoms, seen, used, check, number] {
+        held_readings_ = [this, name, symptoms, seen, regulated, used, check, number] {
           // a heading per test, so that a check's findings on the corrected action are not read
           // as more symptoms of the fault (they had run on under the earlier ones)
           auto* heading = new QListWidgetItem(
@@ -290,13 +307,23 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
           heading->setFlags(Qt::ItemIsEnabled);  // a heading, not a finding to select
           heading->setBackground(symptoms_->palette().alternateBase());
           symptoms_->addItem(heading);
-          if (symptoms.empty())  // with the readings, which a correction is fine-tuned by
+          if (symptoms.empty()) {  // with the readings, which a correction is fine-tuned by
             // "nothing" as far as a technician's gauge or eye tells (engine:
             // noticeable_difference), which the regulation panel's ±0.05 mm tolerances are finer
-            // than: said, so that a correction 0.07 mm off is not read as exact
-            symptoms_->addItem(tr("%1: nothing differs from a regulated action as far as a "
-                                  "technician's gauge or eye tells%2.")
-                                   .arg(name, readings_text(seen)));
+            // than: said, and the readings that are not the regulated action's named with its,
+            // so that a correction 0.45 mm off is not read as exact
+            int differing = 0;
+            const QString readings = readings_text(seen, regulated, differing);
+            symptoms_->addItem(
+                differing == 0
+                    ? tr("%1: the same as a regulated action%2.").arg(name, readings)
+                    : tr("%1: no difference a technician's gauge or eye would notice, but "
+                         "%2 not the regulated action's%3.")
+                          .arg(name,
+                               differing == 1 ? tr("one reading is")
+                                              : tr("%n readings are", "", differing),
+                               readings));
+          }
           for (const Symptom& s : symptoms)
             symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
           symptoms_->scrollToBottom();

@@ -204,7 +204,7 @@ AnswerJudgement judge_answers(const Exercise& exercise, const std::vector<FaultA
   std::set<std::string> named;
   for (const FaultAnswer& a : given) {
     if (!named.insert(a.setting).second) {
-      judgement.remarks.push_back(a.setting + ": named twice");
+      judgement.remarks.push_back(setting_words(a.setting) + ": named twice");
       judgement.score -= per_fault;
       continue;
     }
@@ -212,16 +212,16 @@ AnswerJudgement judge_answers(const Exercise& exercise, const std::vector<FaultA
                                     [&](const FaultAnswer& e) { return e.setting == a.setting; });
     if (match == expected.end()) {
       // its reading may well be off: another setting's adjuster can move it along
-      judgement.remarks.push_back(a.setting +
+      judgement.remarks.push_back(setting_words(a.setting) +
                                   ": its adjuster was not moved (a reading can be off because "
                                   "another setting moves it)");
       judgement.score -= per_fault;
     } else if (match->direction == a.direction) {
-      judgement.remarks.push_back(a.setting + ": right setting, right direction");
+      judgement.remarks.push_back(setting_words(a.setting) + ": right setting, right direction");
       judgement.score += per_fault;
       ++right;
     } else {
-      judgement.remarks.push_back(a.setting + ": right setting, wrong direction");
+      judgement.remarks.push_back(setting_words(a.setting) + ": right setting, wrong direction");
       judgement.score += 0.4 * per_fault;
     }
   }

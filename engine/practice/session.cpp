@@ -144,6 +144,9 @@ AnswerJudgement PracticeSession::answer(const std::vector<FaultAnswer>& given, d
   else if (!judgement.correct && !diagnosed_ && !repeated)
     ++wrong_answers_after_first_;
   diagnosed_ = diagnosed_ || judgement.correct;
+  const std::vector<FaultAnswer> expected = exercise_answers(exercise_);
+  for (const FaultAnswer& a : given)  // a hidden setting named with its direction is found
+    if (std::find(expected.begin(), expected.end(), a) != expected.end()) found_.insert(a.setting);
   std::ostringstream detail;
   detail << answers_text(given) << " → " << (judgement.correct ? "correct" : "not correct") << " ("
          << format_number(judgement.score) << ")";
@@ -158,35 +161,54 @@ double PracticeSession::diagnosis_marks() const {
 
 std::string PracticeSession::hint(double t_s) {
   if (revealed_) return reveal(t_s);  // shown already: no more to hint, nothing to charge
+  // the hints lead to the first hidden setting not yet named right, each one's from its start
+  // (the symptom), so that with two faults the hints after the first is found are about the
+  // second
   const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
-  const FaultAnswer& first = answers.front();
+  auto target = std::find_if(answers.begin(), answers.end(),
+                             [&](const FaultAnswer& a) { return !found_.count(a.setting); });
+  if (target == answers.end()) target = answers.begin();  // all found: the first again
+  const FaultAnswer& fault = *target;
+  const int stage = hints_by_setting_[fault.setting]++;
+  // with two faults: "one hidden setting" until one is found, then "the other"
+  const bool several = answers.size() > 1;
+  const bool other = several && !found_.empty() && !found_.count(fault.setting);
+  const std::string subject = !several ? "The hidden setting"
+                              : other  ? "The other hidden setting"
+                                       : "One hidden setting";
   std::string text;
-  switch (hints_used_) {
+  switch (stage) {
     case 0: {
       // the symptom of the setting's own measurement when it was seen: another symptom may be
       // a consequence that points at a different setting (a grand's lever height also moves
       // the hammer's rest, which reads as a hammer-blow symptom)
-      const std::string own = own_observation(regulated_.kind, first.setting);
+      const std::string own = own_observation(regulated_.kind, fault.setting);
       const auto direct = std::find_if(symptoms_seen_.begin(), symptoms_seen_.end(),
                                        [&](const Symptom& s) { return s.observation == own; });
-      text = symptoms_seen_.empty()
-                 ? "Run the four tests first: the rest geometry, a slow key press, a forte blow "
-                   "and repeated notes; compare each number with the regulated action."
-                 : "Start from this symptom and ask which setting makes it: " +
-                       (direct != symptoms_seen_.end() ? direct : symptoms_seen_.begin())->text;
+      if (symptoms_seen_.empty())
+        text =
+            "Run the four tests first: the rest geometry, a slow key press, a forte blow and "
+            "repeated notes; compare each number with the regulated action.";
+      else if (other && direct == symptoms_seen_.end())
+        text =
+            "The other hidden setting's symptom is not among those seen yet: run the tests "
+            "that measure the settings not yet named.";
+      else
+        text = std::string(other ? "For the other hidden setting, start" : "Start") +
+               " from this symptom and ask which setting makes it: " +
+               (direct != symptoms_seen_.end() ? direct : symptoms_seen_.begin())->text;
       break;
     }
     case 1:
-      text = "The hidden setting is measured in " + measuring_test(regulated_.kind, first.setting) +
-             ".";
+      text = subject + " is measured in " + measuring_test(regulated_.kind, fault.setting) + ".";
       break;
     case 2:
-      text = "Its measured value is " +
-             std::string(first.direction == "more" ? "larger" : "smaller") + " than its target.";
+      text = subject + "'s measured value is " +
+             std::string(fault.direction == "more" ? "larger" : "smaller") + " than its target.";
       break;
     default:
-      text = "The hidden setting is " + setting_words(first.setting) + " (" + first.direction +
-             " than its target)" + (answers.size() > 1 ? ", and there is a second one." : ".");
+      text = subject + " is " + setting_words(fault.setting) + " (" + fault.direction +
+             " than its target)" + (several && !other ? ", and there is a second one." : ".");
   }
   ++hints_used_;
   history_.push_back({t_s, "hint", text});

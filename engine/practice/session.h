@@ -152,6 +152,8 @@ class PracticeSession {
   std::set<std::string> given_answers_;  ///< every answer given, in words
   bool diagnosed_ = false;
   bool revealed_ = false;
+  std::set<std::string> found_;                  ///< hidden settings named right in some answer
+  std::map<std::string, int> hints_by_setting_;  ///< hints given toward each hidden setting
   std::optional<AnswerJudgement> first_answer_;
   std::vector<Symptom> symptoms_seen_;
   std::optional<SessionScore> final_score_;

@@ -22,9 +22,15 @@ bool jack_never_escaped(const std::vector<Observation>& seen) {
          escapement->missing_reason.find("never escapes") != std::string::npos;
 }
 
-/// " (X mm; regulated action: Y mm)"
+/// " (X mm; regulated action: Y mm)"; a fraction of the hammer's travel (the damper's start)
+/// as a percentage, as the regulation panel and the practice panel's table show it:
+/// " (36 % of the hammer's travel; regulated action: 50 %)"
 std::string versus(const Observation& seen, double regulated, int digits = 2) {
-  const std::string unit = seen.unit.empty() || seen.unit == "fraction" ? "" : " " + seen.unit;
+  if (seen.unit == "fraction")
+    return " (" + format_fixed(100.0 * *seen.value, 0) +
+           " % of the hammer's travel; regulated action: " + format_fixed(100.0 * regulated, 0) +
+           " %)";
+  const std::string unit = seen.unit.empty() ? "" : " " + seen.unit;
   return " (" + format_fixed(*seen.value, digits) + unit +
          "; regulated action: " + format_fixed(regulated, digits) + unit + ")";
 }

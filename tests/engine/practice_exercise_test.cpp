@@ -386,6 +386,39 @@ TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
   EXPECT_EQ(hint.find(symptoms.front().text), std::string::npos) << hint;
 }
 
+TEST(PracticeSession, HintsLeadToTheHiddenSettingNotYetFound) {
+  // Two hidden faults: once the trainee has named one right, the hints are about the other,
+  // from their first step, and say "the other"; before it, "one hidden setting".
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 0, 2);
+  e.faults = {{"let_off", 1.0}, {"checking", 2.0}};
+  PracticeSession session(e, model);
+  const std::vector<FaultAnswer> hidden = exercise_answers(e);
+  session.hint(5.0);  // "run the four tests first" (none seen)
+  const std::string before = session.hint(6.0);
+  EXPECT_EQ(before.rfind("One hidden setting is measured in", 0), 0u) << before;
+
+  EXPECT_FALSE(session.answer({hidden[0], {"drop", "more"}}, 10.0).correct);
+  session.hint(20.0);  // the other setting's first step
+  const std::string where = session.hint(21.0);
+  EXPECT_EQ(where.rfind("The other hidden setting is measured in", 0), 0u) << where;
+  session.hint(22.0);
+  const std::string named = session.hint(23.0);
+  EXPECT_EQ(named,
+            "The other hidden setting is checking (" + hidden[1].direction + " than its target).");
+  EXPECT_EQ(session.hints_used(), 6);  // each one counts
+}
+
+TEST(PracticeSession, AnswerRemarksNameTheSettingsInTradeWords) {
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 0, 1);
+  e.faults = {{"lever_height", -0.16}};
+  const AnswerJudgement j = judge_answers(e, {exercise_answers(e).front(), {"let_off", "more"}});
+  ASSERT_EQ(j.remarks.size(), 2u);
+  EXPECT_EQ(j.remarks[0], "lever height: right setting, right direction");
+  EXPECT_EQ(j.remarks[1].rfind("let-off: its adjuster was not moved", 0), 0u) << j.remarks[1];
+}
+
 TEST(PracticeSession, RevealShowsTheAnswerAndLaterAnswersDoNotCount) {
   const ActionModel& model = shipped_model("grand");
   const Exercise e = checking_exercise(model);

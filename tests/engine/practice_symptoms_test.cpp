@@ -334,6 +334,21 @@ TEST(PracticeSymptoms, RepetitionCountsAreSymptomsAgainstTheRegulatedCount) {
   EXPECT_EQ(ids(0.33, 1.0), std::set<std::string>{"failure_to_repeat"});
 }
 
+// The damper's start is a fraction of the hammer's travel; its symptom reads it as the
+// regulation panel does, a percentage (it said "(0.36; regulated action: 0.50)").
+TEST(PracticeSymptoms, DamperStartReadsAsAPercentageOfTheHammersTravel) {
+  auto start = [](double fraction) {
+    return std::vector<Observation>{
+        {"slow_press.damper_start_fraction", "damper starts to lift", "fraction", fraction, ""}};
+  };
+  const std::vector<Symptom> symptoms = describe_symptoms(start(0.36), start(0.5));
+  ASSERT_EQ(symptoms.size(), 1u);
+  EXPECT_EQ(symptoms[0].id, "damper_early");
+  EXPECT_NE(symptoms[0].text.find("(36 % of the hammer's travel; regulated action: 50 %)"),
+            std::string::npos)
+      << symptoms[0].text;
+}
+
 // A regulated action strikes once in a forte blow with the key held: the backcheck holds the
 // hammer (the upright struck twice before issue 7 was mended).
 TEST(PracticeObservations, RegulatedForteBlowStrikesOnce) {

@@ -269,14 +269,26 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (const pat::HiddenFault& f : panel->session()->exercise().faults)
     panel->move_adjuster(f.setting, -f.adjuster_mm);
   QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.0);
+  // a check that finds nothing a gauge would notice still names the readings that are not the
+  // regulated action's, with its (the hammer blow's screw 0.03 mm off: the hammer 0.38 mm
+  // from its place, under the ruler's 0.5 mm)
+  panel->move_adjuster("hammer_blow", 0.03);
+  panel->run_test(pat::PracticeTest::Rest);
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  const QString off = panel->symptom_lines().last();
+  QVERIFY2(off.startsWith("Rest geometry: no difference a technician's gauge or eye would "
+                          "notice, but ") &&
+               off.contains(" not the regulated action's (") &&
+               off.contains(", regulated action 45.") && off.contains(" mm"),
+           qPrintable(off));
+  panel->move_adjuster("hammer_blow", -0.03);
   // a test of the corrected action that finds nothing amiss still gives its readings, which a
   // correction is fine-tuned by
   panel->run_test(pat::PracticeTest::Rest);
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
   const QString last = panel->symptom_lines().last();
-  QVERIFY2(last.startsWith("Rest geometry: nothing differs from a regulated action as far as a "
-                           "technician's gauge or eye tells (") &&
-               last.contains(" mm"),
+  QVERIFY2(last.startsWith("Rest geometry: the same as a regulated action (") &&
+               last.contains(" mm") && !last.contains("regulated action 4"),
            qPrintable(last));
   // under a heading that says it checks the correction: its findings are not the fault's
   const QStringList lines = panel->symptom_lines();
