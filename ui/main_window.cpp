@@ -147,7 +147,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     if (!controller_->playing() ||
         (!controller_->replaying() && controller_->input_at(frame.t) != running_input_shown_))
       show_run_status();
-    if (practice_test_end_s_ >= 0.0 && frame.t >= practice_test_end_s_) end_practice_test_shown();
+    if (practice_test_end_s_ >= 0.0 && frame.t >= practice_test_end_s_) {
+      // the test shown has played what it read (four repeated notes, not the 24 the input
+      // would go on to in its 8 s): the action stops there, for the class to count; Play
+      // lets it run on
+      controller_->pause();
+      end_practice_test_shown();
+    }
   });
   connect(controller_, &PlaybackController::runStopped, this, [this](const QString& cause) {
     end_practice_test_shown();  // what it found is not kept waiting for a run that cannot go on

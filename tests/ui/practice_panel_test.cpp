@@ -527,6 +527,13 @@ void PracticePanelTest::readings_wait_for_the_playback() {
   QVERIFY2(shown_t >= 0.05 - 1e-9, qPrintable(QString("readings shown at t = %1 s").arg(shown_t)));
   // (on a machine slower than the playback the readings come after it; then nothing was held)
   if (held) QVERIFY(!panel->readings_held());
+  // and the action stops there: what is on screen is what the test read (the repeated notes
+  // played on at 12 Hz, 24 notes in their 8 s, after the four that were counted)
+  QVERIFY(!window.controller()->playing());
+  const double paused_t = window.controller()->current_frame().t;
+  QTest::qWait(300);
+  QCOMPARE(window.controller()->current_frame().t, paused_t);
+  QVERIFY2(paused_t < 0.05 + 0.01, qPrintable(QString("paused at t = %1 s").arg(paused_t)));
 
   // The rest with the playback paused as soon as a test starts: its readings must then wait
   // (whatever the machine's speed).
