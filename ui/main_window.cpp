@@ -1024,11 +1024,13 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
     measured.y.push_back(s.measured);
     gap.x.push_back(s.t);
     gap.y.push_back(s.hammer_string_gap_mm);
+    // the setting is in the title: a row says when and where its adjuster was, in the width
+    // of the dock ("let-off at t = 0.33 s (adjuster 0.00 …" was cut), to the thousandth that a
+    // 0.075 mm step needs
     shown.table.push_back(
-        {tr("%1 at t = %2 s (adjuster %3 mm)")
-             .arg(setting)
+        {tr("t = %1 s, adjuster %2 mm")
              .arg(s.t, 0, 'f', 2)
-             .arg(adjuster_mm_text(s.adjuster_mm, 2)),
+             .arg(adjuster_mm_text(s.adjuster_mm, 3, true)),
          std::isfinite(s.measured) ? QString::number(s.measured, 'f', 3) : tr("no reading"), unit});
   }
   // the adjuster as the run turned it, from its trace: steps of rate × interval (the paper's

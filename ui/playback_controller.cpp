@@ -165,7 +165,16 @@ void PlaybackController::pause() {
   if (!playing_) return;
   playing_ = false;
   if (!replay_) worker_->set_target_time(display_time_);
+  restart_factor_window();  // nothing is achieved while paused ("achieved —", not the last)
   emit playingChanged(false);
+}
+
+void PlaybackController::restart_factor_window() {
+  factor_window_sim_ = factor_window_wall_ = 0.0;
+  redraws_in_window_ = 0;
+  if (achieved_factor_ == 0.0) return;
+  achieved_factor_ = 0.0;
+  emit realtimeFactorChanged(0.0);
 }
 
 void PlaybackController::step_forward(int frames) {
@@ -237,8 +246,11 @@ void PlaybackController::seek(double t) {
 }
 
 void PlaybackController::set_speed(double speed) {
+  const double before = speed_;
   speed_ = std::clamp(speed, 1e-3, 1.0);
   worker_->set_sample_interval(sample_interval());
+  // what was achieved at the speed before says nothing of this one: measured afresh
+  if (speed_ != before) restart_factor_window();
 }
 
 double PlaybackController::sample_interval() const {

@@ -113,6 +113,9 @@ class PlaybackController : public QObject {
   void on_run_stopped(int run_id, const QString& cause);
 
  private:
+  /// Starts the achieved-speed measurement afresh and reports "nothing achieved" (paused, or
+  /// the speed changed).
+  void restart_factor_window();
   void drain();
   /// Paused: `frames` frames forward, computed if needed (step_forward without its navigated()).
   void advance(int frames);
@@ -153,7 +156,7 @@ class PlaybackController : public QObject {
   bool has_frame_ = false;
   // achieved real-time factor and redraw rate, averaged over about half a second
   double factor_window_sim_ = 0.0, factor_window_wall_ = 0.0;
-  double achieved_factor_ = 0.0;
+  double achieved_factor_ = 0.0;  ///< 0 while paused and until a window at the speed is measured
   int redraws_in_window_ = 0;
   double redraw_rate_hz_ = 0.0;
 };

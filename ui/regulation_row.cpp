@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clamping_spin_box.h"
 #include "setting_names.h"
 #include "step_slider.h"
 
@@ -41,12 +42,17 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
                     static_cast<int>(std::round(adjuster.max * 1e3 * kSliderStepsPerMm)));
   slider_->setToolTip(tip);
   slider_->setMinimumWidth(60);  // the window fits 1024 pixels (a projector)
-  spin_ = new QDoubleSpinBox(parent);
+  spin_ = new ClampingSpinBox(parent);
   spin_->setRange(adjuster.min * 1e3, adjuster.max * 1e3);
   spin_->setDecimals(2);
   spin_->setSingleStep(0.05);
   spin_->setSuffix(" mm");
-  spin_->setToolTip(tip);
+  // the adjuster's travel said where it is typed; a number beyond it goes to its end
+  const QString travel = tr("Its adjuster turns from %1 to %2 mm (a number beyond is taken to "
+                            "the nearest end).")
+                             .arg(adjuster_mm_text(adjuster.min * 1e3, 2, true))
+                             .arg(adjuster_mm_text(adjuster.max * 1e3, 2, true));
+  spin_->setToolTip(tip + "\n" + travel);
   spin_->setKeyboardTracking(false);
   // named for a screen reader by the setting they turn (their label is rich text beside them)
   const QString accessible = tr("%1 adjuster").arg(setting_title(adjuster.name));

@@ -99,6 +99,7 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
   connect(speed_, &QComboBox::currentIndexChanged, this,
           [this](int i) { controller_->set_speed(speeds()[i]); });
   factor_ = new QLabel(this);
+  factor_->setObjectName("achieved_speed");
   fit_factor_width();
   factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
   bottom->addWidget(factor_);

@@ -14,6 +14,7 @@
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
@@ -28,8 +29,8 @@
 #include "playback_controller.h"
 #include "regulation/deregulation.h"
 #include "regulation_runner.h"
-#include "setting_names.h"
 #include "run_controls.h"
+#include "setting_names.h"
 #include "ui_test_support.h"
 
 using pat::ui::MainWindow;
@@ -81,6 +82,27 @@ void RegulationPanelTest::rows_follow_the_settings_with_their_ranges() {
   // the technician's order of the preset's settings
   for (std::size_t i = 0; i < model.regulation.size(); ++i)
     QCOMPARE(window.regulation()->rows()[i]->name(), model.regulation[i].name);
+
+  // a number typed beyond the adjuster's travel goes to its end, and the field's tooltip says
+  // so (typed "99", the field had stayed at 0.00 without a word); last: moving
+  // an adjuster makes a new model, which `model` above no longer is
+  window.show();
+  RegulationRow* checking = window.regulation()->row("checking");
+  QDoubleSpinBox* spin = checking->spin_box();
+  QVERIFY2(spin->toolTip().contains("Its adjuster turns from "), qPrintable(spin->toolTip()));
+  auto type = [&](const QString& text) {
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, text);
+    QTest::keyClick(spin, Qt::Key_Return);
+  };
+  type("99");
+  QCOMPARE(spin->value(), spin->maximum());
+  type("-99");
+  QCOMPARE(spin->value(), spin->minimum());
+  type("0.5");
+  QCOMPARE(spin->value(), 0.5);
+  QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.5e-3);
 }
 
 void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
@@ -201,7 +223,9 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
                                          1);
   window.run_deregulation_demo();
   QVERIFY(runner->running());
-  QVERIFY(wait_until([&] { return progress.count() >= 2; }, 120000));
+  // a few key cycles (3 Hz), each giving a reading for the result's table
+  QVERIFY(wait_until([&] { return !progress.isEmpty() && progress.last().at(0).toDouble() >= 0.1; },
+                     120000));
   runner->cancel();
   QVERIFY(wait_until([&] { return done; }, 60000));
   QVERIFY(!runner->running());
@@ -217,6 +241,20 @@ void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {
   // the selector above does not claim the result as one of its analyses
   QVERIFY2(window.analyses()->description().startsWith("Shown: Deregulation of let-off"),
            qPrintable(window.analyses()->description()));
+  // each reading's row: when and where the adjuster was, short enough to be read whole in the
+  // dock, the adjuster to the thousandth (its steps are 0.075 mm on some settings)
+  const QTableWidget* table = window.analyses()->table();
+  QVERIFY(table->rowCount() > 0);
+  const QTableWidgetItem* first_row = table->item(0, 0);
+  QVERIFY2(QRegularExpression("^t = \\d+\\.\\d\\d s, adjuster [+-]?\\d+\\.\\d{3} mm$")
+               .match(first_row->text())
+               .hasMatch(),
+           qPrintable(first_row->text()));
+  QVERIFY2(QFontMetrics(table->font()).horizontalAdvance(first_row->text()) + 12 <=
+               table->columnWidth(0),
+           qPrintable(QString("%1 px wide in a %2 px column")
+                          .arg(QFontMetrics(table->font()).horizontalAdvance(first_row->text()))
+                          .arg(table->columnWidth(0))));
   window.start("");  // back to a live run
   QVERIFY(!window.controller()->replaying());
 }

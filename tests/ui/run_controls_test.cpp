@@ -10,6 +10,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFile>
+#include <QLabel>
 #include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSlider>
@@ -56,6 +57,7 @@ class RunControlsTest : public QObject {
   void a_malformed_csv_keeps_the_run_on_screen();
   void a_short_recording_says_its_end_is_held();
   void switching_to_the_slowest_speed_keeps_playing();
+  void the_achieved_speed_is_not_kept_past_a_pause_or_a_new_speed();
   void the_regulation_dock_shows_every_column();
   void switching_actions_rebuilds_panel_and_view();
   void the_run_trace_export_holds_every_column();
@@ -529,6 +531,31 @@ void RunControlsTest::switching_to_the_slowest_speed_keeps_playing() {
   QVERIFY2(wait_until([&] { return c->display_time() > before + 6e-3; }, 12000),
            qPrintable(QString("stuck at %1 ms").arg(c->display_time() * 1e3)));
   QVERIFY(c->playing());
+}
+
+// "Speed: 1/100  achieved 1/5.0" with the action at rest (1/5 was the practice slow press's):
+// a pause or another speed shows nothing achieved until a measurement at it is made.
+void RunControlsTest::the_achieved_speed_is_not_kept_past_a_pause_or_a_new_speed() {
+  MainWindow window;
+  window.show();
+  window.open_action("grand");
+  window.run_controls()->set_speed_index(3);  // 1/10
+  window.start("motion:sine:2:full");
+  auto* achieved = window.run_controls()->findChild<QLabel*>("achieved_speed");
+  QVERIFY(achieved);
+  const QString nothing = QStringLiteral("achieved —");
+  // measured over half a second of wall time
+  QVERIFY2(wait_until([&] { return achieved->text().startsWith("achieved 1/"); }, 10000),
+           qPrintable(achieved->text()));
+  window.controller()->pause();
+  QCOMPARE(achieved->text(), nothing);
+  window.controller()->play();
+  QVERIFY2(wait_until([&] { return achieved->text() != nothing; }, 10000),
+           qPrintable(achieved->text()));
+  window.run_controls()->set_speed_index(4);  // 1/20
+  QCOMPARE(achieved->text(), nothing);
+  QVERIFY2(wait_until([&] { return achieved->text() != nothing; }, 10000),
+           qPrintable(achieved->text()));
 }
 
 void RunControlsTest::the_regulation_dock_shows_every_column() {
