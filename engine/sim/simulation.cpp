@@ -194,7 +194,7 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
   result.status = sim.stopped() ? "stopped" : "ok";
   result.stop_cause = sim.stop_cause();
   result.events = sim.events();
-  result.end_time = sim.time();
+  result.end_time = reported_time(sim.time());
   result.steps = sim.steps();
   result.rhs_evaluations = sim.rhs_evaluations();
   result.wall_time_s = std::chrono::duration<double>(wall_end - wall_start).count();

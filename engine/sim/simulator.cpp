@@ -246,13 +246,13 @@ void Simulator::detect_events() {
   if (jack_reset_ && marks.escapement_contact >= 0 && previous[marks.escapement_contact] > 0.0 &&
       current[marks.escapement_contact] <= 0.0 && last_letoff_active_ >= 0.0 &&
       t1_ - last_letoff_active_ < kEscapementWindow) {
-    report({"escapement", t1_, 0.0, gap_now()});
+    report({"escapement", reported_time(t1_), 0.0, gap_now()});
     jack_reset_ = false;
   }
   if (became_active(marks.string_contact)) {
     // strike-point speed toward the string just before contact
     const Vec2 vel = dynamics_->point_velocity(marks.hammer, marks.strike_point, q0_, v0_);
-    report({"impact", t1_, -marks.string_normal.dot(vel), gap_now()});
+    report({"impact", reported_time(t1_), -marks.string_normal.dot(vel), gap_now()});
     impact_since_check_ = true;
   }
   // check: the backcheck catches the returning hammer. A contact is a catch once it has taken a
@@ -266,7 +266,7 @@ void Simulator::detect_events() {
           dynamics_->point_velocity(marks.hammer, marks.strike_point, q, v));
     };
     if (became_active(marks.check_contact) && impact_since_check_)
-      pending_check_ = PendingCheck{t1_, gap_now(), speed_away(q0_, v0_)};
+      pending_check_ = PendingCheck{reported_time(t1_), gap_now(), speed_away(q0_, v0_)};
     if (pending_check_) {
       if (!(current[marks.check_contact] > 0.0)) {
         pending_check_.reset();  // a brush: the hammer goes on
@@ -283,7 +283,7 @@ void Simulator::detect_events() {
   const bool at_bottom = key_at_bottom(current);
   if (at_bottom) {
     if (!key_was_at_bottom_ && (last_key_bottom_ < 0.0 || t1_ - last_key_bottom_ > 5e-3))
-      report({"key_bottom", t1_, 0.0, gap_now()});
+      report({"key_bottom", reported_time(t1_), 0.0, gap_now()});
     last_key_bottom_ = t1_;
   }
   key_was_at_bottom_ = at_bottom;

@@ -8,6 +8,7 @@
 // check, key_bottom) are detected from contact penetrations at step ends.
 #pragma once
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -17,6 +18,14 @@
 #include "sim/simulation.h"
 
 namespace pat {
+
+/// An event's time as reported (s): the step's end to the nanosecond. A fixed-step integrator's
+/// time is a running sum of its steps (2863 steps of 1e-5 s end at 0.028629999999999003 s); a
+/// nanosecond is a ten-thousandth of the default step, far below what an event's time can tell,
+/// and the integration keeps its own time.
+inline double reported_time(double t) {
+  return std::round(t * 1e9) / 1e9;  // 1e9 is exact: the double nearest the nanosecond count
+}
 
 /// A backcheck contact is a catch once the returning hammer has lost this much of its speed away
 /// from the string; one that opens before is a brush. Shared by the simulator's check event and

@@ -5,6 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 #include <vector>
@@ -51,6 +54,22 @@ TEST(Events, EveryEventIsReportedOnceInTimeOrderAmongTheStepsNewEvents) {
       return e.type == "check";
     })) << action;
   }
+}
+
+// An event's time is reported to the nanosecond: on w2's fixed 1e-5 s step it is a whole
+// number of steps, written as such ("0.02863", not the running sum's 0.028629999999999003).
+TEST(Events, TimesAreReportedAsWholeStepsToTheNanosecond) {
+  const SimulationResult run = test::run(test::shipped("grand"), "force:const:20", 0.1);
+  ASSERT_GE(run.events.size(), 3u);
+  for (const SimEvent& e : run.events) {
+    const double steps = e.t / 1e-5;
+    EXPECT_EQ(e.t, std::round(steps) / 1e5) << e.type << " at " << e.t;
+    // the shortest decimal that reads back as the time has at most 5 decimals
+    char text[32];
+    std::snprintf(text, sizeof(text), "%.5f", e.t);
+    EXPECT_EQ(std::strtod(text, nullptr), e.t) << e.type;
+  }
+  EXPECT_EQ(run.end_time, 0.1);
 }
 
 // The upright's whippen, flung up as the key bottoms, brushes the backcheck against the
