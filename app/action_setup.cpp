@@ -1,7 +1,6 @@
 #include "action_setup.h"
 
 #include <map>
-#include <set>
 
 #include "core/error.h"
 #include "model/effects.h"
@@ -25,12 +24,11 @@ void refuse_repeated_names(const std::string& option, const std::vector<std::str
 ActionModel load_configured_action(const CommandLine& cl, bool needs_rest) {
   refuse_repeated_names("--set", cl.values("--set"));
   refuse_repeated_names("--effect", cl.values("--effect"));
+  refuse_repeated_names("--without", cl.values("--without"));
   const ActionModel loaded = load_action(cl.value("--action"));
   ActionModel model = loaded;
   for (const std::string& assignment : cl.values("--set")) model = with_setting(model, assignment);
-  std::set<std::string> removed;
   for (const std::string& part : cl.values("--without")) {
-    if (!removed.insert(part).second) continue;  // twice is once
     // a part the action cannot rest without (the grand's jack spring holds the jack under the
     // knuckle): refused as the choice it is, not reported later as a run that failed. Tried on
     // the preset as given, so that a --set or --effect is not blamed on the part

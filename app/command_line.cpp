@@ -37,7 +37,8 @@ bool same_file(const std::string& a, const std::string& b) {
 
 CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::string>& value_options,
                          const std::set<std::string>& flags,
-                         const std::set<std::string>& list_options) {
+                         const std::set<std::string>& list_options)
+    : arguments_(args) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     if (flags.count(arg)) {
@@ -155,6 +156,15 @@ std::vector<std::pair<std::string, std::string>> CommandLine::files_other_than(
   for (const auto& [path, named_by] : outputs_)
     if (named_by != option) files.emplace_back("the " + named_by + " file", path);
   return files;
+}
+
+std::string CommandLine::arguments_text() const {
+  std::string text;
+  for (const std::string& arg : arguments_) {
+    if (!text.empty()) text += ' ';
+    text += arg.find(' ') == std::string::npos ? arg : "'" + arg + "'";
+  }
+  return text;
 }
 
 }  // namespace pat::app

@@ -20,6 +20,9 @@ class CommandLine {
               const std::set<std::string>& flags, const std::set<std::string>& list_options = {});
 
   bool has(const std::string& option) const;
+  /// The arguments as given (after the subcommand), joined by spaces, an argument with a space
+  /// in single quotes: what an output records of how it was made.
+  std::string arguments_text() const;
   /// The value of an option given once; throws InputError when a required one is missing or
   /// when it is given more than once (repeatable options are read with values()).
   std::string value(const std::string& option) const;
@@ -48,6 +51,7 @@ class CommandLine {
       const std::string& option) const;
 
  private:
+  std::vector<std::string> arguments_;
   std::map<std::string, std::vector<std::string>> values_;
   std::set<std::string> flags_;
   /// Output files named so far, each with the option that named it.

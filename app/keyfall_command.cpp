@@ -27,7 +27,7 @@ int run_keyfall(const std::vector<std::string>& args) {
              !cl.has("--json"));
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   write_analysis_csv(out_path, result.trace, model,
-                     "key fall: key alone released from its rest position");
+                     "key fall: key alone released from its rest position", cl);
   const bool touched = result.fall_time_s >= 0.0;
   if (cl.has("--json")) {
     nlohmann::json out{

@@ -27,7 +27,12 @@ nlohmann::json limit_json(const std::optional<SweepResult>& sweep) {
                                                 : nlohmann::json(nullptr)},
       // the same object as sweep's, so that one script reads both
       {"first_failure",
-       sweep->first_failure ? cycle_json(*sweep->first_failure) : nlohmann::json(nullptr)}};
+       sweep->first_failure ? cycle_json(*sweep->first_failure) : nlohmann::json(nullptr)},
+      // and a run that stopped, as sweep gives it (it had been left out: a null maximum with
+      // limit_found true then read as a failure at once)
+      {"run_status", sweep_run_status(*sweep)},
+      {"stop_cause", sweep_run_status(*sweep) == "ok" ? nlohmann::json(nullptr)
+                                                      : nlohmann::json(sweep_stop_cause(*sweep))}};
 }
 
 /// The overlaid motions, gaps and touch of both actions under the common input, then their
@@ -82,7 +87,11 @@ int run_study_compare(const std::vector<std::string>& args) {
   const ComparisonResult result = compare_actions({&grand, &upright}, options);
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(comparison_plots(result), !cl.has("--json"));
-  if (!out_path.empty()) write_csv(out_path, result.overlay);
+  if (!out_path.empty()) {
+    CsvTable overlay = result.overlay;
+    overlay.metadata["options"] = cl.arguments_text();  // the input, duration and band it ran
+    write_csv(out_path, overlay);
+  }
 
   if (cl.has("--json")) {
     nlohmann::json actions = nlohmann::json::array();

@@ -37,7 +37,7 @@ int run_study_double_blow(const std::vector<std::string>& args) {
              !cl.has("--json"));
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   write_analysis_csv(out_path, study.trace, model,
-                     "double blow with and without bridle strap and butt spring");
+                     "double blow with and without bridle strap and butt spring", cl);
   auto or_null = [](bool known, double value) {
     return known ? nlohmann::json(value) : nlohmann::json(nullptr);
   };
@@ -85,7 +85,16 @@ int run_study_double_blow(const std::vector<std::string>& args) {
       std::cout << "\n";
     }
   }
-  return 0;
+  // a run that stopped leaves its variant's figures short: said on stderr, and the exit code
+  // is simulate's for a stopped run (README), after everything computed was written
+  bool stopped = false;
+  for (const DoubleBlowVariant& v : study.variants)
+    if (!v.stop_cause.empty()) {
+      std::cerr << "pianoaction study double-blow: " << v.name << " stopped: " << v.stop_cause
+                << "\n";
+      stopped = true;
+    }
+  return stopped ? kExitRunStopped : 0;
 }
 
 }  // namespace pat::app

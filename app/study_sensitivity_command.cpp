@@ -10,6 +10,7 @@
 
 #include "action_setup.h"
 #include "analysis/sensitivity.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
 #include "core/format.h"
@@ -35,8 +36,10 @@ std::vector<PlotSpec> sensitivity_plots(const SensitivityResult& r, double step_
         category_plot(named.words, named.unit.empty() ? "change" : "change (" + named.unit + ")",
                       "setting", "setting_index");
     plot.x_categories = settings;
-    PlotCurve minus = point_curve("adjuster −" + step + " mm", metric + "_minus");
-    PlotCurve plus = point_curve("adjuster +" + step + " mm", metric + "_plus");
+    // changes from the regulated action, named so (a column "impact_velocity_mps_minus" of
+    // 0.0011 read as a speed of 1 mm/s)
+    PlotCurve minus = point_curve("adjuster −" + step + " mm", metric + "_change_minus");
+    PlotCurve plus = point_curve("adjuster +" + step + " mm", metric + "_change_plus");
     for (std::size_t s = 0; s < r.rows.size(); ++s) {
       for (auto [curve, value] :
            {std::pair{&minus, r.rows[s].minus[m]}, std::pair{&plus, r.rows[s].plus[m]}}) {
@@ -101,7 +104,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       names += std::to_string(s) + "=" + result.rows[s].setting + "(" + result.rows[s].unit + ")";
     }
     table.metadata["settings"] = names;
-    table.metadata["action"] = model.kind;  // as in every CSV: grand or upright
+    add_run_metadata(table, model, cl);
     write_csv(out_path, table);
   }
 

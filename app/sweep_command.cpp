@@ -5,6 +5,7 @@
 
 #include "action_setup.h"
 #include "analysis/paper_repetition.h"
+#include "analysis_csv.h"
 #include "commands.h"
 #include "core/error.h"
 #include "io/csv.h"
@@ -48,7 +49,11 @@ int run_sweep(const std::vector<std::string>& args) {
   const SweepResult result = run_repetition_sweep(model, options);
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   plot.write(sweep_plots(result));
-  if (!out_path.empty()) write_csv(out_path, sweep_cycles_table(result, model));
+  if (!out_path.empty()) {
+    CsvTable table = sweep_cycles_table(result, model);
+    add_run_metadata(table, model, cl);  // the band, the rate, the settings it ran with
+    write_csv(out_path, table);
+  }
 
   if (cl.has("--json")) {
     nlohmann::json out = sweep_json(result);

@@ -46,6 +46,20 @@ void add_cycle_rows(CsvTable& table, const std::vector<CycleResult>& cycles, dou
 
 }  // namespace
 
+std::string sweep_run_status(const SweepResult& r) {
+  if (r.mode == SweepMode::chirp) return r.run_status;
+  for (const FrequencyResult& f : r.frequencies)
+    if (f.run_status != "ok") return f.run_status;
+  return "ok";
+}
+
+std::string sweep_stop_cause(const SweepResult& r) {
+  if (r.mode == SweepMode::chirp) return r.stop_cause;
+  for (const FrequencyResult& f : r.frequencies)
+    if (f.run_status != "ok") return f.stop_cause;
+  return {};
+}
+
 nlohmann::json sweep_json(const SweepResult& r) {
   nlohmann::json out{
       {"max_frequency_hz",
@@ -141,8 +155,26 @@ std::vector<PlotSpec> sweep_plots(const SweepResult& r) {
 }
 
 std::string sweep_summary(const SweepResult& r) {
+  const CycleResult* stopped = nullptr;  // the first cycle of a run that stopped
+  std::string cause = r.stop_cause;
+  for (const CycleResult& c : r.cycles)
+    if (c.outcome == CycleOutcome::stopped && !stopped) stopped = &c;
+  for (const FrequencyResult& f : r.frequencies)
+    for (const CycleResult& c : f.cycles)
+      if (c.outcome == CycleOutcome::stopped && !stopped) {
+        stopped = &c;
+        cause = f.stop_cause;
+      }
+  // no maximum: a stopped run that cut the band short is the reason, not the failures before it
+  // (a slowly moved key's double strikes), which say only that no steady window began there
   std::string text = r.max_frequency_hz ? "maximum " + format_number(*r.max_frequency_hz) + " Hz"
-                                        : std::string("no maximum (the first judged cycle fails)");
+                     : stopped
+                         ? "no maximum: a run stopped at " + format_number(stopped->frequency_hz) +
+                               " Hz (t = " + format_number(stopped->t_start_s) +
+                               " s) before a steady window of cycles striking once (" +
+                               "--window) had formed"
+                         : std::string("no maximum (the first judged cycle fails)");
+  const bool headline_names_stop = !r.max_frequency_hz && stopped && r.limit_found;
   if (!r.limit_found) {
     // the band's top, not a limit: the action repeats at least that fast
     text = r.max_frequency_hz
@@ -176,23 +208,14 @@ std::string sweep_summary(const SweepResult& r) {
   // a run that stopped (a contact beyond its travel, a diverging step): said, with its cause,
   // even when an earlier failure already set the maximum; in a chirp whose last cycle is the
   // stopped one, nothing above it was simulated
-  const CycleResult* stopped = nullptr;
-  std::string cause = r.stop_cause;
-  for (const CycleResult& c : r.cycles)
-    if (c.outcome == CycleOutcome::stopped && !stopped) stopped = &c;
-  for (const FrequencyResult& f : r.frequencies)
-    for (const CycleResult& c : f.cycles)
-      if (c.outcome == CycleOutcome::stopped && !stopped) {
-        stopped = &c;
-        cause = f.stop_cause;
-      }
   if (stopped) {
     const bool is_first_failure =
         r.first_failure && r.first_failure->outcome == CycleOutcome::stopped;
     const bool band_ends_there = !r.cycles.empty() && stopped == &r.cycles.back();
-    text += is_first_failure ? "; the run stopped there: "
-                             : "; a run stopped at " + format_number(stopped->frequency_hz) +
-                                   " Hz (t = " + format_number(stopped->t_start_s) + " s): ";
+    text += headline_names_stop ? "; the stop: "
+            : is_first_failure  ? "; the run stopped there: "
+                                : "; a run stopped at " + format_number(stopped->frequency_hz) +
+                                     " Hz (t = " + format_number(stopped->t_start_s) + " s): ";
     text += cause.empty() ? std::string("no cause given") : cause;
     if (band_ends_there) text += ", so nothing above was simulated";
   }

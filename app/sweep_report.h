@@ -15,6 +15,11 @@ namespace pat::app {
 /// (chirp) or frequencies (steps).
 nlohmann::json sweep_json(const SweepResult& result);
 
+/// "ok", or the status of the sweep's run that stopped (chirp: its run; steps: the first
+/// frequency's run that stopped), and that run's cause (empty when none stopped).
+std::string sweep_run_status(const SweepResult& result);
+std::string sweep_stop_cause(const SweepResult& result);
+
 /// One cycle: t_s, frequency_hz, strikes, success, kind, judged, strike_velocity_mps.
 nlohmann::json cycle_json(const CycleResult& cycle);
 

@@ -35,7 +35,8 @@ int run_swing(const std::vector<std::string>& args) {
   write_analysis_csv(out_path, result.trace, model,
                      "swing test: hammer alone on its flange, released from " +
                          format_number(options.release_angle_rad * 180.0 / M_PI) +
-                         " deg from hanging");
+                         " deg from hanging",
+                     cl);
   if (cl.has("--json")) {
     nlohmann::json out{{"round_trips", result.round_trips},
                        {"half_swings", result.half_swings},
@@ -46,10 +47,16 @@ int run_swing(const std::vector<std::string>& args) {
                        {"turning_amplitudes_deg", result.turning_amplitudes_deg},
                        {"action", model.kind}};
     std::cout << out.dump(1) << "\n";
-  } else if (result.stopped && result.half_swings == 0) {
+  } else if (result.stopped && result.half_swings == 0 && result.stop_time_s == 0.0) {
     std::cout << model.name << ": hammer swing test\n  released within the stick angle ("
               << result.stick_angle_deg
               << " deg from hanging): the flange's friction holds it, no swing\n";
+  } else if (result.stopped && result.half_swings == 0) {
+    // just outside the stick zone: it creeps down into it, too slowly to turn
+    std::cout << model.name << ": hammer swing test\n  released just outside the stick angle ("
+              << result.stick_angle_deg
+              << " deg from hanging): it sinks into it without a swing and stays there from "
+              << result.stop_time_s << " s\n";
   } else {
     std::cout << model.name << ": hammer swing test\n  " << result.round_trips << " round trips ("
               << result.half_swings << " half swings), "

@@ -18,6 +18,8 @@ int run_touchweight(const std::vector<std::string>& args) {
       args,
       {"--action", "--set", "--without", "--out", "--spring-factor", "--key-lead-g", "--plot"},
       {"--json"});
+  // a spring's factors would multiply (2 and 3 gave what 6 gives): one each
+  refuse_repeated_names("--spring-factor", cl.values("--spring-factor"));
   ActionModel model = load_configured_action(cl);
   for (const std::string& assignment : cl.values("--spring-factor")) {
     const std::size_t eq = assignment.find('=');
@@ -41,7 +43,7 @@ int run_touchweight(const std::vector<std::string>& args) {
              !cl.has("--json"));
   // the plot first: a plot that cannot be written leaves an existing --out file as it was
   write_analysis_csv(out_path, result.table(), model,
-                     "quasi-static touchweight at the key front (Coulomb friction)");
+                     "quasi-static touchweight at the key front (Coulomb friction)", cl);
   if (cl.has("--json")) {
     nlohmann::json out{{"downweight_g", result.downweight_g},
                        {"upweight_g", result.upweight_g},

@@ -236,8 +236,11 @@ AnalysisEntry regulation_sensitivity() {
       for (std::size_t m = 0; m < r.metrics.size(); ++m) {
         const QString metric = QString::fromStdString(r.metrics[m]);  // the CSV column's stem
         const MetricName name = metric_name(r.metrics[m]);
-        AnalysisSeries minus{QObject::tr("adjuster −0.5 mm"), metric + "_minus", {}, {}, true};
-        AnalysisSeries plus{QObject::tr("adjuster +0.5 mm"), metric + "_plus", {}, {}, true};
+        // changes from the regulated action, named so ("impact_velocity_mps_minus = 0.0011"
+        // read as a speed of 1 mm/s)
+        AnalysisSeries minus{
+            QObject::tr("adjuster −0.5 mm"), metric + "_change_minus", {}, {}, true};
+        AnalysisSeries plus{QObject::tr("adjuster +0.5 mm"), metric + "_change_plus", {}, {}, true};
         for (std::size_t s = 0; s < r.rows.size(); ++s) {
           minus.x.push_back(double(s));
           minus.y.push_back(r.rows[s].minus[m] - r.baseline[m]);

@@ -58,6 +58,7 @@ CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path)
   std::size_t width = 0;
   for (std::size_t p = 0; p < plots.size(); ++p) {
     const CsvTable table = plots[p]->visible_table();
+    for (const auto& [key, value] : table.metadata) merged.metadata.emplace(key, value);
     for (std::size_t c = 1; c < table.columns.size(); ++c)
       merged.columns.push_back(table.columns[c]);
     for (const auto& row : table.rows) {

@@ -247,13 +247,25 @@ void PlotPanel::fit_values() {
   const double pad = 0.08 * range.size();
   const double shown = range.size() + 2.0 * pad;
   double headroom = 0.0;
+  // the band at the top the data keep out of: the inset legend's, and the marker labels' (one
+  // text row each from 1.5 rows down, add_marker), which had covered the points at the top of a
+  // sweep's "strikes per cycle"
+  double top_px = 0.0;
+  int top_rows = 0;  // before the plot has its size: 30 % of the range per row
   if (!legend_below_) {
     constexpr int kLegendMarginPx = 8;  // the inset's gap to the frame, and some air
-    const double legend_px = plot_->legend->minimumOuterSizeHint().height() + kLegendMarginPx;
-    const int legend_rows = (series_count() + 2) / 3;
-    headroom = height_px > 2.0 * legend_px ? shown * legend_px / (height_px - legend_px)
-                                           : 0.3 * legend_rows * range.size();
+    top_px = plot_->legend->minimumOuterSizeHint().height() + kLegendMarginPx;
+    top_rows = (series_count() + 2) / 3;
   }
+  if (!markers_.empty()) {
+    const double line_px = QFontMetrics(readout_->font()).height() + 4.0;
+    const int label_rows = static_cast<int>(std::min<std::size_t>(markers_.size(), 5));
+    top_px = std::max(top_px, line_px * (1.5 + label_rows) + 2.0);
+    top_rows = std::max(top_rows, label_rows + 1);
+  }
+  if (top_px > 0.0)
+    headroom = height_px > 2.0 * top_px ? shown * top_px / (height_px - top_px)
+                                        : 0.3 * top_rows * range.size();
   plot_->yAxis->setRange(range.lower - pad, range.upper + pad + headroom);
   // as many ticks as the plot's size gives room for: their labels must not run together on a
   // short or narrow plot. A label is a line high; along x its width follows the step the
@@ -489,6 +501,7 @@ void PlotPanel::set_x_categories(const std::vector<QString>& names) {
     plot_->axisRect()->setMinimumMargins(QMargins(0, 0, run, 0));
   }
   categories_ = names.size();
+  category_names_ = names;
   // a few points often sit right where an inset legend would be: the legend goes under the plot
   move_legend_below();
 }
@@ -675,6 +688,13 @@ CsvTable PlotPanel::visible_table() const {
   CsvTable table;
   table.columns.push_back(x_column_.toStdString());
   for (const Series& s : series_) table.columns.push_back(s.column.toStdString());
+  // named positions: the CSV's numbers say which name each is ("0 hammer blow; 1 key dip; …")
+  if (!category_names_.empty()) {
+    QStringList names;
+    for (std::size_t i = 0; i < category_names_.size(); ++i)
+      names << QStringLiteral("%1 %2").arg(i).arg(category_names_[i]);
+    table.metadata[x_column_.toStdString()] = names.join("; ").toStdString();
+  }
   if (series_.empty()) return table;
   const QCPRange range = plot_->xAxis->range();
   const auto base = series_.front().graph->data();

@@ -156,8 +156,9 @@ class PlotPanel : public QWidget {
   QString y_title_;
   QString x_column_ = "time_s";
   QString x_symbol_ = "t";
-  std::size_t categories_ = 0;  ///< named x positions (0: a numeric axis)
-  bool points_only_ = false;    ///< some series are markers only (fit_all pads x)
+  std::size_t categories_ = 0;           ///< named x positions (0: a numeric axis)
+  std::vector<QString> category_names_;  ///< their names, for the CSV's `#` line
+  bool points_only_ = false;             ///< some series are markers only (fit_all pads x)
   QString x_readout_unit_ = "ms";
   double x_readout_scale_ = 1e3;
   QCustomPlot* plot_;

@@ -56,7 +56,10 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
 
   DoubleBlowStudy study;
   study.variants.resize(variants.size());
+  for (std::size_t v = 0; v < variants.size(); ++v) study.variants[v].name = variants[v].name;
   std::vector<SimulationResult> doubles(variants.size());
+  // each job's stop, joined in one order after the runs (the two runs of a variant run at once)
+  std::vector<std::string> single_stops(variants.size()), double_stops(variants.size());
   ProgressReporter reporter(progress, 2 * variants.size());
   run_parallel(
       2 * variants.size(),
@@ -71,10 +74,9 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
         sim.on_step = [&reporter](double) { return reporter.still_wanted(); };
         SimulationResult run = simulate(model, input.get(), sim, &rest);
         if (reporter.cancelled()) return;
+        // the two jobs of a variant fill different members of it
         DoubleBlowVariant& out = study.variants[v];
-        out.name = variants[v].name;
-        if (run.status != "ok")
-          out.stop_cause += (second_run ? "double blow: " : "single blow: ") + run.stop_cause;
+        if (run.status != "ok") (second_run ? double_stops : single_stops)[v] = run.stop_cause;
         std::vector<const SimEvent*> impacts;
         for (const SimEvent& e : run.events)
           if (e.type == "impact") impacts.push_back(&e);
@@ -114,6 +116,12 @@ DoubleBlowStudy double_blow_study(const ActionModel& upright, const DoubleBlowOp
         reporter.item_done(variants[v].name + (second_run ? " double blow" : " single blow"));
       },
       &reporter);
+  for (std::size_t v = 0; v < variants.size(); ++v) {
+    std::string& cause = study.variants[v].stop_cause;
+    if (!single_stops[v].empty()) cause = "single blow: " + single_stops[v];
+    if (!double_stops[v].empty())
+      cause += (cause.empty() ? "" : "; ") + std::string("double blow: ") + double_stops[v];
+  }
 
   study.trace.columns = {"time_s"};
   for (const VariantModels& v : variants)

@@ -246,8 +246,14 @@ void chirp_maximum(const std::vector<CycleResult>& cycles, int window_cycles, Sw
 
 namespace {
 
-// The cycle that made a frequency fail (a run that stops while settling fails there).
+// The cycle that made a frequency fail: its first judged cycle that failed, not a settling one
+// before it (which does not count, and was reported as the failure); else the cycle where its
+// run stopped while settling.
 std::optional<CycleResult> failing_cycle(const FrequencyResult& f) {
+  for (const CycleResult& cycle : f.cycles)
+    if (cycle.judged && !cycle.success()) return cycle;
+  for (const CycleResult& cycle : f.cycles)
+    if (cycle.outcome == CycleOutcome::stopped) return cycle;
   for (const CycleResult& cycle : f.cycles)
     if (!cycle.success()) return cycle;
   return std::nullopt;

@@ -93,10 +93,11 @@ SwingResult swing_test(const ActionModel& action, const SwingOptions& options,
       }
     }
     // no longer able to leave the stick zone: its energy above hanging is below what a
-    // turning point at φ_stick holds (covers a swing that dies out without turning)
+    // turning point at φ_stick holds (covers a swing that dies out without turning, and a
+    // release just outside the zone that creeps down to hanging without one)
     const double energy =
         0.5 * result.inertia_about_pin_kgm2 * rate * rate + weight_moment * (1.0 - std::cos(phi));
-    if (result.half_swings > 0 && energy <= weight_moment * (1.0 - std::cos(stick))) {
+    if (energy <= weight_moment * (1.0 - std::cos(stick))) {
       result.stopped = true;
       result.stop_time_s = t;
       break;

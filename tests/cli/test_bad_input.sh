@@ -206,6 +206,17 @@ expect_failure "a w2 step longer than a felt contact" "--step 0.01|at most 0.001
   simulate --action grand --input force:const:5 --duration 0.1 --step 0.01 --out out.csv
 expect_failure "a w2 step near the duration" "--step 0.001|at least 10 steps|--duration 0.005" \
   simulate --action grand --input force:const:5 --duration 0.005 --step 0.001 --out out.csv
+expect_failure "a step that would take hours" "--step 1e-12|at least 1e-7 s" \
+  simulate --action grand --input force:const:5 --duration 0.1 --step 1e-12 --out out.csv
+expect_failure "a tolerance finer than double precision holds" "--rtol 1e-20|at least 1e-10" \
+  simulate --action grand --input force:const:5 --duration 0.1 --integrator rodas --rtol 1e-20 \
+  --out out.csv
+expect_failure "a spring factor given twice" "--spring-factor: repetition_spring is given twice" \
+  touchweight --action grand --spring-factor repetition_spring=2 \
+  --spring-factor repetition_spring=3 --out out.csv
+expect_failure "a part left out twice" "--without: bridle is given twice" \
+  simulate --action upright --input mass:1kg --duration 0.05 --without bridle --without bridle \
+  --out out.csv
 expect_failure "a tolerance of 50 %" "--rtol 0.5|at most 0.1" \
   simulate --action grand --input force:const:5 --duration 0.1 --integrator rodas --rtol 0.5 \
   --out out.csv

@@ -61,6 +61,16 @@ assert header.startswith("time_s,both_hammer_angle_deg"), header
 print("ok: study double-blow --json, --out")
 PY
 
+# a blow so hard that the runs stop: written, the stops named on stderr, exit code 3 (simulate's)
+set +e
+"$exe" study double-blow --action upright --force 1000 --duration 0.05 --json >hard.json 2>hard.err
+status=$?
+set -e
+[[ "$status" == 3 ]] || { echo "FAIL: stopped double blow: exit $status" >&2; cat hard.err >&2; exit 1; }
+grep -q "both stopped: single blow: " hard.err || { echo "FAIL: $(cat hard.err)" >&2; exit 1; }
+python3 -c 'import json,sys; v=json.load(open("hard.json"))["variants"]; assert all("; double blow: " in x["stop_cause"] for x in v), v'
+echo "ok: a stopped double blow exits 3 and names each run's stop"
+
 # bad input: each exits 2 with a message naming what is wrong, and writes nothing
 expect_bad() {
   local what="$1" pattern="$2"; shift 2

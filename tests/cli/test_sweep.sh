@@ -62,6 +62,23 @@ assert "nothing above was simulated" in text, text  # the stopped cycle ends the
 print("ok: a stopped chirp is named in the text: " + text.strip()[:160])
 PY
 
+# a band cut where the grand's chirp from rest jams (README, limits): the text says the stop is
+# why there is no maximum, and study compare's JSON carries the stop as sweep's does
+"$exe" sweep --action grand --stroke full --fmax 14 >jam.txt
+grep -q "no maximum: a run stopped at 10.4 Hz" jam.txt ||
+  { echo "FAIL: the stop is not the reason given: $(cat jam.txt)" >&2; exit 1; }
+"$exe" study compare --duration 0.1 --fmax 14 --json >compare_jam.json
+python3 - compare_jam.json <<'PY'
+import json, sys
+r = json.load(open(sys.argv[1]))
+full = [a for a in r["actions"] if a["action"] == "grand"][0]["repetition_full"]
+assert full["run_status"] == "stopped" and "jack" in full["stop_cause"], full
+for a in r["actions"]:
+    for key in ("repetition_full", "repetition_half"):
+        assert "run_status" in a[key] and "stop_cause" in a[key], (a["action"], key, a[key])
+print("ok: a sweep's stop is the reason given, and study compare's JSON carries it")
+PY
+
 # study compare: both actions, impact time and velocity, overlay CSV with both
 "$exe" study compare --no-limits --duration 0.2 --out overlay.csv --json >compare.json
 python3 - compare.json overlay.csv <<'PY'

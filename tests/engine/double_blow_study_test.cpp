@@ -76,6 +76,24 @@ TEST(DoubleBlowStudy, PulsesTooCloseToStrikeTwiceAreOneStrokeNotASecondBlow) {
   }
 }
 
+// A blow so hard that every run stops: each variant names both of its runs' stops, the single
+// blow's first, apart (the two runs of a variant run at once and had appended to one string:
+// in either order, run to run, and joined as "…limit 2 mmdouble blow: …").
+TEST(DoubleBlowStudy, EveryStoppedRunIsNamedInOneOrder) {
+  DoubleBlowOptions options;
+  options.force_n = 1000.0;
+  options.duration_s = 0.05;
+  for (int repeat = 0; repeat < 3; ++repeat) {
+    const DoubleBlowStudy study = double_blow_study(test::shipped("upright"), options);
+    ASSERT_EQ(study.variants.size(), 4u);
+    for (const DoubleBlowVariant& v : study.variants) {
+      EXPECT_EQ(v.stop_cause.rfind("single blow: ", 0), 0u) << v.name << ": " << v.stop_cause;
+      EXPECT_NE(v.stop_cause.find("; double blow: "), std::string::npos)
+          << v.name << ": " << v.stop_cause;
+    }
+  }
+}
+
 TEST(DoubleBlowStudy, NeedsAnUprightWithBridleAndButtSpring) {
   EXPECT_THROW(double_blow_study(test::shipped("grand")), InputError);
 }

@@ -251,6 +251,26 @@ TEST(RepetitionMaximum, StepsTakesTheTopOfTheLongestRunOfPassingFrequencies) {
   EXPECT_EQ(below->doubles, 0);
 }
 
+// A failing frequency's failure is its first judged cycle that fails, not a settling cycle
+// before it (a settling miss at 13 Hz was reported as the first failure, "judged": false).
+TEST(RepetitionMaximum, StepsReportTheFirstJudgedFailureNotASettlingOne) {
+  FrequencyResult f;
+  f.frequency_hz = 13.0;
+  f.passed = false;
+  f.cycles = cycles_from({{13, CycleOutcome::missed},
+                          {13, CycleOutcome::struck_once},
+                          {13, CycleOutcome::double_strike},
+                          {13, CycleOutcome::missed}},
+                         2);
+  for (std::size_t k = 0; k < f.cycles.size(); ++k) f.cycles[k].t_start_s = 0.1 * double(k);
+  SweepResult r;
+  steps_maximum({f}, r);
+  ASSERT_TRUE(r.first_failure.has_value());
+  EXPECT_TRUE(r.first_failure->judged);
+  EXPECT_EQ(r.first_failure->outcome, CycleOutcome::double_strike);
+  EXPECT_DOUBLE_EQ(r.first_failure->t_start_s, 0.2);
+}
+
 // Cycles that each strike once, with the given first-strike speeds (m/s); the first `settle`
 // are not judged.
 std::vector<CycleResult> struck_cycles(const std::vector<double>& speeds, int settle = 0) {

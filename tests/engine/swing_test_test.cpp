@@ -126,6 +126,20 @@ TEST(SwingTest, ReleasedWithinTheStickAngleItDoesNotSwing) {
   EXPECT_EQ(r.stop_time_s, 0.0);
 }
 
+// Released just outside the stick angle the hammer creeps down into it without turning: it
+// has stopped once its energy cannot take it out again (it was reported "still swinging at
+// 30 s", 5.6e-6° from hanging).
+TEST(SwingTest, ReleasedJustOutsideTheStickAngleStopsWithoutASwing) {
+  const double stick_deg = swing_test(test::shipped("grand")).stick_angle_deg;
+  SwingOptions options;
+  options.release_angle_rad = (stick_deg + 0.13) * M_PI / 180.0;
+  const SwingResult r = swing_test(test::shipped("grand"), options);
+  EXPECT_TRUE(r.stopped);
+  EXPECT_EQ(r.half_swings, 0);
+  EXPECT_GT(r.stop_time_s, 0.0);
+  EXPECT_LT(r.stop_time_s, 1.0);  // 0.06 s: it sinks in at once, not after the 30 s run
+}
+
 TEST(SwingTest, CancelsThroughItsProgressCallback) {
   // frictionless: it would swing for the whole 30 s
   const ActionModel free = with_hammer_friction(test::shipped("grand"), JointFriction{});

@@ -261,6 +261,13 @@ void PlotExportTest::analysis_plots_are_written_headless() {
   const QString png = dir_.filePath("plots.png");
   pat::ui::write_analysis_plots({angles, strikes}, png);
   QCOMPARE(QImage(png).size(), pat::ui::stacked_plot_size(2));  // 300 px per stacked plot
+  // a CSV of named positions says which name each number is (the sensitivity plot's
+  // setting_index could not be read on its own)
+  const QString csv = dir_.filePath("strikes.csv");
+  pat::ui::write_analysis_plots({strikes}, csv);
+  const pat::CsvTable table = pat::read_csv(csv.toStdString());
+  QCOMPARE(table.columns.front(), std::string("setting_index"));
+  QCOMPARE(table.metadata.at("setting_index"), std::string("0 key_dip; 1 let_off; 2 drop"));
 }
 
 // An export dialog opens where the last export went, or in the documents folder (or home), not in
