@@ -83,8 +83,8 @@ input SPEC:
 --window CYCLES (sweep): judged cycles in a steady window (8); the maximum is the top of the
   longest run of successful cycles at least that long. Sweep defaults: --fstart 2 Hz, --fmax 20 Hz
   (full stroke) or 25 Hz (half), chirp --rate 1 Hz/s, steps --step-hz 0.5 Hz
---step S (simulate) is w2's fixed step (1e-5 s, at most 1e-3 s and a tenth of --duration);
-  --rtol X the tolerance of rodas and cvode (1e-6, at most 0.1; absolute tolerance a hundredth
+--step S (simulate) is w2's fixed step (1e-5 s; 1e-7 s to 1e-3 s, and a tenth of --duration);
+  --rtol X the tolerance of rodas and cvode (1e-6; 1e-10 to 0.1; absolute tolerance a hundredth
   of it). An option that takes one value is refused when given twice.
 
 effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM

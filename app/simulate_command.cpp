@@ -52,8 +52,8 @@ int run_simulate(const std::vector<std::string>& args) {
   // where it was given: the defaults are fine for any duration)
   constexpr double kLargestStepS = 1e-3, kLargestRtol = 0.1;
   // and below these a run takes hours without telling more: a hundredth of w2's default step
-  // already makes a second of the action minutes long, and a tenth of the bench's reference
-  // tolerance (rodas at 1e-9) is near what double precision can hold (rodas at 1e-14 took 21 s
+  // already makes a second of the action minutes long, and a tolerance a tenth of the bench's
+  // reference (rodas at 1e-9) is as fine as any comparison here needs (rodas at 1e-14 took 21 s
   // for 10 ms; at 1e-20 it did not end)
   constexpr double kSmallestStepS = 1e-7, kSmallestRtol = 1e-10;
   if (cl.has("--step")) {
@@ -75,7 +75,8 @@ int run_simulate(const std::vector<std::string>& args) {
   if (cl.has("--rtol") && options.integrator_options.relative_tolerance < kSmallestRtol)
     throw InputError("--rtol " + cl.value("--rtol") +
                      ": a relative tolerance must be at least 1e-10 (1e-6 is the default; the "
-                     "bench's reference takes 1e-9, and double precision holds about 1e-16)");
+                     "bench's reference takes 1e-9; rodas at 1e-14 takes half a minute for "
+                     "10 ms)");
   // absolute tolerance on angles (rad) and rates (rad/s): a hundredth of the relative one, as
   // the bench's references take it
   options.integrator_options.absolute_tolerance =

@@ -85,7 +85,7 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
   plot.write(sensitivity_plots(result, options.step_mm), !cl.has("--json"));
   if (!out_path.empty()) {
     // one row per setting and side: the setting's measured value (in its own unit, named in the
-    // 'settings' metadata: mm, or a fraction for a damper lift) and every metric
+    // 'setting_index' metadata: mm, or a fraction for a damper lift) and every metric
     CsvTable table;
     table.columns = {"setting_index", "offset_mm", "measured_in_setting_unit"};
     for (const std::string& m : result.metrics) table.columns.push_back(m);
@@ -103,8 +103,8 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
       if (s > 0) names += ' ';
       names += std::to_string(s) + "=" + result.rows[s].setting + "(" + result.rows[s].unit + ")";
     }
-    table.metadata["settings"] = names;
-    add_run_metadata(table, model, cl);
+    add_run_metadata(table, model, cl);  // its 'settings': the adjusters as the run began
+    table.metadata["setting_index"] = names;
     write_csv(out_path, table);
   }
 

@@ -165,16 +165,18 @@ std::string sweep_summary(const SweepResult& r) {
         stopped = &c;
         cause = f.stop_cause;
       }
-  // no maximum: a stopped run that cut the band short is the reason, not the failures before it
-  // (a slowly moved key's double strikes), which say only that no steady window began there
+  // no maximum: a chirp's stopped run that cut the band short is the reason, not the failures
+  // before it (a slowly moved key's double strikes), which say only that no steady window began
+  // there (in steps each frequency is a run of its own: a stop there cuts nothing short)
+  const bool stop_cut_the_band = stopped && r.mode == SweepMode::chirp;
   std::string text = r.max_frequency_hz ? "maximum " + format_number(*r.max_frequency_hz) + " Hz"
-                     : stopped
+                     : stop_cut_the_band
                          ? "no maximum: a run stopped at " + format_number(stopped->frequency_hz) +
                                " Hz (t = " + format_number(stopped->t_start_s) +
                                " s) before a steady window of cycles striking once (" +
                                "--window) had formed"
                          : std::string("no maximum (the first judged cycle fails)");
-  const bool headline_names_stop = !r.max_frequency_hz && stopped && r.limit_found;
+  const bool headline_names_stop = !r.max_frequency_hz && stop_cut_the_band && r.limit_found;
   if (!r.limit_found) {
     // the band's top, not a limit: the action repeats at least that fast
     text = r.max_frequency_hz

@@ -2,7 +2,8 @@
 //
 // QDoubleSpinBox refuses each keystroke that would leave its range, so "99" typed into a
 // ±4 mm field left it at its value without a word. Here a number out of range is accepted
-// while typed and brought to the nearest end when it is entered (Enter, or focus leaving).
+// while typed and brought to the nearest end when it is entered (Enter, or focus leaving); an
+// emptied field or a lone sign goes back to the value it had.
 #pragma once
 
 #include <QDoubleSpinBox>

@@ -180,6 +180,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     running_input_ = what;
     hide_banner();
     show_run_status();
+    // a blow struck or the key played into a practice test on screen: the test is over, and the
+    // user's own blow is not paused at the test's end (a test's own input is noted while its run
+    // starts, before show_practice_test sets that end; its generated input has no notes that
+    // would be noted again later)
+    end_practice_test_shown();
   });
   connect(controller_, &PlaybackController::playingChanged, this, [this](bool playing) {
     if (playing) {

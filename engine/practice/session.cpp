@@ -163,16 +163,37 @@ std::string PracticeSession::hint(double t_s) {
   if (revealed_) return reveal(t_s);  // shown already: no more to hint, nothing to charge
   // the hints lead to the first hidden setting not yet named right, each one's from its start
   // (the symptom), so that with two faults the hints after the first is found are about the
-  // second
+  // second; once a setting's hints have named it, the next ones go on to the other
   const std::vector<FaultAnswer> answers = exercise_answers(exercise_);
-  auto target = std::find_if(answers.begin(), answers.end(),
-                             [&](const FaultAnswer& a) { return !found_.count(a.setting); });
-  if (target == answers.end()) target = answers.begin();  // all found: the first again
+  constexpr int kNamingStage = 3;  // the stage whose hint names the setting
+  // found (named right in an answer) or named by a hint already
+  auto known = [&](const FaultAnswer& a) {
+    return found_.count(a.setting) > 0 || hints_by_setting_[a.setting] > kNamingStage;
+  };
+  const auto target =
+      std::find_if(answers.begin(), answers.end(), [&](const FaultAnswer& a) { return !known(a); });
+  if (target == answers.end()) {
+    // every hidden setting found or named: nothing more to hint, nothing charged
+    std::string named;
+    for (const FaultAnswer& a : answers)
+      named += (named.empty() ? "" : "; ") + setting_words(a.setting) + ", " + a.direction +
+               " than its target";
+    const std::string text =
+        found_.size() == answers.size()
+            ? std::string(
+                  "Every hidden setting has been found: correct them with the sliders "
+                  "and finish.")
+            : "The hints have named every hidden setting: " + named + ".";
+    history_.push_back({t_s, "hint", text + " (not charged)"});
+    return text;
+  }
   const FaultAnswer& fault = *target;
   const int stage = hints_by_setting_[fault.setting]++;
-  // with two faults: "one hidden setting" until one is found, then "the other"
+  // with two faults: "one hidden setting" until one is found or named, then "the other"
   const bool several = answers.size() > 1;
-  const bool other = several && !found_.empty() && !found_.count(fault.setting);
+  const bool other = several && std::any_of(answers.begin(), answers.end(), [&](const auto& a) {
+                       return a.setting != fault.setting && known(a);
+                     });
   const std::string subject = !several ? "The hidden setting"
                               : other  ? "The other hidden setting"
                                        : "One hidden setting";

@@ -96,9 +96,11 @@ class PracticeSession {
                                    double t_s);
   /// Gives a diagnosis; the first one counts for the score.
   AnswerJudgement answer(const std::vector<FaultAnswer>& given, double t_s);
-  /// The next hint (each more telling than the last, the last names the setting). The first
-  /// quotes the symptom read from the hidden setting's own measurement when one was seen. After
-  /// reveal() it repeats the answer and costs nothing.
+  /// The next hint (each more telling than the last, the fourth names the setting), toward the
+  /// first hidden setting neither found in an answer nor named by a hint yet; with two, then
+  /// toward the other. The first of a setting's hints quotes the symptom read from its own
+  /// measurement when one was seen. Once every hidden setting is found or named, and after
+  /// reveal() (which it repeats), a hint says so and costs nothing.
   std::string hint(double t_s);
   /// Gives up: the hidden settings in words (recorded in the history); answers given after it
   /// are judged but do not count for the score.

@@ -205,8 +205,11 @@ TEST(PracticeSession, ScoresDiagnosisCorrectionEconomyAndHints) {
   PracticeSession session(e, model);
   const FaultAnswer right = exercise_answers(e).front();
   EXPECT_FALSE(session.answer({{"drop", "more"}}, 30.0).correct);
+  EXPECT_FALSE(session.hint(50.0).empty());
   EXPECT_TRUE(session.answer({right}, 60.0).correct);
-  EXPECT_FALSE(session.hint(70.0).empty());
+  // found: a hint now says so, and costs nothing
+  EXPECT_EQ(session.hint(70.0).rfind("Every hidden setting has been found", 0), 0u);
+  EXPECT_EQ(session.hints_used(), 1);
   session.move_adjuster("checking", -1.5, 80.0);
   session.move_adjuster("checking", -0.5, 90.0);
   EXPECT_DOUBLE_EQ(session.moved_mm("checking"), -2.0);
@@ -407,6 +410,27 @@ TEST(PracticeSession, HintsLeadToTheHiddenSettingNotYetFound) {
   EXPECT_EQ(named,
             "The other hidden setting is checking (" + hidden[1].direction + " than its target).");
   EXPECT_EQ(session.hints_used(), 6);  // each one counts
+  // both found or named: no more hints, none charged
+  EXPECT_EQ(session.hint(24.0).rfind("The hints have named every hidden setting: ", 0), 0u);
+  EXPECT_EQ(session.hints_used(), 6);
+}
+
+// Without an answer, the hints name the first hidden setting, then go on to the other (they had
+// repeated the first one's name, each charged).
+TEST(PracticeSession, HintsGoOnToTheOtherSettingOnceTheFirstIsNamed) {
+  const ActionModel& model = shipped_model("grand");
+  Exercise e = generate_exercise(model, "grand", 0, 2);
+  e.faults = {{"let_off", 1.0}, {"checking", 2.0}};
+  PracticeSession session(e, model);
+  const std::vector<FaultAnswer> hidden = exercise_answers(e);
+  std::vector<std::string> hints;
+  for (int i = 0; i < 8; ++i) hints.push_back(session.hint(double(i)));
+  EXPECT_EQ(hints[3], "One hidden setting is let-off (" + hidden[0].direction +
+                          " than its target), and there is a second one.");
+  EXPECT_EQ(hints[5].rfind("The other hidden setting is measured in", 0), 0u) << hints[5];
+  EXPECT_EQ(hints[7],
+            "The other hidden setting is checking (" + hidden[1].direction + " than its target).");
+  EXPECT_EQ(session.hints_used(), 8);
 }
 
 TEST(PracticeSession, AnswerRemarksNameTheSettingsInTradeWords) {

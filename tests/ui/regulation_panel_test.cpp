@@ -102,6 +102,16 @@ void RegulationPanelTest::rows_follow_the_settings_with_their_ranges() {
   QCOMPARE(spin->value(), spin->minimum());
   type("0.5");
   QCOMPARE(spin->value(), 0.5);
+  // an emptied field or a lone sign goes back to the value it had (it is not a 0)
+  QSignalSpy changed(spin, &QDoubleSpinBox::valueChanged);
+  spin->setFocus();
+  spin->selectAll();
+  QTest::keyClick(spin, Qt::Key_Delete);
+  QTest::keyClick(spin, Qt::Key_Return);
+  QCOMPARE(spin->value(), 0.5);
+  type("-");
+  QCOMPARE(spin->value(), 0.5);
+  QCOMPARE(changed.count(), 0);
   QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.5e-3);
 }
 
