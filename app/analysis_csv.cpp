@@ -7,13 +7,7 @@
 namespace pat::app {
 
 void add_run_metadata(CsvTable& table, const ActionModel& model, const CommandLine& cl) {
-  table.metadata["action"] = model.kind;  // as in every CSV: grand or upright
-  table.metadata["preset"] = model.source_file;
-  table.metadata["settings"] = adjuster_settings_text(model);
-  std::string removed;
-  for (const std::string& part : model.removed_parts)
-    removed += (removed.empty() ? "" : " ") + part;
-  if (!removed.empty()) table.metadata["without"] = removed;
+  for (auto& [key, value] : model_metadata(model)) table.metadata[key] = value;  // as simulate
   table.metadata["options"] = cl.arguments_text();
 }
 

@@ -101,13 +101,7 @@ int run_diagnose(const std::vector<std::string>& args) {
     throw InputError("missing option --measured (one or more measured CSV files)");
   DiagnoseOptions options;
   options.candidates = cl.values("--candidate");
-  {
-    std::set<std::string> named;
-    for (const std::string& name : options.candidates)
-      if (!named.insert(name).second)
-        throw InputError("--candidate: " + name +
-                         " is given twice (each candidate is fitted once); give it once");
-  }
+  refuse_repeated_names("--candidate", options.candidates);  // each candidate is fitted once
   if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
   const std::string report = cl.value_or("--report", "");
   if (cl.has("--report")) check_report_folder(report);

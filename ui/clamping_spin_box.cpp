@@ -41,10 +41,4 @@ void ClampingSpinBox::fixup(QString& text) const {
                                                 : this->value());
 }
 
-double ClampingSpinBox::valueFromText(const QString& text) const {
-  double value = 0.0;
-  if (read_number(text, value)) return std::clamp(value, minimum(), maximum());
-  return QDoubleSpinBox::valueFromText(text);
-}
-
 }  // namespace pat::ui

@@ -16,7 +16,6 @@ class ClampingSpinBox : public QDoubleSpinBox {
 
   QValidator::State validate(QString& text, int& position) const override;
   void fixup(QString& text) const override;
-  double valueFromText(const QString& text) const override;
 
  private:
   /// The number in `text` (suffix and spaces taken off), if it reads as one.

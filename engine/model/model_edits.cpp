@@ -113,6 +113,17 @@ std::string adjuster_settings_text(const ActionModel& model) {
   return settings.empty() ? "regulated" : settings;
 }
 
+std::map<std::string, std::string> model_metadata(const ActionModel& model) {
+  std::map<std::string, std::string> metadata{{"action", model.kind},
+                                              {"preset", model.source_file},
+                                              {"settings", adjuster_settings_text(model)}};
+  std::string removed;
+  for (const std::string& part : model.removed_parts)
+    removed += (removed.empty() ? "" : " ") + part;
+  if (!removed.empty()) metadata["without"] = removed;
+  return metadata;
+}
+
 ActionModel with_setting(const ActionModel& model, const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)

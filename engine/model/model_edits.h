@@ -2,6 +2,7 @@
 // modified copy (adjuster offsets, parts taken out for a run).
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "model/action_model.h"
@@ -26,6 +27,11 @@ std::string model_origin(const ActionModel& model);
 /// The adjusters turned from their regulated positions, for a file's metadata: "regulated", or
 /// e.g. "let_off=0.5mm drop=-0.2mm".
 std::string adjuster_settings_text(const ActionModel& model);
+
+/// What a file made from the model records of it in its metadata: `action` (grand or upright),
+/// `preset` (the file read), `settings` (adjuster_settings_text) and, when parts were left out,
+/// `without` ("bridle butt_spring").
+std::map<std::string, std::string> model_metadata(const ActionModel& model);
 
 /// Parses "NAME=MM" (as given to --set) and applies it.
 ActionModel with_setting(const ActionModel& model, const std::string& assignment);

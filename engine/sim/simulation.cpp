@@ -126,15 +126,9 @@ SimulationResult simulate(const ActionModel& model, const KeyInput* input,
 
   if (options.sample_interval_s > 0.0) {
     result.trace.columns = trace_columns(model);
-    result.trace.metadata["action"] = model.kind;
-    result.trace.metadata["preset"] = model.source_file;
+    result.trace.metadata = model_metadata(model);
     result.trace.metadata["input"] = input ? input->spec() : "none";
     result.trace.metadata["integrator"] = options.integrator;
-    std::string removed;
-    for (const std::string& part : model.removed_parts)
-      removed += (removed.empty() ? "" : " ") + part;
-    result.trace.metadata["settings"] = adjuster_settings_text(model);
-    if (!removed.empty()) result.trace.metadata["without"] = removed;
   }
   auto record = [&](double t, const DofVector& q, const DofVector& v) {
     result.trace.rows.push_back(sim.trace_row(t, q, v));

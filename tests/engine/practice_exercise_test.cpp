@@ -389,12 +389,18 @@ TEST(PracticeSession, FirstHintQuotesTheHiddenSettingsOwnSymptom) {
   EXPECT_EQ(hint.find(symptoms.front().text), std::string::npos) << hint;
 }
 
+/// A grand exercise of level 2: the let-off button screwed 1 mm and the backcheck bent 2 mm.
+Exercise let_off_and_checking_exercise(const ActionModel& model) {
+  Exercise e = generate_exercise(model, "grand", 0, 2);
+  e.faults = {{"let_off", 1.0}, {"checking", 2.0}};
+  return e;
+}
+
 TEST(PracticeSession, HintsLeadToTheHiddenSettingNotYetFound) {
   // Two hidden faults: once the trainee has named one right, the hints are about the other,
   // from their first step, and say "the other"; before it, "one hidden setting".
   const ActionModel& model = shipped_model("grand");
-  Exercise e = generate_exercise(model, "grand", 0, 2);
-  e.faults = {{"let_off", 1.0}, {"checking", 2.0}};
+  const Exercise e = let_off_and_checking_exercise(model);
   PracticeSession session(e, model);
   const std::vector<FaultAnswer> hidden = exercise_answers(e);
   session.hint(5.0);  // "run the four tests first" (none seen)
@@ -419,8 +425,7 @@ TEST(PracticeSession, HintsLeadToTheHiddenSettingNotYetFound) {
 // repeated the first one's name, each charged).
 TEST(PracticeSession, HintsGoOnToTheOtherSettingOnceTheFirstIsNamed) {
   const ActionModel& model = shipped_model("grand");
-  Exercise e = generate_exercise(model, "grand", 0, 2);
-  e.faults = {{"let_off", 1.0}, {"checking", 2.0}};
+  const Exercise e = let_off_and_checking_exercise(model);
   PracticeSession session(e, model);
   const std::vector<FaultAnswer> hidden = exercise_answers(e);
   std::vector<std::string> hints;
