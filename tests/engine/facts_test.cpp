@@ -25,11 +25,13 @@ TEST_P(BothActions, F2_SoftToVeryLoudKeyForcesSpanOneToSixMetresPerSecond) {
   const double soft = first_impact_velocity(test::run(model, "force:pulse:2:200", 0.3));
   const double loud = first_impact_velocity(test::run(model, "force:pulse:50:200", 0.1));
   std::printf("%s: 2 N -> %.2f m/s, 50 N -> %.2f m/s\n", GetParam().c_str(), soft, loud);
-  // "about 1 to 6 m/s" (Russell & Rossing; Kinoshita): soft within 0.5–1.5, loud within 4.5–7.5.
-  // Measured: grand 1.05 and 6.59, upright 1.14 and 7.26 m/s. The upright's loud blow is beyond
-  // "about 6" (README, limits: the jack slides out from under the butt in loud blows and drives
-  // the hammer up to the string); 7.5 keeps it from growing further unnoticed.
-  EXPECT_GT(soft, 0.5);
+  // "about 1 to 6 m/s" (Russell & Rossing; Kinoshita): soft within 0.9–1.5, loud within 4.5–7.5.
+  // Measured: grand 1.05 and 6.59, upright 1.14 and 7.26 m/s. "About 1" with a 10 % margin below
+  // (a 2 N blow a tenth slower than 1 m/s is still a soft blow, one at half of it is not). The
+  // upright's loud blow is beyond "about 6" (README, limits: the jack slides out from under the
+  // butt in loud blows and drives the hammer up to the string); 7.5 keeps it from growing
+  // further unnoticed.
+  EXPECT_GT(soft, 0.9);
   EXPECT_LT(soft, 1.5);
   EXPECT_GT(loud, 4.5);
   EXPECT_LT(loud, 7.5);

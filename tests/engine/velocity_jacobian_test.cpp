@@ -18,8 +18,11 @@ TEST(VelocityJacobian, MatchesFiniteDifferencesOfTheRightHandSide) {
   // terms ∂c/∂q̇, which are linear in q̇: at these rates they are below ~1e-2 s⁻¹, while the
   // entries that matter (felt hysteresis, contact and joint friction) reach 1e3–1e5 s⁻¹. The
   // rates also keep every contact on one side of its kinks (ẋ = 0, slip = 0) for the
-  // finite-difference increment (~1.5e-9 rad/s). Hence: agreement to 1e-4 of the block's largest
-  // entry plus 0.1 s⁻¹.
+  // finite-difference increment (~1.5e-9 rad/s). Each entry is held to its own size (the block
+  // spans 1e-1 to 2e7 s⁻¹, and a joint friction's 76–276 s⁻¹ would hide under a tolerance scaled
+  // by the block's largest, a felt's): 1e-5 relative (the differences' truncation, measured at
+  // most 4e-7 of the large entries) plus 0.05 s⁻¹ (their rounding, ε·|q̈ terms|/increment with
+  // terms up to ~1e5 rad/s², about 0.015 s⁻¹, and the ∂c/∂q̇ left out; measured at most 0.026).
   for (const std::string name : {"grand", "upright"}) {
     const ActionModel model = test::shipped(name);
     const RestState rest = find_rest_state(model);
@@ -42,10 +45,10 @@ TEST(VelocityJacobian, MatchesFiniteDifferencesOfTheRightHandSide) {
       dynamics.rhs(0.01, y, f0);
       ASSERT_TRUE(dynamics.velocity_jacobian(closed));
       forward_difference_jacobian(dynamics, 0.01, y, f0, y_work, f_work, finite);
-      const double scale = finite.bottomRightCorner(n, n).cwiseAbs().maxCoeff();
       for (int i = 0; i < n; ++i)
         for (int j = 0; j < n; ++j)
-          EXPECT_NEAR(closed(n + i, n + j), finite(n + i, n + j), 1e-4 * scale + 0.1)
+          EXPECT_NEAR(closed(n + i, n + j), finite(n + i, n + j),
+                      1e-5 * std::abs(finite(n + i, n + j)) + 0.05)
               << name << " row " << row << " entry " << i << "," << j;
       // the other blocks are left alone
       EXPECT_EQ(closed.topRows(n).cwiseAbs().maxCoeff(), 0.0);
