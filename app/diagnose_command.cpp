@@ -48,7 +48,8 @@ std::vector<PlotSpec> diagnosis_plots(const Diagnosis& d) {
   PlotSpec ranking = category_plot(
       std::string("Candidate causes (") + (d.held_out ? "held-out" : "training") + " error)",
       "rms error (deg)", "candidate", "candidate_index");
-  PlotCurve rms = point_curve("fitted candidate", "validated_rms_deg");
+  PlotCurve rms =
+      point_curve("fitted candidate", d.held_out ? "validated_rms_deg" : "training_rms_deg");
   for (const CandidateFit& c : d.ranking) {
     const double error = d.held_out ? c.validated_rms_deg : c.training_rms_deg;
     if (!c.completed || !std::isfinite(error)) continue;
@@ -128,10 +129,10 @@ int run_diagnose(const std::vector<std::string>& args) {
   std::cout << "what the model gets wrong:\n";
   for (std::size_t i = 0; i < d.discrepancies.size() && i < 12; ++i)
     std::cout << "  " << d.discrepancies[i] << "\n";
-  std::cout << "ranking (rms fitted on every trial"
-            << (d.held_out ? "; held-out: each trial under the fit without it"
-                           : "; one trial: nothing can be held out")
-            << "):\n";
+  std::cout << (d.held_out ? "ranking (by the held-out error, each trial under the fit made "
+                             "without it; first the rms fitted on every trial):\n"
+                           : "ranking (by the rms fitted on the one trial: nothing can be held "
+                             "out):\n");
   for (const CandidateFit& c : d.ranking) {
     std::cout << "  " << c.effect << " = " << c.value << " " << c.unit << ": " << c.training_rms_deg
               << " deg";
@@ -145,10 +146,8 @@ int run_diagnose(const std::vector<std::string>& args) {
   if (d.cause)
     std::cout << "cause: " << d.cause->name << " = " << d.cause->value << " " << d.cause_unit
               << "\n";
-  else if (d.ambiguous)
-    std::cout << "cause: none named, the ranking is ambiguous (" << d.ranking.front().note << ")\n";
   else
-    std::cout << "cause: none beyond the noise\n";
+    std::cout << "cause: none, " << d.verdict << "\n";
   std::cout << "baseline " << d.baseline_rms_deg << " deg, extended " << d.extended_rms_deg
             << " deg, gain " << d.gain * 100 << " %, measured on " << d.gain_basis << "  ("
             << d.simulations << " simulations, " << d.wall_time_s << " s)\n";

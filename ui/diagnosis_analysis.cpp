@@ -93,25 +93,19 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                                         .arg(QString::fromStdString(d.cause->name))
                                         .arg(number(d.cause->value))
                                         .arg(QString::fromStdString(d.cause_unit))
-                                  : QObject::tr("none beyond the noise");
+                                  : QObject::tr("none");
   const QString error_kind = d.held_out ? QObject::tr("held-out") : QObject::tr("training");
-  result.summary = has_cause ? (d.held_out ? QObject::tr("cause %1; the error on held-out trials "
-                                                         "falls from %2 to %3 deg (gain %4 %).")
-                                           : QObject::tr("cause %1; the error on the single "
-                                                         "trial (no held-out data) falls from %2 "
-                                                         "to %3 deg (gain %4 %)."))
-                                   .arg(cause)
-                                   .arg(number(d.baseline_rms_deg))
-                                   .arg(number(d.extended_rms_deg))
-                                   .arg(number(d.gain * 100.0, 2))
-                   : d.ambiguous
-                       ? QObject::tr("no cause named: the ranking is ambiguous (%1).")
-                             .arg(QString::fromStdString(d.ranking.front().note))
-                       : QObject::tr(
-                             "no candidate explains the residual (%1 deg) beyond the noise (%2 "
-                             "deg): no cause named.")
+  result.summary = has_cause
+                       ? (d.held_out ? QObject::tr("cause %1; the error on held-out trials "
+                                                   "falls from %2 to %3 deg (gain %4 %).")
+                                     : QObject::tr("cause %1; the error on the single "
+                                                   "trial (no held-out data) falls from %2 "
+                                                   "to %3 deg (gain %4 %)."))
+                             .arg(cause)
                              .arg(number(d.baseline_rms_deg))
-                             .arg(number(d.noise_deg));
+                             .arg(number(d.extended_rms_deg))
+                             .arg(number(d.gain * 100.0, 2))
+                       : QObject::tr("no cause named: %1.").arg(QString::fromStdString(d.verdict));
   result.table = {
       {QObject::tr("cause"), cause, ""},
       {QObject::tr("baseline error (%1 rms)").arg(error_kind), number(d.baseline_rms_deg), "deg"},
@@ -190,7 +184,11 @@ AnalysisResult diagnosis_result(std::shared_ptr<const Diagnosis> dp) {
                        {},
                        {},
                        QObject::tr("Ranking plot")};
-  AnalysisSeries validated{QObject::tr("candidate, fitted"), "validated_rms_deg", {}, {}, true};
+  AnalysisSeries validated{QObject::tr("candidate, fitted"),
+                           d.held_out ? "validated_rms_deg" : "training_rms_deg",
+                           {},
+                           {},
+                           true};
   AnalysisSeries base_line{
       QObject::tr("baseline (no extension)"), "baseline_rms_deg", {}, {}, false};
   AnalysisGrid grid{QObject::tr("Ranking"),
@@ -235,9 +233,10 @@ AnalysisEntry diagnosis_entry() {
   e.name = QObject::tr("Diagnosis of measured data");
   e.description = QObject::tr(
       "Measured hammer traces (CSV files with time_s and hammer_angle_deg; `pianoaction "
-      "import-raw` converts a camera's export) against this action: what the model "
-      "gets wrong by phase, which candidate extension explains it on held-out trials, and the "
-      "gain. The same analysis as `pianoaction diagnose`.");
+      "import-raw` converts raw optical-sensor readings with their calibration) against this "
+      "action: what the model gets wrong by phase, which candidate extension explains it best "
+      "on trials it was not fitted to (with two files or more), and the gain. The same analysis "
+      "as `pianoaction diagnose`.");
   AnalysisParameter files;
   files.key = "files";
   files.label = QObject::tr("Measured files");

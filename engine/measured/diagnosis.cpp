@@ -550,6 +550,31 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
   return p;
 }
 
+/// The decision in one sentence (Diagnosis::verdict). best: the first fitted candidate of the
+/// ranking, if any; best_rms_deg its error in the ranking's measure.
+std::string diagnosis_verdict(const Diagnosis& d, const CandidateFit* best, bool at_limit,
+                              double best_rms_deg) {
+  const std::string measure = d.held_out ? "held-out" : "training";
+  if (d.cause)
+    return d.cause->name + " = " + format_number(d.cause->value, 4) + " " + d.cause_unit +
+           " explains the discrepancy: the " + measure + " error falls from " +
+           format_fixed(d.baseline_rms_deg, 3) + " to " + format_fixed(d.extended_rms_deg, 3) +
+           " deg (noise " + format_fixed(d.noise_deg, 3) + " deg)";
+  if (d.ambiguous) return "the ranking is ambiguous (" + d.ranking.front().note + ")";
+  // a residual whose power is within about twice the noise's is the noise
+  if (d.baseline_rms_deg <= kWithinNoiseRatio * d.noise_deg)
+    return "the model is within the noise (error " + format_fixed(d.baseline_rms_deg, 3) +
+           " deg, noise " + format_fixed(d.noise_deg, 3) + " deg)";
+  std::string text = "no candidate explains the discrepancy (error " +
+                     format_fixed(d.baseline_rms_deg, 3) + " deg against noise " +
+                     format_fixed(d.noise_deg, 3) + " deg";
+  if (!best) return text + "; no candidate could be fitted)";
+  text += "; the best, " + best->effect + ", leaves " + format_fixed(best_rms_deg, 3) + " deg " +
+          measure;
+  if (at_limit) return text + " at a limit of its range, so it is not identified)";
+  return text + ", not enough to name it)";
+}
+
 }  // namespace
 
 Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& trials,
@@ -583,6 +608,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     r.data = prepared[j].data;
     r.input_spec = prepared[j].spec;
     r.input_estimated = prepared[j].estimated;
+    r.file_time_shift_s = prepared[j].file_shift_s;
     try {  // a bad '# input:' line: the file that carries it
       parse_input_spec(prepared[j].spec, input_context(model, base_rest));
     } catch (const InputError& e) {
@@ -753,11 +779,18 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     }
     f.delta_bic = n_eff * std::log(base_ms / criterion_ms) - std::log(n_eff);
   }
-  // ranked by the fit on every trial (the held-out errors are reported, not chosen on)
-  std::sort(work.begin(), work.end(), [](const CandidateWork& a, const CandidateWork& b) {
+  // Ranked by the criterion: with two trials or more the held-out error (each trial judged by
+  // the fit made without it), which tells apart two candidates that fit the same trials equally
+  // well but predict the others differently; with one trial the fit itself. Candidates screened
+  // out come after, by their best scan point.
+  const bool by_held_out = d.held_out;
+  auto criterion = [by_held_out](const CandidateWork& w) {
+    return by_held_out ? w.fit.validated_rms_deg : w.fit.training_rms_deg;
+  };
+  std::sort(work.begin(), work.end(), [&](const CandidateWork& a, const CandidateWork& b) {
     if (a.refined != b.refined) return a.refined;
     if (a.fit.completed != b.fit.completed) return a.fit.completed;
-    if (a.refined) return a.all_rss < b.all_rss;
+    if (a.refined) return a.fit.completed ? criterion(a) < criterion(b) : a.all_rss < b.all_rss;
     return a.scan_best_rss < b.scan_best_rss;
   });
   for (const CandidateWork& w : work) d.ranking.push_back(w.fit);
@@ -771,16 +804,18 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   const CandidateWork* runner_up = nullptr;
   for (std::size_t i = 1; i < work.size() && !runner_up; ++i)
     if (work[i].refined && work[i].fit.completed) runner_up = &work[i];
-  const bool decisive = !runner_up || runner_up->all_rss > kMinRunnerUpRatio * best.all_rss;
+  // mean squares compared: the rms ratio squared
+  const bool decisive =
+      !runner_up || std::pow(criterion(*runner_up), 2) > kMinRunnerUpRatio * best_ms;
   const bool explains = best.refined && best.fit.completed && !at_limit &&
                         best_ms < kMaxExplainedRatio * base_ms && best.fit.delta_bic > kMinBicGain;
   if (explains && !decisive) {
     d.ambiguous = true;
     d.ranking.front().note = "fits best, but " + runner_up->fit.effect + " fits within " +
                              format_fixed(100.0 * (std::sqrt(kMinRunnerUpRatio) - 1.0), 0) +
-                             " % of its rms error (" +
-                             format_fixed(runner_up->fit.training_rms_deg, 3) + " against " +
-                             format_fixed(best.fit.training_rms_deg, 3) +
+                             " % of its " + (by_held_out ? "held-out " : "") + "rms error (" +
+                             format_fixed(criterion(*runner_up), 3) + " against " +
+                             format_fixed(criterion(best), 3) +
                              " deg): the trials do not tell them apart, no cause named";
   }
   if (explains && decisive) {
@@ -813,6 +848,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     }
   }
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;
+  d.verdict = diagnosis_verdict(d, best.refined && best.fit.completed ? &best.fit : nullptr,
+                                at_limit, std::sqrt(best_ms));
   d.gain_basis =
       !d.cause ? std::string("no cause named: the extended model is the baseline") +
                      (d.held_out ? "" : " (one trial: no trial can be held out)")

@@ -28,9 +28,10 @@
 // shortlist of the other trials, fitted on them, is evaluated on it. With one trial nothing can
 // be held out: the result says so, no held-out error is given, and the gain is a training gain.
 //
-// Selection: candidates are ranked by their cost fitted on every trial (all have one parameter,
-// so the cost compares them like an information criterion would). The best is named the cause
-// only if
+// Selection: candidates are ranked by their validated (held-out) error, or with one trial by
+// their cost fitted on it (all have one parameter, so the error compares them like an
+// information criterion would; a candidate that fits the trials it saw as well as another but
+// predicts the one it did not see worse ranks below it). The best is named the cause only if
 //   (1) its validated mean square (training with one trial) is below kMaxExplainedRatio × the
 //       baseline's, and
 //   (2) ΔBIC = N_eff ln(MS_base / MS_cand) − ln N_eff > kMinBicGain, with N_eff the samples
@@ -39,7 +40,8 @@
 //   (3) its fitted value is not at a limit of its physical range (then it is not identified;
 //       every such fit in the ranking says so), and
 //   (4) the runner-up (the next fitted candidate) leaves at least kMinRunnerUpRatio times its
-//       mean square: otherwise the ranking is ambiguous and no cause is named.
+//       mean square, in the same measure (validated, else training): otherwise the ranking is
+//       ambiguous and no cause is named.
 #pragma once
 
 #include <algorithm>
@@ -69,6 +71,9 @@ inline constexpr double kCorrelationTimeS = 5e-3;
 /// so the BIC over N_eff (which a 10 % rms difference on 100 effective samples passes) is no
 /// measure of which of two fits is right; a third of the residual power is.
 inline constexpr double kMinRunnerUpRatio = 1.5;
+/// A baseline error within 1.5 times the noise (residual power within 2.25 times the noise's) is
+/// called the noise: the verdict says the model needs no cause, not that none was found.
+inline constexpr double kWithinNoiseRatio = 1.5;
 
 struct DiagnoseOptions {
   std::vector<std::string> candidates;  ///< effect names; empty: candidate_effects(model)
@@ -95,6 +100,9 @@ struct TrialReport {
   MeasuredTrial data;      ///< as compared (an estimated input's strike on the model's clock)
   std::string input_spec;  ///< the input the model was driven with (estimated if unknown)
   bool input_estimated = false;
+  /// Time in the file = time here (data, events, traces) + file_time_shift_s: nonzero when an
+  /// estimated input's strike was moved onto the model's clock (the samples before it dropped).
+  double file_time_shift_s = 0.0;
   double noise_deg = 0.0;
   /// The baseline aligned with its angle offset taken at rest (referenced_to_rest; the fits and
   /// the gain use align()'s least-squares offset): residual, offset and Σ r² as shown.
@@ -125,6 +133,9 @@ struct Diagnosis {
   std::string gain_basis;  ///< what the gain is measured on, in words
   bool held_out = true;    ///< false with a single trial (training errors)
   bool ambiguous = false;  ///< the best fit explains the data, but the runner-up about as well
+  /// The decision in one sentence: the cause and the error it removes; or why none is named
+  /// (an ambiguous ranking, a model within the noise, or no candidate that explains it).
+  std::string verdict;
   std::optional<Effect> cause;
   std::string cause_unit;
   std::vector<CandidateFit> ranking;  ///< best validated first

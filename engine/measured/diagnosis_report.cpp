@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "io/csv.h"
 
 namespace pat {
@@ -67,8 +68,12 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
   for (const TrialReport& r : d.trials) {
     nlohmann::json trial_events = nlohmann::json::array();
     for (const MeasuredEvent& e : r.measured_events) {
-      nlohmann::json item{
-          {"type", e.type}, {"t_s", e.t}, {"angle_deg", e.angle_deg}, {"file", r.path}};
+      // t_s on the clock compared (the model's), file_t_s in the file's own time
+      nlohmann::json item{{"type", e.type},
+                          {"t_s", e.t},
+                          {"file_t_s", e.t + r.file_time_shift_s},
+                          {"angle_deg", e.angle_deg},
+                          {"file", r.path}};
       events.push_back(item);
       trial_events.push_back(item);
     }
@@ -105,6 +110,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
         {{"file", r.path},
          {"input", r.input_spec},
          {"input_estimated", r.input_estimated},
+         {"file_time_shift_s", r.file_time_shift_s},
          {"noise_deg", r.noise_deg},
          {"time_offset_ms", r.baseline_alignment.time_offset_s * 1e3},
          {"angle_offset_deg", r.baseline_alignment.angle_offset_deg},
@@ -132,6 +138,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
           {"gain_measured_on", d.gain_basis},
           {"held_out", d.held_out},
           {"ambiguous", d.ambiguous},
+          {"verdict", d.verdict},
           {"noise_deg", d.noise_deg},
           {"cause", cause},
           {"ranking", ranking},
@@ -146,6 +153,8 @@ CsvTable trial_traces_table(const TrialReport& r) {
   const auto& phases = phase_names();
   CsvTable traces;
   traces.metadata["file"] = r.path;
+  // the times are those compared: the file's own are these plus the shift
+  traces.metadata["file_time_shift_s"] = format_number(r.file_time_shift_s, 9);
   traces.metadata["phases"] = phase_list();
   traces.columns = {"time_s", "measured_deg", "baseline_deg", "residual_baseline_deg",
                     "phase_index"};

@@ -18,17 +18,23 @@ namespace {
 /// own key column, else the key of the input the model was driven with). Only let-off, which a
 /// hammer trace does not show, is taken from the model: its escapement splits the rise into
 /// acceleration and free flight. After an impact the hammer is in rebound and check until the
-/// key starts to rise (release: once its angle has fallen kKeyRiseFraction of its travel below
-/// its highest point since the impact, dated back to where that fall began), and back once it is
-/// within kNearRestDeg of rest (return). A later stroke starts where its rise leaves the lowest
-/// level since the last impact.
+/// key is let up (release), and back once it is within kNearRestDeg of rest (return). The key
+/// (lightly smoothed) is let up when it rises kKeyReleaseFraction of its travel above its deepest
+/// point since the impact: a held key's felt overshoot, its bounce on the punching and the
+/// sensor's scatter stay below that. The release is dated back to where the key left the level it
+/// was held at (the median since the impact, within a band of kKeyRiseFraction of the travel or
+/// three times the smoothed key's noise), and on while it still stood higher the sample before.
+/// A later stroke starts where its rise leaves the lowest level since the last impact.
 std::vector<std::string> measured_phases(const MeasuredTrial& trial, const ModelTrace& model,
                                          const Alignment& al,
                                          const std::vector<MeasuredEvent>& events,
                                          double noise_deg) {
   constexpr double kNearRestDeg = 0.3;
-  // 5 % of the key's travel (0.5 mm at the key front for a 10 mm dip): above the key sensor's
-  // ±0.1 mm scatter near rest, well below the whole release
+  // a quarter of the key's travel: beyond the punching's overshoot under a 1 kg blow (10 %, 3.0°
+  // at the impact, held at 2.7°) and the bounce of a forte key, within a half-stroke release (50 %)
+  constexpr double kKeyReleaseFraction = 0.25;
+  // the band of a held key: 5 % of its travel (0.5 mm at the key front for a 10 mm dip), above
+  // the key sensor's ±0.1 mm scatter near rest
   constexpr double kKeyRiseFraction = 0.05;
   const std::size_t n = trial.t.size();
   std::vector<std::string> phase(n, "rest");
@@ -42,12 +48,25 @@ std::vector<std::string> measured_phases(const MeasuredTrial& trial, const Model
     h[i] = sum / static_cast<double>(b - a + 1) - al.angle_offset_deg;
   }
   const double near = std::max(kNearRestDeg, 3.0 * noise_deg / std::sqrt(5.0));
+  // the key: the file's own column (a 5-sample moving average, as the hammer), else the key of
+  // the input the model was driven with
+  const bool measured_key = trial.key_deg.size() == n;
   std::vector<double> key(n);
-  for (std::size_t i = 0; i < n; ++i)
-    key[i] =
-        trial.key_deg.size() == n ? trial.key_deg[i] : model.key_at(trial.t[i] - al.time_offset_s);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!measured_key) {
+      key[i] = model.key_at(trial.t[i] - al.time_offset_s);
+      continue;
+    }
+    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
+    double sum = 0.0;
+    for (std::size_t j = a; j <= b; ++j) sum += trial.key_deg[j];
+    key[i] = sum / static_cast<double>(b - a + 1);
+  }
   const auto [key_lo, key_hi] = std::minmax_element(key.begin(), key.end());
-  const double key_rise = kKeyRiseFraction * (*key_hi - *key_lo);
+  const double key_travel = *key_hi - *key_lo;
+  const double key_band =
+      std::max(kKeyRiseFraction * key_travel,
+               measured_key ? 3.0 * estimate_noise(trial.key_deg) / std::sqrt(5.0) : 0.0);
   auto index_at = [&](double t) {
     return static_cast<std::size_t>(std::lower_bound(trial.t.begin(), trial.t.end(), t) -
                                     trial.t.begin());
@@ -99,18 +118,36 @@ std::vector<std::string> measured_phases(const MeasuredTrial& trial, const Model
     // after it, up to the next stroke's impact phase: rebound and check, release, return
     const std::size_t end = k + 1 < impacts.size() ? index_at(impacts[k + 1] - 1e-3) : n;
     std::size_t release = end;
-    if (key_rise > 0.0) {
-      std::size_t highest = std::min(index_at(impacts[k]), n - 1);
-      for (std::size_t i = highest; i < end; ++i) {
-        if (key[i] >= key[highest]) highest = i;
-        if (key[i] < key[highest] - key_rise) {
-          // dated where this rise began: back from here while the key stood higher before (the
-          // smoothed key falls monotonically; its slow scatter while held ends the walk there)
-          std::size_t start = i;
-          while (start > impact_to && key[start - 1] > key[start]) --start;
-          release = std::max(start, impact_to);
+    if (key_travel > 0.0) {
+      // the deepest point since the impact, then the first sample a quarter of the travel above
+      std::size_t deepest = std::min(index_at(impacts[k]), n - 1);
+      std::size_t let_up = end;
+      for (std::size_t i = deepest; i < end; ++i) {
+        if (key[i] >= key[deepest]) deepest = i;
+        if (key[i] < key[deepest] - kKeyReleaseFraction * key_travel) {
+          let_up = i;
           break;
         }
+      }
+      if (let_up < end) {
+        // dated back to where the key left the level it was held at
+        std::vector<double> held(
+            key.begin() + static_cast<std::ptrdiff_t>(impact_to),
+            key.begin() + static_cast<std::ptrdiff_t>(std::max(let_up, impact_to)));
+        double held_level = key[deepest];
+        if (!held.empty()) {
+          std::nth_element(held.begin(), held.begin() + held.size() / 2, held.end());
+          held_level = held[held.size() / 2];
+        }
+        // back through the band below the held level, and on while the key still stood higher
+        // the sample before (a clean sensor's key is dated to where it began to move)
+        std::size_t start = let_up;
+        while (start > impact_to &&
+               (key[start - 1] < held_level - key_band || key[start - 1] > key[start]))
+          --start;
+        // the moving average starts to fall two samples before the key does
+        if (measured_key) start = std::min(start + 2, let_up);
+        release = std::max(start, impact_to);
       }
     }
     std::size_t back = end;

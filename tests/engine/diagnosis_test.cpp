@@ -10,10 +10,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <random>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "measured/alignment.h"
+#include "measured/diagnosis_report.h"
 #include "measured/discrepancies.h"
 #include "measured/hidden_effects.h"
 #include "measured/measured_data.h"
@@ -144,6 +147,13 @@ TEST(Diagnosis, RealStrikeRunsEndToEnd) {
       impact_time->text.find("measured ", impact_time->text.find("model's clock"));
   ASSERT_NE(at, std::string::npos) << impact_time->text;
   EXPECT_NEAR(std::stod(impact_time->text.substr(at + 9)), file_peak_ms, 2.0) << impact_time->text;
+  // so do the exports: the shift, and each event's time in the file
+  EXPECT_NEAR(r.measured_events.front().t + r.file_time_shift_s, file_peak_ms * 1e-3, 2e-3);
+  const nlohmann::json json = diagnosis_json(d);
+  EXPECT_EQ(json["trials"][0]["file_time_shift_s"].get<double>(), r.file_time_shift_s);
+  EXPECT_NEAR(json["measured_events"][0]["file_t_s"].get<double>(), file_peak_ms * 1e-3, 2e-3);
+  EXPECT_EQ(trial_traces_table(r).metadata.at("file_time_shift_s"),
+            format_number(r.file_time_shift_s, 9));
   EXPECT_FALSE(d.held_out);
   // one trial: leave-one-out is impossible, so no held-out error is given, and the gain says it
   // is measured on the fitted trial itself
@@ -274,6 +284,37 @@ TEST(Discrepancies, PhasesComeFromTheMeasurementAndTheKeyNotFromTheModel) {
   EXPECT_EQ(phase_at(0.5), "return");
 }
 
+// A key held down is not released: a 1 kg mass presses the key 3.0° into its punching at the
+// blow and holds it at 2.7° (an overshoot of a tenth of its travel), and a key read with 0.2°
+// of noise scatters by more than the 5 % of its travel that used to mean "rising"; both had
+// labelled most of the held key "release". A key that is let up (a 4 Hz sine) still is.
+TEST(Discrepancies, AHeldKeyIsNotReleasedByItsOvershootOrItsNoise) {
+  const ActionModel grand = test::shipped("grand");
+  auto phase_counts = [&](const std::string& spec, double noise_deg, const std::string& name) {
+    SynthOptions o;
+    o.duration_s = 0.4;
+    o.noise_deg = noise_deg;
+    o.seed = 5;
+    const std::string path = write_temp(name, "");
+    write_csv(path, synthesize(grand, spec, o));
+    DiagnoseOptions options;
+    options.candidates = {"joint_friction.key"};
+    const Diagnosis d = diagnose(grand, {read_measured(path, "grand")}, options);
+    std::map<std::string, int> count;
+    for (const std::string& phase : d.trials.front().discrepancies.phase_of_sample) ++count[phase];
+    return count;
+  };
+  for (double noise : {0.0, 0.2}) {
+    auto held = phase_counts("mass:1kg", noise, "held.csv");
+    EXPECT_EQ(held["release"], 0) << "noise " << noise;
+    EXPECT_GT(held["rebound_and_check"], 600) << "noise " << noise;  // of 801 samples
+    auto let_up = phase_counts("motion:sine:4", noise, "sine.csv");
+    // the key is let up at 0.25 s, a quarter-period after the bottom: release, then return
+    EXPECT_GT(let_up["release"], 150) << "noise " << noise;
+    EXPECT_GT(let_up["rebound_and_check"], 150) << "noise " << noise;
+  }
+}
+
 TEST(Discrepancies, TheResidualOscillationIsReadOverOneStretchAndOnlyAsAPeak) {
   const MeasuredTrial trial = measured_stroke();
   ModelTrace m;
@@ -344,6 +385,84 @@ TEST(Diagnosis, EachLeaveOneOutFitNeverSeesItsHeldOutTrial) {
     // and the extended model's error phase by phase beside the baseline's
     for (const PhaseResidual& p : all.trials[j].discrepancies.phases) EXPECT_TRUE(p.has_extended);
   }
+}
+
+// Two candidates can fit the trials they see about equally well and still predict a trial they
+// did not see very differently: a 150 Hz shank flex hidden in a 1 kg blow and a 4 Hz sine is fitted
+// by the shank flex to 0.205° and by a backcheck compliance to 0.222° (within the 22 % that makes
+// a ranking ambiguous), but held out the compliance leaves 3.8° and the flex 0.20°. The ranking
+// and the ambiguity test are on the held-out error, so the flex is named.
+TEST(Diagnosis, TheHeldOutErrorTellsApartCandidatesThatFitTheTrialsEqually) {
+  const ActionModel grand = test::shipped("grand");
+  auto trial = [&](const std::string& spec, double time_offset_s, unsigned long long seed) {
+    SynthOptions o;
+    o.duration_s = 0.4;
+    o.effects = {Effect{"shank_flex", 150.0}};
+    o.noise_deg = 0.2;
+    o.time_offset_s = time_offset_s;
+    o.seed = seed;
+    const std::string path = write_temp("flex_" + std::to_string(seed) + ".csv", "");
+    write_csv(path, synthesize(grand, spec, o));
+    return read_measured(path, "grand");
+  };
+  const std::vector<MeasuredTrial> trials = {trial("mass:1kg", 2e-3, 1),
+                                             trial("motion:sine:4", -1e-3, 2)};
+  DiagnoseOptions options;
+  options.candidates = {"shank_flex", "backcheck_compliance", "repetition_spring"};
+  const Diagnosis d = diagnose(grand, trials, options);
+  ASSERT_EQ(d.ranking.size(), 3u);
+  for (const CandidateFit& c : d.ranking)
+    std::printf("%s: training %.3f, held-out %.3f deg\n", c.effect.c_str(), c.training_rms_deg,
+                c.validated_rms_deg);
+  const CandidateFit& flex = d.ranking[0];
+  EXPECT_EQ(flex.effect, "shank_flex");
+  // the rival fits the seen trials within the ambiguity margin (rms ratio below √1.5): the
+  // training error alone could not tell them apart
+  const auto rival = std::find_if(d.ranking.begin(), d.ranking.end(), [](const CandidateFit& c) {
+    return c.effect == "backcheck_compliance";
+  });
+  ASSERT_NE(rival, d.ranking.end());
+  EXPECT_LT(rival->training_rms_deg, std::sqrt(kMinRunnerUpRatio) * flex.training_rms_deg);
+  // held out, it does not come near
+  EXPECT_GT(rival->validated_rms_deg, 3.0 * flex.validated_rms_deg);
+  // ranked by the held-out error, best first
+  for (std::size_t i = 1; i < d.ranking.size(); ++i)
+    EXPECT_LE(d.ranking[i - 1].validated_rms_deg, d.ranking[i].validated_rms_deg);
+  ASSERT_TRUE(d.cause.has_value()) << d.verdict;
+  EXPECT_FALSE(d.ambiguous);
+  EXPECT_EQ(d.cause->name, "shank_flex");
+  EXPECT_NEAR(d.cause->value, 150.0, 7.5);  // 5 %: measured 148.9 Hz under 0.2° noise
+  EXPECT_NE(d.verdict.find("shank_flex"), std::string::npos) << d.verdict;
+}
+
+// Why no cause is named is said: a model within the noise needs none; a model far off that no
+// candidate explains is not "within the noise".
+TEST(Diagnosis, TheVerdictSaysWhyNoCauseIsNamed) {
+  const ActionModel grand = test::shipped("grand");
+  auto one_trial = [&](const std::vector<Effect>& hidden, const std::string& name) {
+    SynthOptions o;
+    o.duration_s = 0.3;
+    o.effects = hidden;
+    o.noise_deg = 0.2;
+    o.seed = 7;
+    const std::string path = write_temp(name, "");
+    write_csv(path, synthesize(grand, "force:pulse:10:80", o));
+    return read_measured(path, "grand");
+  };
+  DiagnoseOptions options;
+  options.candidates = {"joint_friction.key"};
+  const Diagnosis clean = diagnose(grand, {one_trial({}, "clean.csv")}, options);
+  EXPECT_FALSE(clean.cause.has_value());
+  EXPECT_NE(clean.verdict.find("the model is within the noise"), std::string::npos)
+      << clean.verdict;
+  // a hammer blow 1 mm off hidden: the key's friction cannot explain it
+  const Diagnosis off = diagnose(
+      grand, {one_trial({Effect{"regulation_offset.hammer_blow", 1.0}}, "off.csv")}, options);
+  EXPECT_FALSE(off.cause.has_value());
+  EXPECT_GT(off.baseline_rms_deg, 2.0 * off.noise_deg);
+  EXPECT_NE(off.verdict.find("no candidate explains the discrepancy"), std::string::npos)
+      << off.verdict;
+  EXPECT_NE(off.verdict.find("joint_friction.key"), std::string::npos) << off.verdict;
 }
 
 TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
