@@ -888,7 +888,15 @@ bool ActionView::event(QEvent* event) {
   return QWidget::event(event);
 }
 
-void ActionView::mouseDoubleClickEvent(QMouseEvent*) {
+void ActionView::mouseDoubleClickEvent(QMouseEvent* event) {
+  // a double click on empty space refits the whole action; the second press of two quick key
+  // strokes on the key's ring, or of a pan, is that press (a teacher's zoom is kept)
+  const auto front = frame_ ? key_front_on_screen() : std::nullopt;
+  const bool on_key = front && QLineF(*front, event->position()).length() <= kKeyGrabRadiusPx;
+  if (event->button() != Qt::LeftButton || on_key) {
+    mousePressEvent(event);
+    return;
+  }
   set_focus(ViewFocus::whole);
 }
 

@@ -30,6 +30,7 @@
 #include "export_folder.h"
 #include "plot_export.h"
 #include "plot_panel.h"
+#include "save_paths.h"
 
 namespace pat::ui {
 namespace {
@@ -179,9 +180,11 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   connect(export_plots_, &QPushButton::clicked, this,
           [this] { emit exportRequested(plots_, result_title_); });
   connect(export_table_, &QPushButton::clicked, this, [this] {
-    const QString path = QFileDialog::getSaveFileName(this, tr("Export the table"), export_folder(),
-                                                      tr("CSV (*.csv)"));
+    const QString path =
+        ask_save_path(this, tr("Export the table"), export_folder(), tr("CSV (*.csv)"));
     if (path.isEmpty()) return;
+    // the further tables go beside it, under names the dialog did not ask about
+    if (!confirm_replacing(this, table_csv_paths(path).mid(1))) return;
     try {
       const QStringList written = write_table_csv(path);
       remember_export_folder(path);
@@ -193,7 +196,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   connect(export_report_, &QPushButton::clicked, this, [this] {
     const QString folder =
         QFileDialog::getExistingDirectory(this, tr("Report folder"), export_folder());
-    if (folder.isEmpty()) return;
+    if (folder.isEmpty() || !confirm_writing_into(this, folder)) return;
     try {
       write_report(folder);
       remember_export_folder(folder);
@@ -575,20 +578,26 @@ QStringList AnalysesPanel::write_table_csv(const QString& path) const {
   for (int r = 0; r < table_->rowCount(); ++r)
     rows.push_back(
         {table_->item(r, 0)->text(), table_->item(r, 1)->text(), table_->item(r, 2)->text()});
-  write(path, {"quantity", "value", "unit"}, rows);
-  QStringList written{path};
+  const QStringList paths = table_csv_paths(path);
+  write(paths[0], {"quantity", "value", "unit"}, rows);
+  for (std::size_t g = 0; g < result_.grids.size(); ++g)
+    write(paths[static_cast<int>(g) + 1], result_.grids[g].columns, result_.grids[g].rows);
+  return paths;
+}
+
+QStringList AnalysesPanel::table_csv_paths(const QString& path) const {
+  QStringList paths{path};
   const QFileInfo info(path);
   for (std::size_t g = 0; g < result_.grids.size(); ++g) {
     const AnalysisGrid& grid = result_.grids[g];
     QString grid_path =
         info.dir().filePath(info.completeBaseName() + "_" + file_stem(grid.title) + ".csv");
-    if (written.contains(grid_path))  // two tables of one title: numbered
+    if (paths.contains(grid_path))  // two tables of one title: numbered
       grid_path = info.dir().filePath(
           QString("%1_%2_%3.csv").arg(info.completeBaseName(), file_stem(grid.title)).arg(g + 1));
-    write(grid_path, grid.columns, grid.rows);
-    written << grid_path;
+    paths << grid_path;
   }
-  return written;
+  return paths;
 }
 
 void AnalysesPanel::set_summary(const QString& text) {

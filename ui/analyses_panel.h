@@ -80,6 +80,8 @@ class AnalysesPanel : public QWidget {
   /// tables (a sweep's cycles, a diagnosis's candidates) beside it as PATH-STEM_TABLE.csv with
   /// its own columns. Returns the files written. Throws InputError naming the file.
   QStringList write_table_csv(const QString& path) const;
+  /// The files write_table_csv(path) writes, `path` first.
+  QStringList table_csv_paths(const QString& path) const;
 
  protected:
   /// Refits the summary's height to the new width.

@@ -56,6 +56,7 @@
 #include "regulation_runner.h"
 #include "run_controls.h"
 #include "run_trace_export.h"
+#include "save_paths.h"
 #include "setting_names.h"
 #include "status_fit.h"
 
@@ -262,13 +263,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
   regulation_runner_ = new RegulationRunner(this);
   regulate_button_ = regulation_->add_button(
       tr("Regulate automatically"),
-      tr("Bisection on each adjuster in the technician's order, repeated until every "
-         "measurement is within tolerance; the steps are listed below"));
+      tr("Each adjuster searched in the technician's order (secant steps, kept bracketed), "
+         "repeated until every measurement is within tolerance; the steps are listed below"));
   connect(regulate_button_, &QPushButton::clicked, this, [this] {
-    if (regulation_runner_->running())
+    if (regulation_runner_->running()) {
+      regulation_cancelled_ = true;  // the adjusters it had half searched are not applied
       regulation_runner_->cancel();
-    else
+    } else {
       regulate_automatically();
+    }
   });
   connect(regulation_runner_, &RegulationRunner::stepDone, this, [this](const QString& line) {
     if (model_ && regulation_model_ && same_action(*regulation_model_, *model_))
@@ -281,6 +284,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
               statusBar()->showMessage(
                   tr("The regulation of the %1 was dropped: another action was opened.")
                       .arg(QString::fromStdString(model->name)));
+              return;
+            }
+            if (regulation_cancelled_) {
+              regulation_->log(tr("Regulation cancelled: the adjusters stay where they were."));
+              return;
+            }
+            // a setting moved (or an exercise begun) while it ran: the result belongs to the
+            // action it started from, and applying it would undo that change unseen
+            if (model_ != regulation_model_) {
+              regulation_->log(
+                  tr("Regulation dropped: the action was changed while it ran (Regulate "
+                     "automatically starts again from the current positions)."));
               return;
             }
             regulation_->log(converged ? tr("Regulated: %1.").arg(msg)
@@ -348,6 +363,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
               statusBar()->showMessage(
                   tr("The deregulation demo of the %1 was dropped: another action was opened.")
                       .arg(QString::fromStdString(demo_model_ ? demo_model_->name : "")));
+              return;
+            }
+            if (practising_) {  // an exercise began meanwhile: its action stays on screen
+              statusBar()->showMessage(
+                  tr("The deregulation demo was dropped: a practice exercise began."));
               return;
             }
             const std::string& id = demo_setting_;  // as the demo ran, whatever is chosen now
@@ -444,17 +464,21 @@ void MainWindow::build_menus() {
             tr("the run trace"), tr("CSV (*.csv)"), true,
             [this](const QString& path) { export_run_trace(path.toStdString()); });
       }));
-  exports->addAction(tr("Action &animation (PNG pictures)…"), this,
+  exports->addAction(tr("Action a&nimation (PNG pictures)…"), this,
                      [this] { export_animation_from_menu(); });
   exports->addAction(tr("Export &size…"), this,
                      [this] { export_size_ = ask_export_size(this, export_size_); });
   exports->addSeparator();
   exports->addAction(tr("&Window screenshot…"), this, [this] {
-    export_to_chosen_file(tr("the window screenshot"), tr("PNG images (*.png)"), false,
-                          [this](const QString& path) {
-                            if (!grab().save(path, "PNG"))
-                              throw InputError(path.toStdString() + ": could not write the PNG");
-                          });
+    export_to_chosen_file(
+        tr("the window screenshot"), tr("PNG images (*.png);;JPEG images (*.jpg)"), false,
+        [this](const QString& path) {
+          // the format from the name's suffix
+          if (!grab().save(path))
+            throw InputError(path.toStdString() +
+                             ": could not write the picture (a .png or .jpg name is needed, in "
+                             "a folder that can be written)");
+        });
   });
 
   QMenu* view = menuBar()->addMenu(tr("&View"));
@@ -521,7 +545,7 @@ void MainWindow::build_menus() {
   practice_action_->setShortcut(QKeySequence(tr("Ctrl+P")));
   connect(practice_action_, &QAction::toggled, this, &MainWindow::show_practice);
   view->addSeparator();
-  view->addAction(tr("&Fit the action"), QKeySequence(tr("Ctrl+1")), this,
+  view->addAction(tr("Fit the &action"), QKeySequence(tr("Ctrl+1")), this,
                   [this] { view_->set_focus(ViewFocus::whole); });
   view->addAction(tr("Close-up: &escapement (jack, knuckle or butt, let-off button)"),
                   QKeySequence(tr("Ctrl+2")), this,
@@ -634,6 +658,11 @@ void MainWindow::build_practice() {
     }
     practising_ = active;
     set_practice_layout(active);
+    // a regulation or demo of the class's action ends: its result would land on the exercise
+    if (active) {
+      regulation_runner_->cancel();
+      deregulation_runner_->cancel();
+    }
   });
   // scored: the exercise is over and its answer on show, so the measurements, the other actions
   // and the presets come back (they had stayed locked until practice mode was left, with nothing
@@ -961,6 +990,7 @@ void MainWindow::regulate_automatically() {
                        .arg(QString::fromStdString(model_->name)));
   regulate_button_->setText(tr("Cancel regulation"));
   regulation_model_ = model_;
+  regulation_cancelled_ = false;
   regulation_runner_->start(model_);
 }
 
@@ -1085,8 +1115,8 @@ void MainWindow::save_preset(const std::string& path) {
 
 void MainWindow::save_preset_from_menu() {
   if (!model_) return;
-  const QString path = QFileDialog::getSaveFileName(this, tr("Save current state as preset"),
-                                                    export_folder(), tr("Action presets (*.json)"));
+  const QString path = ask_save_path(this, tr("Save current state as preset"), export_folder(),
+                                     tr("Action presets (*.json)"));
   if (path.isEmpty()) return;
   try {
     save_preset(path.toStdString());
@@ -1213,8 +1243,7 @@ void MainWindow::export_to_chosen_file(const QString& what, const QString& filte
   // was chosen, not where the run had got to when the dialog closed
   const bool was_playing = pause_run && controller_->playing();
   if (was_playing) controller_->pause();
-  const QString path =
-      QFileDialog::getSaveFileName(this, tr("Export %1").arg(what), export_folder(), filter);
+  const QString path = ask_save_path(this, tr("Export %1").arg(what), export_folder(), filter);
   if (was_playing) controller_->play();
   if (path.isEmpty()) return;
   try {

@@ -229,6 +229,7 @@ class MainWindow : public QMainWindow {
   std::string demo_setting_;  ///< the setting the running (or last) deregulation demo moves
   std::shared_ptr<const ActionModel> demo_model_;        ///< the action the demo runs on
   std::shared_ptr<const ActionModel> regulation_model_;  ///< the action being regulated
+  bool regulation_cancelled_ = false;  ///< Cancel pressed: its result is not applied
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

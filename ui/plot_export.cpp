@@ -1,5 +1,6 @@
 #include "plot_export.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QPageSize>
@@ -88,6 +89,31 @@ CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path)
   throw InputError(located_message(path.toStdString(), "", problem));
 }
 
+/// A file beside `path` to write first: a PDF or SVG writer that cannot write says nothing, and
+/// an existing file of that name would have looked like its work.
+QString partial_path(const QString& path) {
+  const QString part = path + ".part";
+  QFile::remove(part);
+  return part;
+}
+
+/// Moves the finished `part` onto `path` (what was there is replaced only now); fails, naming
+/// `path`, when nothing was written.
+void replace_with(const QString& part, const QString& path, const char* kind) {
+  if (QFileInfo(part).size() <= 0) {
+    QFile::remove(part);
+    fail(path, std::string("could not write the ") + kind + " file");
+  }
+  if (QFileInfo::exists(path) && !QFile::remove(path)) {
+    QFile::remove(part);
+    fail(path, std::string("could not replace the ") + kind + " file there (read-only?)");
+  }
+  if (!QFile::rename(part, path)) {
+    QFile::remove(part);
+    fail(path, std::string("could not write the ") + kind + " file (rename failed)");
+  }
+}
+
 }  // namespace
 
 ExportFormat export_format(const QString& path) {
@@ -130,23 +156,29 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
       break;
     }
     case ExportFormat::Pdf: {
-      QPdfWriter writer(path);
-      writer.setResolution(72);
-      writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
-      writer.setPageMargins(QMarginsF(0, 0, 0, 0));
-      writer.setCreator("pianoaction");
-      PlotPanel::render(writer, stacked(plots, layout), scale);
-      if (!QFileInfo(path).exists()) fail(path, "could not write the PDF file");
+      const QString part = partial_path(path);
+      {
+        QPdfWriter writer(part);
+        writer.setResolution(72);
+        writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
+        writer.setPageMargins(QMarginsF(0, 0, 0, 0));
+        writer.setCreator("pianoaction");
+        PlotPanel::render(writer, stacked(plots, layout), scale);
+      }  // the writer closes its file here
+      replace_with(part, path, "PDF");
       break;
     }
     case ExportFormat::Svg: {
-      QSvgGenerator generator;
-      generator.setFileName(path);
-      generator.setSize(size);
-      generator.setViewBox(QRect(QPoint(0, 0), size));
-      generator.setTitle("Piano Action Trainer plots");
-      PlotPanel::render(generator, stacked(plots, layout), scale);
-      if (!QFileInfo(path).exists()) fail(path, "could not write the SVG file");
+      const QString part = partial_path(path);
+      {
+        QSvgGenerator generator;
+        generator.setFileName(part);
+        generator.setSize(size);
+        generator.setViewBox(QRect(QPoint(0, 0), size));
+        generator.setTitle("Piano Action Trainer plots");
+        PlotPanel::render(generator, stacked(plots, layout), scale);
+      }
+      replace_with(part, path, "SVG");
       break;
     }
     case ExportFormat::Csv: {

@@ -514,7 +514,12 @@ void PlotPanel::move_legend_below(bool for_good) {
   const int row = plot_->plotLayout()->rowCount();
   plot_->plotLayout()->addElement(row, 0, plot_->legend);
   plot_->plotLayout()->setRowStretchFactor(row, 0.001);
-  plot_->legend->setMargins(QMargins(6, 0, 6, 1));  // a short panel squeezes it first
+  // a short panel squeezes it first; its rows apart and the last one's descenders inside (with
+  // no spacing and a 1 px margin the "j" of "jack–knuckle" touched "backcheck" below it and the
+  // "g" of "string" was cut at 1366x768)
+  const int descent = QFontMetrics(plot_->legend->font()).descent();
+  plot_->legend->setMargins(QMargins(6, 0, 6, 1 + descent));
+  plot_->legend->setRowSpacing(2);
   plot_->legend->setBorderPen(Qt::NoPen);
   legend_below_ = true;
   schedule_minimum_height();  // (called from a layout: see the afterLayout handler)
@@ -532,12 +537,29 @@ void PlotPanel::update_minimum_height() {
   const double data = 2.5 * ticks.height();
   // around the data: as laid out, once it has been (the plot's margins follow the tick labels),
   // else the plot's title, the x ticks and title, a legend below and some margin
+  // (as laid out, a legend squeezed by a short panel reads short: never less than its own need)
   const int laid_out = plot_->axisRect()->height();
-  const double around = laid_out > 0 && height() > laid_out
-                            ? height() - laid_out
-                            : 2.0 * titles.height() + ticks.height() + legend_height_below() + 24.0;
+  const double needed = 2.0 * titles.height() + ticks.height() + legend_height_below() + 24.0;
+  const double around =
+      laid_out > 0 && height() > laid_out ? std::max<double>(height() - laid_out, needed) : needed;
+  // and never less than the plot's own layout needs at its smallest (title, axis rect with its
+  // ticks, a wrapped legend below): under it the legend's rows were drawn cut (the contact
+  // forces' two rows at 1366x768)
+  // (once laid out: before, the plot widget has no size of its own yet)
+  const QMargins axis_margins = plot_->axisRect()->margins();
+  const int layout_minimum =
+      laid_out <= 0
+          ? 0
+          // (public on the layout element, protected on the text element)
+          : static_cast<const QCPLayoutElement*>(title_element_)->minimumOuterSizeHint().height() +
+                axis_margins.top() + axis_margins.bottom() +
+                std::max(static_cast<int>(std::ceil(data)),
+                         plot_->axisRect()->minimumSize().height()) +
+                legend_height_below() +
+                plot_->plotLayout()->rowSpacing() * (plot_->plotLayout()->rowCount() - 1) +
+                (height() - plot_->height());
   setMinimumHeight(std::max({kMinimumHeightPx, static_cast<int>(std::ceil(8.0 * ticks.height())),
-                             static_cast<int>(std::ceil(around + data))}));
+                             static_cast<int>(std::ceil(around + data)), layout_minimum}));
 }
 
 void PlotPanel::schedule_minimum_height() {
@@ -590,6 +612,7 @@ void PlotPanel::move_legend_inside() {
   plot_->plotLayout()->simplify();  // the legend's row goes
   plot_->axisRect()->insetLayout()->addElement(plot_->legend, Qt::AlignRight | Qt::AlignTop);
   plot_->legend->setMargins(legend_margins_inside_);
+  plot_->legend->setRowSpacing(0);
   plot_->legend->setBorderPen(QPen(QColor(200, 200, 200)));
   plot_->legend->setWrap(0);  // one row, inside (at most four series are ever moved back)
   plot_->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);

@@ -33,6 +33,7 @@
 #include "practice/exercise.h"
 #include "practice_report.h"
 #include "practice_runner.h"
+#include "save_paths.h"
 #include "setting_names.h"
 #include "step_slider.h"
 
@@ -697,11 +698,16 @@ void PracticePanel::export_from_dialog() {
       who.isEmpty() ? QString()
                     : tr("practice report %1.pdf")
                           .arg(QString(who).replace(QRegularExpression("[/\\\\:*?\"<>|]"), "_"));
-  const QString pdf = QFileDialog::getSaveFileName(this, tr("Export the session report"),
-                                                   export_path(suggested), tr("PDF (*.pdf)"));
+  const QString pdf = ask_save_path(this, tr("Export the session report"), export_path(suggested),
+                                    tr("PDF (*.pdf)"));
   if (pdf.isEmpty()) return;
-  // "session", "session.pdf" and "session.csv" all make session.pdf and session.csv
+  // "session", "session.pdf" and "session.csv" all make session.pdf and session.csv; the dialog
+  // asked about the name chosen only
   const ReportPaths paths = report_paths(pdf);
+  QStringList unconfirmed;
+  for (const QString& p : {paths.pdf, paths.csv})
+    if (p != pdf) unconfirmed << p;
+  if (!confirm_replacing(this, unconfirmed)) return;
   try {
     export_report(paths.pdf, paths.csv);
     remember_export_folder(paths.pdf);

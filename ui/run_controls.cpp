@@ -100,7 +100,7 @@ RunControls::RunControls(PlaybackController* controller, QWidget* parent)
           [this](int i) { controller_->set_speed(speeds()[i]); });
   factor_ = new QLabel(this);
   factor_->setObjectName("achieved_speed");
-  fit_factor_width();
+  fit_fixed_widths();
   factor_->setToolTip(tr("Real-time factor achieved: simulated time shown per wall second"));
   bottom->addWidget(factor_);
   connect(controller_, &PlaybackController::realtimeFactorChanged, this, [this](double f) {
@@ -160,7 +160,7 @@ void RunControls::update_play_button(bool playing) {
   play_->setText(playing ? tr("Pause") : tr("Play"));
 }
 
-void RunControls::fit_factor_width() {
+void RunControls::fit_fixed_widths() {
   // a fixed width, the widest reading's: the toolbar does not shift as the reading changes
   const QFontMetrics metrics(factor_->font());
   int widest = 0;
@@ -168,11 +168,20 @@ void RunControls::fit_factor_width() {
                                 tr("achieved 1/9.9"), tr("achieved ×9.99"), tr("achieved —")})
     widest = std::max(widest, metrics.horizontalAdvance(sample));
   factor_->setFixedWidth(widest + 8);
+  // and Play as wide as Pause: the buttons after it stayed 11 pixels to the right while playing
+  const QString shown = play_->text();
+  int play_width = 0;
+  for (const QString& text : {tr("Play"), tr("Pause")}) {
+    play_->setText(text);
+    play_width = std::max(play_width, play_->sizeHint().width());
+  }
+  play_->setText(shown);
+  play_->setFixedWidth(play_width);
 }
 
 void RunControls::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
-  if (event->type() == QEvent::FontChange && factor_) fit_factor_width();  // larger text
+  if (event->type() == QEvent::FontChange && factor_ && play_) fit_fixed_widths();  // larger text
 }
 
 }  // namespace pat::ui

@@ -39,8 +39,9 @@ class RunControls : public QWidget {
 
  private:
   void update_play_button(bool playing);
-  /// The achieved-speed readout's fixed width, from its widest reading in the current font.
-  void fit_factor_width();
+  /// Fixed widths in the current font, so that the toolbar does not shift: the achieved-speed
+  /// readout's (its widest reading) and the Play button's (as wide as Pause).
+  void fit_fixed_widths();
   PlaybackController* controller_;
   InputSpecForm* input_;
   QToolButton* play_;

@@ -15,10 +15,16 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
   QApplication app(argc, argv);
   QApplication::setOrganizationName("PianoActionTrainer");
   QApplication::setApplicationName("pianoaction");
+  if (!options.screenshot.empty()) {
+    // a --screenshot (the README's pictures) neither reads nor changes the user's settings (the
+    // last preset, the window's layout, the text size): its own, cleared, so that every picture
+    // starts from the defaults
+    QApplication::setApplicationName("pianoaction-screenshot");
+    QSettings().clear();
+  }
   MainWindow window;
-  // the remembered larger text; a --screenshot (the README's pictures) always at the normal size
-  if (options.screenshot.empty() && QSettings().value("view/large_text", false).toBool())
-    window.set_large_text(true);
+  // the remembered larger text
+  if (QSettings().value("view/large_text", false).toBool()) window.set_large_text(true);
   std::string action = options.action;
   if (!options.action_given)
     action = QSettings().value("last_preset", "grand").toString().toStdString();
@@ -41,9 +47,11 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
 
   int code = 0;
   auto* demo = new ScreenshotDemo(&window, QString::fromStdString(options.screenshot));
-  QObject::connect(demo, &ScreenshotDemo::finished, &app, [&code](bool ok, const QString& msg) {
+  QObject::connect(demo, &ScreenshotDemo::finished, &app, [&](bool ok, const QString& msg) {
     if (ok)
-      std::cout << "screenshot written to " << msg.toStdString() << "\n";
+      std::cout << "screenshot of the " << window.model()->kind << " action"
+                << (window.large_text() ? " (larger text)" : "") << " written to "
+                << msg.toStdString() << "\n";
     else
       std::cerr << "pianoaction: " << msg.toStdString() << "\n";
     code = ok ? 0 : 1;

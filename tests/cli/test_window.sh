@@ -50,6 +50,19 @@ if width > 1024 or height > 768:
 PY
 done
 
+# a screenshot neither reads nor changes the user's settings: with "upright" remembered and a
+# larger text chosen, a screenshot without --action is the grand at the normal text size, and
+# the settings file is the same byte for byte afterwards
+mkdir -p "$work/config-user/PianoActionTrainer"
+user_conf="$work/config-user/PianoActionTrainer/pianoaction.conf"
+printf '[General]\nlast_preset=upright\n\n[view]\nlarge_text=true\n' > "$user_conf"
+cp "$user_conf" user_conf_before
+XDG_CONFIG_HOME="$work/config-user" "$exe" --size 800x600 --screenshot shot-user.png > out.txt \
+  2> err.txt || { cat err.txt; fail "--screenshot with user settings exited with an error"; }
+cmp -s "$user_conf" user_conf_before || fail "--screenshot changed the user's settings: $(cat "$user_conf")"
+grep -q "^screenshot of the grand action written to shot-user.png" out.txt \
+  || fail "--screenshot without --action did not show the grand at the normal text size: $(cat out.txt)"
+
 # a close-up from the command line, and an unknown view named with the choices
 "$exe" --action grand --view escapement --screenshot shot-closeup.png > out.txt 2> err.txt \
   || { cat err.txt; fail "--view escapement exited with an error"; }

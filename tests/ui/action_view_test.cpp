@@ -125,6 +125,27 @@ void ActionViewTest::wheel_zooms_and_right_drag_pans() {
   QTest::mouseRelease(view, Qt::RightButton, {}, QPoint(260, 230));
   QCOMPARE(view->model_to_widget().dx(), zoomed.dx() + 60);
   QCOMPARE(view->model_to_widget().dy(), zoomed.dy() + 30);
+  // two quick strokes on the key's ring keep the zoom (the second press, a double click, had
+  // refitted the whole action), and the second one plays the key
+  const QTransform panned = view->model_to_widget();
+  QSignalSpy played(view, &ActionView::keyPlayed);
+  const QPoint front = view->key_front_on_screen()->toPoint();
+  QTest::mouseDClick(view, Qt::LeftButton, {}, front);
+  QCOMPARE(view->model_to_widget(), panned);
+  QMouseEvent press_move(QEvent::MouseMove, QPointF(front + QPoint(0, 20)),
+                         view->mapToGlobal(QPointF(front + QPoint(0, 20))), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+  QTest::mousePress(view, Qt::LeftButton, {}, front);
+  QMouseEvent second(QEvent::MouseButtonDblClick, QPointF(front), view->mapToGlobal(QPointF(front)),
+                     Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+  QCoreApplication::sendEvent(view, &second);
+  QCoreApplication::sendEvent(view, &press_move);
+  QVERIFY(played.count() >= 1);
+  QTest::mouseRelease(view, Qt::LeftButton, {}, front + QPoint(0, 20));
+  QCOMPARE(view->model_to_widget(), panned);
+  // a double click on empty space refits the action
+  QTest::mouseDClick(view, Qt::LeftButton, {}, QPoint(5, 5));
+  QCOMPARE(view->model_to_widget(), before);
 }
 
 void ActionViewTest::dragging_the_key_front_down_plays_the_key() {

@@ -23,6 +23,7 @@
 #include "model/preset_loader.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "save_paths.h"
 #include "ui_test_support.h"
 
 using pat::ui::PlotPanel;
@@ -43,6 +44,7 @@ class PlotExportTest : public QObject {
   void the_live_plots_span_a_chosen_window_or_the_whole_run();
   void a_legend_under_a_stacked_plot_keeps_its_height();
   void a_picture_draws_no_value_tick_above_its_plot_area();
+  void a_name_typed_without_a_suffix_takes_the_chosen_formats();
 
  private:
   QByteArray head(const QString& path, int n = 64) {
@@ -238,6 +240,29 @@ void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
   QVERIFY_THROWS_EXCEPTION(
       pat::InputError,
       pat::ui::export_plots({gap_.get()}, "/nonexistent/dir/p.png", QSize(400, 300)));
+  // a PDF or SVG writer that cannot write its file says nothing: a name already taken by a
+  // folder had been reported as exported (the folder "existed"); the export fails, naming the
+  // file, and leaves the folder as it was
+  for (const char* name : {"taken.pdf", "taken.svg"}) {
+    QVERIFY(QDir(dir_.path()).mkpath(name));
+    try {
+      pat::ui::export_plots({gap_.get()}, dir_.filePath(name), QSize(400, 300));
+      QFAIL(qPrintable(QString("an export onto the folder %1 was reported written").arg(name)));
+    } catch (const pat::InputError& e) {
+      QVERIFY2(QString(e.what()).contains(name), e.what());
+    }
+    QVERIFY(QFileInfo(dir_.filePath(name)).isDir());
+    QVERIFY(!QFileInfo::exists(dir_.filePath(name) + ".part"));  // nothing left behind
+  }
+  // an existing file is replaced by the new picture, and only once it is whole
+  const QString pdf = dir_.filePath("again.pdf");
+  QFile old(pdf);
+  QVERIFY(old.open(QIODevice::WriteOnly));
+  old.write("old contents");
+  old.close();
+  pat::ui::export_plots({gap_.get()}, pdf, QSize(400, 300));
+  QVERIFY(head(pdf).startsWith("%PDF"));
+  QVERIFY(!QFileInfo::exists(pdf + ".part"));
 }
 
 // The command line's --plot path: plots of series over any x axis, stacked in one file.
@@ -395,6 +420,27 @@ void PlotExportTest::a_picture_draws_no_value_tick_above_its_plot_area() {
   QVERIFY2(dark == 0, qPrintable(QString("%1 dark pixels left of the plot area, above y %2")
                                      .arg(dark)
                                      .arg(area.top() - label_height)));
+}
+
+// A teacher who picks "PDF" in the save dialog and types "lesson1" gets lesson1.pdf (the dialogs
+// add no suffix themselves, and the export refused a name without one); a name with its own
+// suffix keeps it, and a name on a dotted folder still gets one.
+void PlotExportTest::a_name_typed_without_a_suffix_takes_the_chosen_formats() {
+  using pat::ui::with_filter_suffix;
+  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PDF (*.pdf)"), QString("/tmp/lesson1.pdf"));
+  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PNG images (*.png);;PDF (*.pdf)"),
+           QString("/tmp/lesson1.png"));
+  QCOMPARE(with_filter_suffix("/tmp/lesson1.svg", "PDF (*.pdf)"), QString("/tmp/lesson1.svg"));
+  QCOMPARE(with_filter_suffix("/tmp/v1.2/plots", "CSV (*.csv)"), QString("/tmp/v1.2/plots.csv"));
+  QCOMPARE(with_filter_suffix("/tmp/mine", "Action presets (*.json)"), QString("/tmp/mine.json"));
+  QCOMPARE(with_filter_suffix("/tmp/any", "All files (*)"), QString("/tmp/any"));
+  QCOMPARE(with_filter_suffix("", "PDF (*.pdf)"), QString());
+  // and the files it would replace beyond the one confirmed are found
+  const QString existing = dir_.filePath("exists.csv");
+  QFile file(existing);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.close();
+  QCOMPARE(pat::ui::existing_files({existing, dir_.filePath("new.csv")}), QStringList{existing});
 }
 
 QTEST_MAIN(PlotExportTest)

@@ -10,6 +10,7 @@
 #include <QFile>
 #include <QLabel>
 #include <QPlainTextEdit>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QSlider>
@@ -201,14 +202,33 @@ void RegulationPanelTest::regulate_automatically_shows_steps_and_can_be_cancelle
   QVERIFY(window.regulation_runner()->running());
   QVERIFY(wait_until([&] { return steps.count() >= 1; }, 120000));
   QVERIFY(steps.first().first().toString().contains("pass 1"));
-  window.regulation_runner()->cancel();
+  const auto before = window.model();
+  QPushButton* cancel = nullptr;
+  for (QPushButton* b : window.regulation()->findChildren<QPushButton*>())
+    if (b->text() == "Cancel regulation") cancel = b;
+  QVERIFY(cancel);
+  cancel->click();
   QVERIFY(wait_until([&] { return finished.count() == 1; }, 120000));
   QVERIFY(!window.regulation_runner()->running());
-  // the log shows the steps; the model in the window is the one the regulation left
+  // the log shows the steps and the cancel; the adjusters it had half searched are not applied
   const QString log = window.regulation()->findChild<QPlainTextEdit*>()->toPlainText();
   QVERIFY2(log.contains("pass 1"), qPrintable(log));
-  const auto model = finished.first().first().value<std::shared_ptr<const pat::ActionModel>>();
-  QCOMPARE(window.model().get(), model.get());
+  QVERIFY2(log.contains("Regulation cancelled"), qPrintable(log));
+  QCOMPARE(window.model().get(), before.get());
+
+  // a setting moved while a regulation runs is kept: the regulation's result, made from the
+  // positions before, is dropped and the log says so
+  window.regulate_automatically();
+  QVERIFY(window.regulation_runner()->running());
+  window.set_adjuster("let_off", 0.3);
+  QVERIFY(wait_until([&] { return finished.count() == 2; }, 120000));
+  const auto adjuster_mm = [&](const std::string& name) {
+    return 1e3 * window.model()->adjusters[window.model()->adjuster_index(name)].value;
+  };
+  QCOMPARE(adjuster_mm("let_off"), 0.3);
+  QCOMPARE(adjuster_mm("hammer_blow"), 1.0);
+  QVERIFY2(window.regulation()->log_text().contains("Regulation dropped"),
+           qPrintable(window.regulation()->log_text()));
 }
 
 void RegulationPanelTest::deregulation_demo_can_be_cancelled_and_replays() {

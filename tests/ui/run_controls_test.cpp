@@ -11,7 +11,10 @@
 #include <QDir>
 #include <QFile>
 #include <QLabel>
+#include <QMenu>
+#include <QMenuBar>
 #include <QScopeGuard>
+#include <QSet>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
@@ -20,6 +23,7 @@
 #include <QTest>
 #include <QThread>
 #include <QTimer>
+#include <QToolButton>
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -59,6 +63,8 @@ class RunControlsTest : public QObject {
   void switching_to_the_slowest_speed_keeps_playing();
   void the_achieved_speed_is_not_kept_past_a_pause_or_a_new_speed();
   void the_regulation_dock_shows_every_column();
+  void each_menu_has_one_entry_per_mnemonic();
+  void every_legend_under_a_plot_is_whole_on_a_laptop_screen();
   void switching_actions_rebuilds_panel_and_view();
   void the_run_trace_export_holds_every_column();
   void a_focused_input_keeps_its_keys_and_the_view_strikes();
@@ -237,8 +243,17 @@ void RunControlsTest::pause_step_and_rewind() {
   QVERIFY(wait_until([&] { return c->display_time() > 0.005; }));
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Running"),
            qPrintable(window.statusBar()->currentMessage()));
+  // the toolbar stays put as Play becomes Pause and back (the buttons after it had moved 11 px)
+  QToolButton* play = nullptr;
+  for (QToolButton* b : window.run_controls()->findChildren<QToolButton*>())
+    if (b->text() == "Pause") play = b;
+  QVERIFY(play);
+  const int playing_x = play->geometry().right();
   c->pause();
   QVERIFY(!c->playing());
+  QCOMPARE(play->text(), QString("Play"));
+  QCoreApplication::processEvents();
+  QCOMPARE(play->geometry().right(), playing_x);
   const double paused_at = c->display_time();
   // the status bar says so (not the "Running …" of the start)
   QVERIFY2(window.statusBar()->currentMessage().startsWith("Paused at"),
@@ -575,6 +590,76 @@ void RunControlsTest::the_regulation_dock_shows_every_column() {
            qPrintable(QString("%1 of %2 pixels")
                           .arg(viewport->width())
                           .arg(window.regulation()->minimumSizeHint().width())));
+}
+
+// Alt and a letter runs a menu entry only when no other entry of that menu has the letter (two
+// entries with one letter only move the selection between them): "&All plots" and
+// "Action &animation", "Plots &follow the time" and "&Fit the action" had shared theirs.
+void RunControlsTest::each_menu_has_one_entry_per_mnemonic() {
+  MainWindow window;
+  window.open_action("grand");
+  auto mnemonic = [](const QString& text) {
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+      if (text[i] != '&') continue;
+      if (text[i + 1] != '&') return text[i + 1].toLower();
+      ++i;  // "&&" is a plain ampersand
+    }
+    return QChar();
+  };
+  std::vector<QMenu*> menus;
+  QList<QAction*> top = window.menuBar()->actions();
+  QSet<QChar> top_letters;
+  for (QAction* a : top) {
+    const QChar m = mnemonic(a->text());
+    QVERIFY2(m.isNull() || !top_letters.contains(m), qPrintable(a->text()));
+    top_letters.insert(m);
+    if (a->menu()) menus.push_back(a->menu());
+  }
+  for (std::size_t k = 0; k < menus.size(); ++k) {
+    QSet<QChar> letters;
+    for (QAction* a : menus[k]->actions()) {
+      if (a->isSeparator()) continue;
+      if (a->menu()) menus.push_back(a->menu());
+      const QChar m = mnemonic(a->text());
+      if (m.isNull()) continue;
+      QVERIFY2(!letters.contains(m),
+               qPrintable(menus[k]->title() + ": '" + m + "' twice, at " + a->text()));
+      letters.insert(m);
+    }
+  }
+  QVERIFY(menus.size() >= 5);
+}
+
+// At 1366x768 (a laptop at the front of a class) the contact forces' two legend rows were cut:
+// the plot's own layout needs more than the panel reserved (its plot area is at least 50 px), so
+// the legend was squeezed and "string", "key bottom" lost their lower halves. Each panel now
+// reserves what its layout needs; the legend below gets its whole height.
+void RunControlsTest::every_legend_under_a_plot_is_whole_on_a_laptop_screen() {
+  for (const char* action : {"grand", "upright"}) {
+    MainWindow window;
+    window.open_action(action);
+    window.resize(1366, 768);
+    window.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&window));
+    window.start("force:pulse:8:80");
+    QVERIFY(wait_until([&] { return window.controller()->display_time() > 0.01; }));
+    QTest::qWait(200);
+    int below = 0;
+    for (PlotPanel* panel : window.plots()->panels()) {
+      if (panel->legend_height_below() == 0) continue;
+      ++below;
+      QVERIFY2(panel->legend_rect().height() >= panel->legend_height_below(),
+               qPrintable(QString("%1 %2: legend %3 px of %4")
+                              .arg(action, panel->title())
+                              .arg(panel->legend_rect().height())
+                              .arg(panel->legend_height_below())));
+      // and the panel is inside the window, above the status bar
+      const QPoint bottom = panel->mapTo(&window, QPoint(0, panel->height()));
+      QVERIFY2(bottom.y() <= window.statusBar()->geometry().top(),
+               qPrintable(QString("%1 %2 ends at %3").arg(action, panel->title()).arg(bottom.y())));
+    }
+    QVERIFY(below >= 1);  // the contact forces' legend at least
+  }
 }
 
 void RunControlsTest::switching_actions_rebuilds_panel_and_view() {

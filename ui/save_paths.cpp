@@ -1,0 +1,58 @@
+#include "save_paths.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMessageBox>
+#include <QRegularExpression>
+
+namespace pat::ui {
+
+QString with_filter_suffix(const QString& path, const QString& selected_filter) {
+  if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
+  static const QRegularExpression pattern(R"(\*\.([A-Za-z0-9]+))");
+  const QRegularExpressionMatch match = pattern.match(selected_filter);
+  return match.hasMatch() ? path + "." + match.captured(1) : path;
+}
+
+QString ask_save_path(QWidget* parent, const QString& title, const QString& start,
+                      const QString& filter) {
+  QString selected;
+  const QString chosen = QFileDialog::getSaveFileName(parent, title, start, filter, &selected);
+  if (chosen.isEmpty()) return {};
+  const QString path = with_filter_suffix(chosen, selected.isEmpty() ? filter : selected);
+  if (path != chosen && !confirm_replacing(parent, {path})) return {};
+  return path;
+}
+
+QStringList existing_files(const QStringList& paths) {
+  QStringList existing;
+  for (const QString& p : paths)
+    if (QFileInfo::exists(p)) existing << p;
+  return existing;
+}
+
+bool confirm_replacing(QWidget* parent, const QStringList& paths) {
+  const QStringList existing = existing_files(paths);
+  if (existing.isEmpty()) return true;
+  QStringList names;
+  for (const QString& p : existing) names << QFileInfo(p).fileName();
+  return QMessageBox::question(
+             parent, QObject::tr("Replace files?"),
+             QObject::tr("%n file(s) already exist and would be replaced:\n%1\n\nReplace them?",
+                         nullptr, static_cast<int>(names.size()))
+                 .arg(names.join("\n"))) == QMessageBox::Yes;
+}
+
+bool confirm_writing_into(QWidget* parent, const QString& folder) {
+  const QDir dir(folder);
+  if (!dir.exists() || dir.isEmpty()) return true;
+  return QMessageBox::question(
+             parent, QObject::tr("Write into this folder?"),
+             QObject::tr("%1 already holds files; those with the report's names "
+                         "(the JSON, the CSVs and the plots) will be replaced.\n\n"
+                         "Write the report there?")
+                 .arg(folder)) == QMessageBox::Yes;
+}
+
+}  // namespace pat::ui
