@@ -795,7 +795,11 @@ void ActionView::paint_frame(QPainter& painter) {
 }
 
 void ActionView::wheelEvent(QWheelEvent* event) {
-  const double factor = std::pow(1.0015, event->angleDelta().y());
+  // from a fifth of the whole action's usual scale (the action a small patch) to a hundred times
+  // it (0.15 mm a pixel, the felts' compression in view): beyond, a lost view with nothing on it
+  const double wanted = scale_ * std::pow(1.0015, event->angleDelta().y());
+  const double factor =
+      std::clamp(wanted, 0.2 * kWholeActionScale, 100.0 * kWholeActionScale) / scale_;
   const QPointF at = event->position();
   offset_ = at + (offset_ - at) * factor;
   scale_ *= factor;

@@ -150,11 +150,29 @@ void RegulationRow::show_reading() {
     return;
   }
   if (measured_) {
-    measured_label_->setText(setting_value_text(*measured_, unit()));
+    // within tolerance or not, and which way, in the text too: not by colour alone (a washed-out
+    // projector, a colour-blind student)
+    QString mark;
+    if (setting_ && !measuring_)
+      mark = !out_of_tolerance()             ? QString(" ✓")
+             : *measured_ > setting_->target ? QString(" ▲")
+                                             : QString(" ▼");
+    measured_label_->setText(setting_value_text(*measured_, unit()) + mark);
+    measured_label_->setAccessibleName(
+        mark.isEmpty() ? measured_label_->text()
+        : !out_of_tolerance()
+            ? tr("%1, within tolerance").arg(setting_value_text(*measured_, unit()))
+            : tr("%1, %2 the target")
+                  .arg(setting_value_text(*measured_, unit()),
+                       *measured_ > setting_->target ? tr("above") : tr("below")));
     // the note ("read with the drop screw out of the way …") as a sentence of its own
     measured_label_->setToolTip(note_.isEmpty() ? tr("Measured the way a technician measures it")
                                                 : note_.left(1).toUpper() + note_.mid(1) + ".");
     const bool bad = out_of_tolerance();
+    if (setting_)
+      measured_label_->setToolTip(measured_label_->toolTip() + "\n" +
+                                  (bad ? tr("▲ above, ▼ below the target's tolerance")
+                                       : tr("✓ within the target's tolerance")));
     measured_label_->setStyleSheet(
         measuring_ ? "color: #888888; padding: 1px 3px;"
         : setting_ ? (bad ? "color: white; background: #c0392b; padding: 1px 3px;"
@@ -180,8 +198,10 @@ void RegulationRow::fit_to_font() {
   measured_label_->setFont(bold);
   // wide enough for "no reading" in bold (its reason in the tooltip): the columns do not move
   // when a reading fails
-  measured_label_->setMinimumWidth(
-      std::max(72, QFontMetrics(measured_label_->font()).horizontalAdvance(tr("no reading")) + 10));
+  // and for the widest reading with its mark: the column does not jump as marks change
+  const QFontMetrics metrics(measured_label_->font());
+  measured_label_->setMinimumWidth(std::max({72, metrics.horizontalAdvance(tr("no reading")) + 10,
+                                             metrics.horizontalAdvance("00.00 mm ▲") + 10}));
 }
 
 bool RegulationRow::out_of_tolerance() const {

@@ -146,6 +146,17 @@ void ActionViewTest::wheel_zooms_and_right_drag_pans() {
   // a double click on empty space refits the action
   QTest::mouseDClick(view, Qt::LeftButton, {}, QPoint(5, 5));
   QCOMPARE(view->model_to_widget(), before);
+  // the wheel's zoom has ends: a hundred turns in or out leave a view with the action in it
+  for (int direction : {+1, -1}) {
+    for (int i = 0; i < 100; ++i) {
+      QWheelEvent turn(QPointF(100, 100), view->mapToGlobal(QPointF(100, 100)), QPoint(),
+                       QPoint(0, 240 * direction), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase,
+                       false);
+      QCoreApplication::sendEvent(view, &turn);
+    }
+    const double scale = view->model_to_widget().m11();  // px per m
+    QVERIFY2(scale >= 299.0 && scale <= 150001.0, qPrintable(QString::number(scale)));
+  }
 }
 
 void ActionViewTest::dragging_the_key_front_down_plays_the_key() {

@@ -123,6 +123,8 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   QVERIFY(wait_until([&] { return measured_all(window); }, 60000));
   RegulationRow* row = window.regulation()->row("hammer_blow");
   const double before = *row->measured();
+  // in tolerance or not is in the text too, not in the colour alone
+  QVERIFY2(row->measured_label()->text().endsWith("✓"), qPrintable(row->measured_label()->text()));
 
   row->slider()->setValue(100);  // capstan screwed up 1 mm: a shorter blow
   QCOMPARE(row->spin_box()->value(), 1.0);
@@ -135,6 +137,10 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   // the tolerance colour follows the measurement
   const auto& setting = window.model()->regulation[window.model()->setting_index("hammer_blow")];
   QCOMPARE(row->out_of_tolerance(), std::abs(after - setting.target) > setting.tolerance);
+  // a blow 1.5 mm short: below its target, and the reading says which way
+  QVERIFY2(row->measured_label()->text().endsWith("▼"), qPrintable(row->measured_label()->text()));
+  QVERIFY2(row->measured_label()->accessibleName().contains("below the target"),
+           qPrintable(row->measured_label()->accessibleName()));
 
   // a setting that cannot be read says why in the log, once: the let-off button 0.6 mm down
   // trips the jack only after the repetition lever carries the hammer, so there is no drop to
@@ -151,6 +157,8 @@ void RegulationPanelTest::slider_moves_the_adjuster_and_the_measured_value() {
   QVERIFY(wait_until([&] { return !window.measurements()->busy(); }, 60000));
   QVERIFY(let_off_row->measured() && *let_off_row->measured() > 3.0);
   QVERIFY(let_off_row->out_of_tolerance());
+  QVERIFY2(let_off_row->measured_label()->text().endsWith("▲"),
+           qPrintable(let_off_row->measured_label()->text()));
   QVERIFY2(let_off_row->measured_label()->toolTip().contains("drop screw out of the way"),
            qPrintable(let_off_row->measured_label()->toolTip()));
   QVERIFY2(window.regulation()->log_text().contains("drop screw out of the way"),
@@ -404,7 +412,7 @@ void RegulationPanelTest::deregulation_demo_shows_the_blow_shrinking() {
   window.start("");
   QVERIFY(wait_until([&] {
     return std::abs(row->value_mm()) < 1e-9 && row->slider()->isEnabled() &&
-           row->measured_label()->text().endsWith("mm");
+           row->measured_label()->text().contains(" mm");
   }));
 }
 
