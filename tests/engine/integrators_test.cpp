@@ -474,6 +474,34 @@ TEST(Rodas4, MatchesClosedFormWithinTolerance) {
   EXPECT_NEAR(y[0], ForcedDecay::exact(1.0, 10.0), 1e-7);
 }
 
+/// RODAS4 with its error control off (tolerances so loose every step is accepted) and the step
+/// capped at each h: the error at t_end under `error_of` (of the state reached).
+template <typename ErrorOf>
+std::vector<double> rodas_fixed_step_errors(OdeSystem& system, const StateVector& y0, double t_end,
+                                            std::initializer_list<double> steps, ErrorOf error_of) {
+  std::vector<double> errors;
+  for (double h : steps) {
+    IntegratorOptions options;
+    options.relative_tolerance = 1e10;
+    options.absolute_tolerance = 1e10;
+    options.max_step_s = h;
+    Rodas4 rodas(options);
+    errors.push_back(error_of(integrate(rodas, system, y0, t_end)));
+  }
+  return errors;
+}
+
+/// The observed orders log2(e_k / e_(k+1)) of errors at halved steps, each within [3.7, 4.3].
+void expect_order_four(const std::vector<double>& errors) {
+  for (std::size_t k = 0; k + 1 < errors.size(); ++k) {
+    const double order = std::log2(errors[k] / errors[k + 1]);
+    std::printf("rodas fixed-step error %.3g -> %.3g: order %.2f\n", errors[k], errors[k + 1],
+                order);
+    EXPECT_GT(order, 3.7);
+    EXPECT_LT(order, 4.3);
+  }
+}
+
 // RODAS4 is the accuracy reference of F8, so its coefficients matter: with the error control
 // switched off (tolerances so loose every step is accepted, the step capped at h) it must show
 // order 4 on a nonlinear, time-dependent problem (the forced Hopf oscillator: the d_i f_t terms
@@ -485,22 +513,9 @@ TEST(Rodas4, OrderFourWithItsErrorControlOff) {
   ForcedHopf system;
   const StateVector y0 = vec({0.5, 0.0});
   const StateVector reference = rodas_reference(system, y0, 1.0);
-  std::vector<double> errors;
-  for (double h : {0.05, 0.025, 0.0125}) {
-    IntegratorOptions options;
-    options.relative_tolerance = 1e10;
-    options.absolute_tolerance = 1e10;
-    options.max_step_s = h;
-    Rodas4 rodas(options);
-    errors.push_back((integrate(rodas, system, y0, 1.0) - reference).norm());
-  }
-  for (std::size_t k = 0; k + 1 < errors.size(); ++k) {
-    const double order = std::log2(errors[k] / errors[k + 1]);
-    std::printf("rodas fixed-step error %.3g -> %.3g: order %.2f\n", errors[k], errors[k + 1],
-                order);
-    EXPECT_GT(order, 3.7);
-    EXPECT_LT(order, 4.3);
-  }
+  expect_order_four(
+      rodas_fixed_step_errors(system, y0, 1.0, {0.05, 0.025, 0.0125},
+                              [&](const StateVector& y) { return (y - reference).norm(); }));
 }
 
 // The same against a closed form, so that the reference of F8 is not checked only against
@@ -511,23 +526,9 @@ TEST(Rodas4, OrderFourWithItsErrorControlOff) {
 // asymptotic range not yet reached); the band [3.7, 4.3] rejects order 3 or 5.
 TEST(Rodas4, OrderFourAgainstAClosedForm) {
   ForcedRiccati system;
-  std::vector<double> errors;
-  for (double h : {0.025, 0.0125, 0.00625}) {
-    IntegratorOptions options;
-    options.relative_tolerance = 1e10;
-    options.absolute_tolerance = 1e10;
-    options.max_step_s = h;
-    Rodas4 rodas(options);
-    errors.push_back(
-        std::abs(integrate(rodas, system, vec({1.0}), 1.0)[0] - ForcedRiccati::exact(1.0)));
-  }
-  for (std::size_t k = 0; k + 1 < errors.size(); ++k) {
-    const double order = std::log2(errors[k] / errors[k + 1]);
-    std::printf("rodas fixed-step error %.3g -> %.3g: order %.2f\n", errors[k], errors[k + 1],
-                order);
-    EXPECT_GT(order, 3.7);
-    EXPECT_LT(order, 4.3);
-  }
+  expect_order_four(rodas_fixed_step_errors(
+      system, vec({1.0}), 1.0, {0.025, 0.0125, 0.00625},
+      [](const StateVector& y) { return std::abs(y[0] - ForcedRiccati::exact(1.0)); }));
 }
 
 TEST(Rodas4, OscillatorMatchesClosedForm) {
