@@ -797,9 +797,14 @@ void ActionView::paint_frame(QPainter& painter) {
 void ActionView::wheelEvent(QWheelEvent* event) {
   // from a fifth of the whole action's usual scale (the action a small patch) to a hundred times
   // it (0.15 mm a pixel, the felts' compression in view): beyond, a lost view with nothing on it
-  const double wanted = scale_ * std::pow(1.0015, event->angleDelta().y());
-  const double factor =
-      std::clamp(wanted, 0.2 * kWholeActionScale, 100.0 * kWholeActionScale) / scale_;
+  // (a view already beyond an end, a tiny window or a close-up on a huge screen, is not snapped
+  // back the other way: the wheel only stops moving it further)
+  const double turn = std::pow(1.0015, event->angleDelta().y());
+  const double lowest = 0.2 * kWholeActionScale, highest = 100.0 * kWholeActionScale;
+  double wanted = scale_ * turn;
+  if (turn > 1.0 && wanted > highest) wanted = std::max(scale_, highest);
+  if (turn < 1.0 && wanted < lowest) wanted = std::min(scale_, lowest);
+  const double factor = wanted / scale_;
   const QPointF at = event->position();
   offset_ = at + (offset_ - at) * factor;
   scale_ *= factor;

@@ -1,10 +1,10 @@
 #include "plot_export.h"
 
-#include <QFile>
 #include <QFileInfo>
 #include <QImage>
 #include <QPageSize>
 #include <QPdfWriter>
+#include <QSaveFile>
 #include <QSvgGenerator>
 #include <algorithm>
 #include <cmath>
@@ -89,29 +89,24 @@ CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path)
   throw InputError(located_message(path.toStdString(), "", problem));
 }
 
-/// A file beside `path` to write first: a PDF or SVG writer that cannot write says nothing, and
-/// an existing file of that name would have looked like its work.
-QString partial_path(const QString& path) {
-  const QString part = path + ".part";
-  QFile::remove(part);
-  return part;
+/// Opens `file` (a QSaveFile: written beside its target, which is replaced only by commit()).
+void open_for_saving(QSaveFile& file, const QString& path, const char* kind) {
+  if (QFileInfo(path).isDir()) fail(path, std::string("a folder has that name, not a ") + kind);
+  if (!file.open(QIODevice::WriteOnly))
+    fail(path,
+         std::string("cannot write the ") + kind + " file: " + file.errorString().toStdString());
 }
 
-/// Moves the finished `part` onto `path` (what was there is replaced only now); fails, naming
-/// `path`, when nothing was written.
-void replace_with(const QString& part, const QString& path, const char* kind) {
-  if (QFileInfo(part).size() <= 0) {
-    QFile::remove(part);
+/// Puts the finished file in place (what was there is replaced only now, in one step); fails,
+/// naming `path`, when nothing was written or it cannot be put there (the old file is kept).
+void commit_saved(QSaveFile& file, const QString& path, const char* kind) {
+  if (file.size() <= 0) {
+    file.cancelWriting();
     fail(path, std::string("could not write the ") + kind + " file");
   }
-  if (QFileInfo::exists(path) && !QFile::remove(path)) {
-    QFile::remove(part);
-    fail(path, std::string("could not replace the ") + kind + " file there (read-only?)");
-  }
-  if (!QFile::rename(part, path)) {
-    QFile::remove(part);
-    fail(path, std::string("could not write the ") + kind + " file (rename failed)");
-  }
+  if (!file.commit())
+    fail(path,
+         std::string("could not write the ") + kind + " file: " + file.errorString().toStdString());
 }
 
 }  // namespace
@@ -156,29 +151,31 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
       break;
     }
     case ExportFormat::Pdf: {
-      const QString part = partial_path(path);
+      QSaveFile file(path);
+      open_for_saving(file, path, "PDF");
       {
-        QPdfWriter writer(part);
+        QPdfWriter writer(&file);
         writer.setResolution(72);
         writer.setPageSize(QPageSize(QSizeF(size), QPageSize::Point));
         writer.setPageMargins(QMarginsF(0, 0, 0, 0));
         writer.setCreator("pianoaction");
         PlotPanel::render(writer, stacked(plots, layout), scale);
-      }  // the writer closes its file here
-      replace_with(part, path, "PDF");
+      }  // the writer finishes the document here
+      commit_saved(file, path, "PDF");
       break;
     }
     case ExportFormat::Svg: {
-      const QString part = partial_path(path);
+      QSaveFile file(path);
+      open_for_saving(file, path, "SVG");
       {
         QSvgGenerator generator;
-        generator.setFileName(part);
+        generator.setOutputDevice(&file);
         generator.setSize(size);
         generator.setViewBox(QRect(QPoint(0, 0), size));
         generator.setTitle("Piano Action Trainer plots");
         PlotPanel::render(generator, stacked(plots, layout), scale);
       }
-      replace_with(part, path, "SVG");
+      commit_saved(file, path, "SVG");
       break;
     }
     case ExportFormat::Csv: {

@@ -44,7 +44,7 @@ class RunControls : public QWidget {
   void fit_fixed_widths();
   PlaybackController* controller_;
   InputSpecForm* input_;
-  QToolButton* play_;
+  QToolButton* play_ = nullptr;
   QComboBox* speed_;
   QComboBox* blow_;
   QLabel* factor_ = nullptr;

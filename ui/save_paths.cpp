@@ -8,11 +8,18 @@
 
 namespace pat::ui {
 
-QString with_filter_suffix(const QString& path, const QString& selected_filter) {
-  if (path.isEmpty() || !QFileInfo(path).suffix().isEmpty()) return path;
+QString with_filter_suffix(const QString& path, const QString& selected_filter,
+                           const QString& filters) {
+  if (path.isEmpty()) return path;
   static const QRegularExpression pattern(R"(\*\.([A-Za-z0-9]+))");
+  const QString suffix = QFileInfo(path).suffix().toLower();
+  if (!suffix.isEmpty()) {
+    for (auto it = pattern.globalMatch(filters); it.hasNext();)
+      if (it.next().captured(1).toLower() == suffix) return path;  // a format offered
+  }
   const QRegularExpressionMatch match = pattern.match(selected_filter);
-  return match.hasMatch() ? path + "." + match.captured(1) : path;
+  if (!match.hasMatch()) return path;  // "All files (*)": the name as typed
+  return path + "." + match.captured(1);
 }
 
 QString ask_save_path(QWidget* parent, const QString& title, const QString& start,
@@ -20,7 +27,7 @@ QString ask_save_path(QWidget* parent, const QString& title, const QString& star
   QString selected;
   const QString chosen = QFileDialog::getSaveFileName(parent, title, start, filter, &selected);
   if (chosen.isEmpty()) return {};
-  const QString path = with_filter_suffix(chosen, selected.isEmpty() ? filter : selected);
+  const QString path = with_filter_suffix(chosen, selected.isEmpty() ? filter : selected, filter);
   if (path != chosen && !confirm_replacing(parent, {path})) return {};
   return path;
 }

@@ -12,8 +12,10 @@ class QWidget;
 namespace pat::ui {
 
 /// `path` with the first suffix of `selected_filter` ("PDF (*.pdf)" → ".pdf") appended when its
-/// file name has none; otherwise `path` unchanged.
-QString with_filter_suffix(const QString& path, const QString& selected_filter);
+/// file name has none of the suffixes `filters` offers (all the dialog's, ";;"-separated; "plots
+/// v2.1" has none, "plots.svg" keeps its own when SVG is offered); otherwise `path` unchanged.
+QString with_filter_suffix(const QString& path, const QString& selected_filter,
+                           const QString& filters);
 
 /// QFileDialog::getSaveFileName, then with_filter_suffix; a suffix added that names an existing
 /// file (which the dialog did not ask about) is confirmed. Empty when cancelled.

@@ -2,8 +2,10 @@
 
 #include <QApplication>
 #include <QSettings>
+#include <QTemporaryDir>
 #include <QTimer>
 #include <iostream>
+#include <stdexcept>
 
 #include "action_view.h"
 #include "main_window.h"
@@ -15,12 +17,15 @@ int run_trainer(int argc, char** argv, const TrainerOptions& options) {
   QApplication app(argc, argv);
   QApplication::setOrganizationName("PianoActionTrainer");
   QApplication::setApplicationName("pianoaction");
+  // a --screenshot (the README's pictures) neither reads nor changes the user's settings (the
+  // last preset, the window's layout, the text size): its settings live in a folder of its own,
+  // empty, removed at the end, so that every picture starts from the defaults
+  QTemporaryDir screenshot_settings;
   if (!options.screenshot.empty()) {
-    // a --screenshot (the README's pictures) neither reads nor changes the user's settings (the
-    // last preset, the window's layout, the text size): its own, cleared, so that every picture
-    // starts from the defaults
-    QApplication::setApplicationName("pianoaction-screenshot");
-    QSettings().clear();
+    if (!screenshot_settings.isValid())
+      throw std::runtime_error("--screenshot: cannot make a temporary folder for its settings");
+    for (QSettings::Format format : {QSettings::NativeFormat, QSettings::IniFormat})
+      QSettings::setPath(format, QSettings::UserScope, screenshot_settings.path());
   }
   MainWindow window;
   // the remembered larger text

@@ -244,7 +244,7 @@ struct CandidateWork {
   std::vector<std::vector<double>> scan_rss;  // [scan point][trial], inf when failed
   std::vector<double> scan_s;
   double all_s = 0.0;                     // fitted on every trial
-  double all_rss = 0.0;                   // its cost over every trial (the selection's criterion)
+  double all_rss = 0.0;                   // its cost over every trial (one trial: the criterion)
   std::vector<double> fold_s;             // fitted leaving out trial f
   std::vector<double> fold_training_rss;  // its cost on the trials it was fitted on
   double scan_best_rss = 0.0;             // lowest scan cost over every trial
@@ -555,13 +555,14 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
 std::string diagnosis_verdict(const Diagnosis& d, const CandidateFit* best, bool at_limit,
                               double best_rms_deg) {
   const std::string measure = d.held_out ? "held-out" : "training";
-  if (d.cause)
+  if (d.cause)  // (the gain's error is each trial under its own fold's choice: it may differ)
     return d.cause->name + " = " + format_number(d.cause->value, 4) + " " + d.cause_unit +
-           " explains the discrepancy: the " + measure + " error falls from " +
-           format_fixed(d.baseline_rms_deg, 3) + " to " + format_fixed(d.extended_rms_deg, 3) +
-           " deg (noise " + format_fixed(d.noise_deg, 3) + " deg)";
+           " explains the discrepancy best: the " + measure + " error is " +
+           format_fixed(d.extended_rms_deg, 3) + " deg with it, " +
+           format_fixed(d.baseline_rms_deg, 3) + " deg without (noise " +
+           format_fixed(d.noise_deg, 3) + " deg)";
   if (d.ambiguous) return "the ranking is ambiguous (" + d.ranking.front().note + ")";
-  // a residual whose power is within about twice the noise's is the noise
+  // a residual whose power is within 2.25 times the noise's (rms within 1.5 times) is the noise
   if (d.baseline_rms_deg <= kWithinNoiseRatio * d.noise_deg)
     return "the model is within the noise (error " + format_fixed(d.baseline_rms_deg, 3) +
            " deg, noise " + format_fixed(d.noise_deg, 3) + " deg)";
@@ -811,12 +812,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
                         best_ms < kMaxExplainedRatio * base_ms && best.fit.delta_bic > kMinBicGain;
   if (explains && !decisive) {
     d.ambiguous = true;
-    d.ranking.front().note = "fits best, but " + runner_up->fit.effect + " fits within " +
-                             format_fixed(100.0 * (std::sqrt(kMinRunnerUpRatio) - 1.0), 0) +
-                             " % of its " + (by_held_out ? "held-out " : "") + "rms error (" +
-                             format_fixed(criterion(*runner_up), 3) + " against " +
-                             format_fixed(criterion(best), 3) +
-                             " deg): the trials do not tell them apart, no cause named";
+    d.ranking.front().note =
+        "fits best, but " + runner_up->fit.effect + " fits within " +
+        format_fixed(100.0 * (std::sqrt(kMinRunnerUpRatio) - 1.0), 0) + " % of its " +
+        (by_held_out ? "held-out " : "") + "rms error (" + format_fixed(criterion(*runner_up), 3) +
+        " against " + format_fixed(criterion(best), 3) + " deg): the trials do not tell them apart";
   }
   if (explains && decisive) {
     const double s = best.all_s;

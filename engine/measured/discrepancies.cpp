@@ -19,53 +19,42 @@ namespace {
 /// hammer trace does not show, is taken from the model: its escapement splits the rise into
 /// acceleration and free flight. After an impact the hammer is in rebound and check until the
 /// key is let up (release), and back once it is within kNearRestDeg of rest (return). The key
-/// (lightly smoothed) is let up when it rises kKeyReleaseFraction of its travel above its deepest
-/// point since the impact: a held key's felt overshoot, its bounce on the punching and the
-/// sensor's scatter stay below that. The release is dated back to where the key left the level it
-/// was held at (the median since the impact, within a band of kKeyRiseFraction of the travel or
-/// three times the smoothed key's noise), and on while it still stood higher the sample before.
-/// A later stroke starts where its rise leaves the lowest level since the last impact.
+/// (lightly smoothed; its angle grows as it goes down) is let up once it has come back up
+/// kKeyReleaseFraction of its stroke (from where it stood before the stroke to its deepest point
+/// since the impact): a held key's felt overshoot, its bounce on the punching and the sensor's
+/// scatter stay below that, a half-stroke repetition's release does not. The release is dated
+/// back to where the key left the level it was held at (the median since the impact, within a
+/// band of kHeldBandFraction of the key's travel or three times the smoothed key's noise), and on
+/// while the sample before was deeper still. A later stroke starts where its rise leaves the
+/// lowest level since the last impact.
 std::vector<std::string> measured_phases(const MeasuredTrial& trial, const ModelTrace& model,
                                          const Alignment& al,
                                          const std::vector<MeasuredEvent>& events,
                                          double noise_deg) {
   constexpr double kNearRestDeg = 0.3;
-  // a quarter of the key's travel: beyond the punching's overshoot under a 1 kg blow (10 %, 3.0°
-  // at the impact, held at 2.7°) and the bounce of a forte key, within a half-stroke release (50 %)
+  // a quarter of the stroke: beyond the punching's overshoot under a 1 kg blow (10 %, 3.0° at the
+  // impact, held at 2.7°) and the bounce of a forte key
   constexpr double kKeyReleaseFraction = 0.25;
   // the band of a held key: 5 % of its travel (0.5 mm at the key front for a 10 mm dip), above
   // the key sensor's ±0.1 mm scatter near rest
-  constexpr double kKeyRiseFraction = 0.05;
+  constexpr double kHeldBandFraction = 0.05;
   const std::size_t n = trial.t.size();
   std::vector<std::string> phase(n, "rest");
   if (n == 0) return phase;
   // the hammer: a 5-sample moving average (the noise / √5), in degrees from rest
-  std::vector<double> h(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
-    double sum = 0.0;
-    for (std::size_t j = a; j <= b; ++j) sum += trial.hammer_deg[j];
-    h[i] = sum / static_cast<double>(b - a + 1) - al.angle_offset_deg;
-  }
+  std::vector<double> h = moving_average5(trial.hammer_deg);
+  for (double& x : h) x -= al.angle_offset_deg;
   const double near = std::max(kNearRestDeg, 3.0 * noise_deg / std::sqrt(5.0));
   // the key: the file's own column (a 5-sample moving average, as the hammer), else the key of
   // the input the model was driven with
   const bool measured_key = trial.key_deg.size() == n;
-  std::vector<double> key(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!measured_key) {
-      key[i] = model.key_at(trial.t[i] - al.time_offset_s);
-      continue;
-    }
-    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
-    double sum = 0.0;
-    for (std::size_t j = a; j <= b; ++j) sum += trial.key_deg[j];
-    key[i] = sum / static_cast<double>(b - a + 1);
-  }
+  std::vector<double> key = measured_key ? moving_average5(trial.key_deg) : std::vector<double>(n);
+  if (!measured_key)
+    for (std::size_t i = 0; i < n; ++i) key[i] = model.key_at(trial.t[i] - al.time_offset_s);
   const auto [key_lo, key_hi] = std::minmax_element(key.begin(), key.end());
   const double key_travel = *key_hi - *key_lo;
   const double key_band =
-      std::max(kKeyRiseFraction * key_travel,
+      std::max(kHeldBandFraction * key_travel,
                measured_key ? 3.0 * estimate_noise(trial.key_deg) / std::sqrt(5.0) : 0.0);
   auto index_at = [&](double t) {
     return static_cast<std::size_t>(std::lower_bound(trial.t.begin(), trial.t.end(), t) -
@@ -119,12 +108,17 @@ std::vector<std::string> measured_phases(const MeasuredTrial& trial, const Model
     const std::size_t end = k + 1 < impacts.size() ? index_at(impacts[k + 1] - 1e-3) : n;
     std::size_t release = end;
     if (key_travel > 0.0) {
-      // the deepest point since the impact, then the first sample a quarter of the travel above
+      // where the key stood before this stroke (rest, or a half release before a repetition)
+      double before_stroke = key[std::min(segment_start, n - 1)];
+      for (std::size_t i = segment_start; i < impact_from; ++i)
+        before_stroke = std::min(before_stroke, key[i]);
+      // the deepest point since the impact, then the first sample a quarter of the stroke up
       std::size_t deepest = std::min(index_at(impacts[k]), n - 1);
       std::size_t let_up = end;
       for (std::size_t i = deepest; i < end; ++i) {
         if (key[i] >= key[deepest]) deepest = i;
-        if (key[i] < key[deepest] - kKeyReleaseFraction * key_travel) {
+        const double stroke = key[deepest] - before_stroke;
+        if (key[i] < key[deepest] - kKeyReleaseFraction * (stroke > 0.0 ? stroke : key_travel)) {
           let_up = i;
           break;
         }
@@ -139,14 +133,15 @@ std::vector<std::string> measured_phases(const MeasuredTrial& trial, const Model
           std::nth_element(held.begin(), held.begin() + held.size() / 2, held.end());
           held_level = held[held.size() / 2];
         }
-        // back through the band below the held level, and on while the key still stood higher
-        // the sample before (a clean sensor's key is dated to where it began to move)
+        // back through the band above the held level (angles below it), and on while the sample
+        // before was deeper still (a clean sensor's key is dated to where it began to move)
         std::size_t start = let_up;
         while (start > impact_to &&
                (key[start - 1] < held_level - key_band || key[start - 1] > key[start]))
           --start;
-        // the moving average starts to fall two samples before the key does
-        if (measured_key) start = std::min(start + 2, let_up);
+        // the moving average starts to come up two samples before the key does (not when the
+        // walk stopped at the impact: the key rose straight after it)
+        if (measured_key && start > impact_to) start = std::min(start + 2, let_up);
         release = std::max(start, impact_to);
       }
     }

@@ -87,19 +87,25 @@ double noise_from_second_differences(std::vector<double> d2) {
   return 1.4826 * median(d2) / std::sqrt(6.0);
 }
 
+std::vector<double> moving_average5(const std::vector<double>& values) {
+  const std::size_t n = values.size();
+  std::vector<double> out(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
+    double sum = 0.0;
+    for (std::size_t j = a; j <= b; ++j) sum += values[j];
+    out[i] = sum / static_cast<double>(b - a + 1);
+  }
+  return out;
+}
+
 std::vector<MeasuredEvent> detect_events(const std::vector<double>& t, const std::vector<double>& h,
                                          double noise_deg) {
   std::vector<MeasuredEvent> events;
   const std::size_t n = h.size();
   if (n < 5) return events;
-  // light smoothing (5-sample moving average) against the noise for the check search
-  std::vector<double> s(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t a = i < 2 ? 0 : i - 2, b = std::min(n - 1, i + 2);
-    double sum = 0;
-    for (std::size_t j = a; j <= b; ++j) sum += h[j];
-    s[i] = sum / static_cast<double>(b - a + 1);
-  }
+  // light smoothing against the noise for the check search
+  const std::vector<double> s = moving_average5(h);
   const auto [lo, hi] = std::minmax_element(s.begin(), s.end());
   const double range = *hi - *lo;
   if (range < 10.0 * noise_deg || range <= 0) return events;

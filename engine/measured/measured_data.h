@@ -56,6 +56,10 @@ struct MeasuredEvent {
 std::vector<MeasuredEvent> detect_events(const std::vector<double>& t,
                                          const std::vector<double>& hammer_deg, double noise_deg);
 
+/// The 5-sample centred moving average of `values` (2 before, 2 after; fewer at the ends): white
+/// noise shrinks by √5, and a change shows in it two samples before it happens.
+std::vector<double> moving_average5(const std::vector<double>& values);
+
 /// Noise level of a sampled signal (deg): 1.4826·MAD of the second differences / √6, which a
 /// smooth signal barely affects (white noise σ gives second differences of variance 6σ²).
 double estimate_noise(const std::vector<double>& values);

@@ -242,7 +242,7 @@ void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
       pat::ui::export_plots({gap_.get()}, "/nonexistent/dir/p.png", QSize(400, 300)));
   // a PDF or SVG writer that cannot write its file says nothing: a name already taken by a
   // folder had been reported as exported (the folder "existed"); the export fails, naming the
-  // file, and leaves the folder as it was
+  // file, and leaves the folder as it was, with nothing beside it
   for (const char* name : {"taken.pdf", "taken.svg"}) {
     QVERIFY(QDir(dir_.path()).mkpath(name));
     try {
@@ -252,9 +252,9 @@ void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
       QVERIFY2(QString(e.what()).contains(name), e.what());
     }
     QVERIFY(QFileInfo(dir_.filePath(name)).isDir());
-    QVERIFY(!QFileInfo::exists(dir_.filePath(name) + ".part"));  // nothing left behind
+    QCOMPARE(QDir(dir_.path()).entryList({QString(name) + "*"}, QDir::Files), QStringList());
   }
-  // an existing file is replaced by the new picture, and only once it is whole
+  // an existing file is replaced by the new picture, in one step once it is whole
   const QString pdf = dir_.filePath("again.pdf");
   QFile old(pdf);
   QVERIFY(old.open(QIODevice::WriteOnly));
@@ -262,7 +262,7 @@ void PlotExportTest::unknown_extension_and_bad_folder_are_refused() {
   old.close();
   pat::ui::export_plots({gap_.get()}, pdf, QSize(400, 300));
   QVERIFY(head(pdf).startsWith("%PDF"));
-  QVERIFY(!QFileInfo::exists(pdf + ".part"));
+  QCOMPARE(QDir(dir_.path()).entryList({"again.pdf*"}, QDir::Files), QStringList{"again.pdf"});
 }
 
 // The command line's --plot path: plots of series over any x axis, stacked in one file.
@@ -427,14 +427,24 @@ void PlotExportTest::a_picture_draws_no_value_tick_above_its_plot_area() {
 // suffix keeps it, and a name on a dotted folder still gets one.
 void PlotExportTest::a_name_typed_without_a_suffix_takes_the_chosen_formats() {
   using pat::ui::with_filter_suffix;
-  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PDF (*.pdf)"), QString("/tmp/lesson1.pdf"));
-  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PNG images (*.png);;PDF (*.pdf)"),
+  const QString plots = "PNG images (*.png);;PDF (*.pdf);;SVG (*.svg)";
+  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PDF (*.pdf)", plots), QString("/tmp/lesson1.pdf"));
+  QCOMPARE(with_filter_suffix("/tmp/lesson1", "PNG images (*.png)", plots),
            QString("/tmp/lesson1.png"));
-  QCOMPARE(with_filter_suffix("/tmp/lesson1.svg", "PDF (*.pdf)"), QString("/tmp/lesson1.svg"));
-  QCOMPARE(with_filter_suffix("/tmp/v1.2/plots", "CSV (*.csv)"), QString("/tmp/v1.2/plots.csv"));
-  QCOMPARE(with_filter_suffix("/tmp/mine", "Action presets (*.json)"), QString("/tmp/mine.json"));
-  QCOMPARE(with_filter_suffix("/tmp/any", "All files (*)"), QString("/tmp/any"));
-  QCOMPARE(with_filter_suffix("", "PDF (*.pdf)"), QString());
+  // a suffix the dialog offers is kept, whichever format is selected
+  QCOMPARE(with_filter_suffix("/tmp/lesson1.svg", "PDF (*.pdf)", plots),
+           QString("/tmp/lesson1.svg"));
+  QCOMPARE(with_filter_suffix("/tmp/lesson1.PDF", "PNG images (*.png)", plots),
+           QString("/tmp/lesson1.PDF"));
+  // a dot in the name that is no format's suffix ("v2.1"), or in a folder's name, gets one
+  QCOMPARE(with_filter_suffix("/tmp/plots v2.1", "PDF (*.pdf)", plots),
+           QString("/tmp/plots v2.1.pdf"));
+  QCOMPARE(with_filter_suffix("/tmp/v1.2/plots", "CSV (*.csv)", "CSV (*.csv)"),
+           QString("/tmp/v1.2/plots.csv"));
+  QCOMPARE(with_filter_suffix("/tmp/mine", "Action presets (*.json)", "Action presets (*.json)"),
+           QString("/tmp/mine.json"));
+  QCOMPARE(with_filter_suffix("/tmp/any", "All files (*)", "All files (*)"), QString("/tmp/any"));
+  QCOMPARE(with_filter_suffix("", "PDF (*.pdf)", plots), QString());
   // and the files it would replace beyond the one confirmed are found
   const QString existing = dir_.filePath("exists.csv");
   QFile file(existing);
