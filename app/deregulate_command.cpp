@@ -111,8 +111,13 @@ int run_deregulate(const std::vector<std::string>& args) {
       last_kind = kind;
       std::cout << "\n";
     }
+    const std::string words = stop_in_trade_words(result.stop_cause);
     std::cout << result.status << " at t = " << result.stop_t << " s"
-              << (result.stop_cause.empty() ? "" : ": " + result.stop_cause) << "\n";
+              << (result.stop_cause.empty() ? ""
+                  : words == result.stop_cause
+                      ? ": " + result.stop_cause
+                      : ": " + words + " (in the model's terms: " + result.stop_cause + ")")
+              << "\n";
     if (plot.given()) std::cout << "plot written to " << plot.path() << "\n";
   }
   return 0;

@@ -71,8 +71,15 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   auto* layout = new QVBoxLayout(this);
   choice_ = new QComboBox(this);
   description_ = new QLabel(this);
+  description_->setObjectName("analysis_description");
   description_->setWordWrap(true);
-  description_->setStyleSheet("color: #444;");
+  // its colour by the palette, not a style sheet: a label with a style sheet keeps the font it
+  // was polished with, and stayed small when the class's larger text was chosen
+  {
+    QPalette grey = description_->palette();
+    grey.setColor(QPalette::WindowText, QColor(0x44, 0x44, 0x44));
+    description_->setPalette(grey);
+  }
   run_button_ = new QPushButton(tr("Run"), this);
   progress_ = new QProgressBar(this);
   progress_->setRange(0, 1000);
@@ -81,8 +88,13 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   stage_ = new QLabel(this);
   stage_->hide();
   summary_ = new QLabel(this);
+  summary_->setObjectName("analysis_summary");
   summary_->setWordWrap(true);
-  summary_->setStyleSheet("font-weight: bold;");
+  {
+    QFont bold = summary_->font();  // the weight alone: its size follows the panel's
+    bold.setBold(true);
+    summary_->setFont(bold);
+  }
   summary_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
   // a long summary (a sweep's, with the paper's figures) scrolls within a few lines instead of
   // squeezing the plots under it to a strip without its axis titles

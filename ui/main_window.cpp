@@ -379,11 +379,18 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
                                    .arg(adjuster_mm_text(s.adjuster_mm, 2))
                                    .arg(setting_title(id))
                                    .arg(setting_value_text(s.measured, unit)));
-            regulation_->log(result.stop_cause.empty()
-                                 ? tr("Deregulation: the action held to the end.")
-                                 : tr("Deregulation stopped at t = %1 s: %2")
-                                       .arg(result.stop_t, 0, 'f', 2)
-                                       .arg(QString::fromStdString(result.stop_cause)));
+            // the failure in a technician's words first, the model's own after it
+            const std::string words = stop_in_trade_words(result.stop_cause);
+            regulation_->log(
+                result.stop_cause.empty() ? tr("Deregulation: the action held to the end.")
+                : words == result.stop_cause
+                    ? tr("Deregulation stopped at t = %1 s: %2")
+                          .arg(result.stop_t, 0, 'f', 2)
+                          .arg(QString::fromStdString(result.stop_cause))
+                    : tr("Deregulation stopped at t = %1 s: %2. (In the model's terms: %3)")
+                          .arg(result.stop_t, 0, 'f', 2)
+                          .arg(QString::fromStdString(words),
+                               QString::fromStdString(result.stop_cause)));
             show_deregulation_result(result);
             if (!frames.empty()) {
               // the replay spans seconds of the run: at 1/1000 it would take half an hour, so
@@ -673,9 +680,12 @@ void MainWindow::build_practice() {
     set_practice_layout(false);
     practice_dock_->raise();
     if (!model_) return;
-    // the panels shown again belong to the exercise's action: its analyses, and its readings
-    // (an exercise on the other kind of action had left the class's in them)
+    // the panels shown again belong to the exercise's action: its analyses, its adjusters as
+    // the trainee left them (the rows had kept the positions from before the exercise: a lever
+    // height left at -0.02 mm read 0.00) and its readings (an exercise on the other kind of
+    // action had left the class's in them)
     analyses_->set_model(*model_);
+    regulation_->show_adjusters(*model_);
     measure_current_model();
   });
   // the dock is opened and closed from the Practice menu only (no close button): hiding it

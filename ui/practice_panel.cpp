@@ -78,18 +78,30 @@ QString reading_value_text(const Observation& o, double raw) {
 /// than the rounding of the digits shown followed by that one ("45.45 mm, regulated action
 /// 45.00 mm"); `differing` counts those. (Shown to hundredths, 0.00 against −0.01 may be a
 /// difference of 0.005: 0.015 is the least that is surely more than rounding.)
+/// The regulation tolerance in the units a reading is shown in: ±0.05 mm, or ±1 % for a
+/// fraction shown in percent (DESIGN.md section 3; the regulation panel's targets).
+double shown_tolerance(const Observation& o) {
+  return o.unit == "fraction" ? 1.0 : 0.05;
+}
+
+/// The readings in words, each that differs from the regulated action's (by 0.015 in the units
+/// shown, the last digit) with it; `differing` counts those, `outside` those beyond the regulation
+/// tolerance.
 QString readings_text(const std::vector<Observation>& seen,
-                      const std::vector<Observation>& regulated, int& differing) {
+                      const std::vector<Observation>& regulated, int& differing, int& outside) {
   QStringList readings;
   differing = 0;
+  outside = 0;
   for (const Observation& o : seen) {
     if (!o.value) continue;
     QString text = QString::fromStdString(o.label) + " " + reading_value_text(o, *o.value);
     const Observation* reg = find_observation(regulated, o.id);
     const double scale = o.unit == "fraction" ? 100.0 : 1.0;  // in the units shown
-    if (reg && reg->value && std::abs(*o.value - *reg->value) * scale >= 0.015) {
+    const double off = reg && reg->value ? std::abs(*o.value - *reg->value) * scale : 0.0;
+    if (off >= 0.015) {
       text += QObject::tr(", regulated action %1").arg(reading_value_text(o, *reg->value));
       ++differing;
+      if (off > shown_tolerance(o) + 1e-9) ++outside;
     }
     readings << text;
   }
@@ -309,21 +321,28 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
           heading->setBackground(symptoms_->palette().alternateBase());
           symptoms_->addItem(heading);
           if (symptoms.empty()) {  // with the readings, which a correction is fine-tuned by
-            // "nothing" as far as a technician's gauge or eye tells (engine:
-            // noticeable_difference), which the regulation panel's ±0.05 mm tolerances are finer
-            // than: said, and the readings that are not the regulated action's named with its,
-            // so that a correction 0.45 mm off is not read as exact
-            int differing = 0;
-            const QString readings = readings_text(seen, regulated, differing);
-            symptoms_->addItem(
-                differing == 0
-                    ? tr("%1: the same as a regulated action%2.").arg(name, readings)
-                    : tr("%1: no difference a technician's gauge or eye would notice, but "
-                         "%2 not the regulated action's%3.")
-                          .arg(name,
-                               differing == 1 ? tr("one reading is")
-                                              : tr("%n readings are", "", differing),
-                               readings));
+            // no symptom a player or a technician's quick look would notice (engine:
+            // noticeable_difference), but the score holds each setting to the regulation
+            // panel's tolerance (±0.05 mm), which is finer: a reading beyond it is named as
+            // such, so that "nothing to notice" is not read as "regulated" (a blow 0.22 mm long
+            // had been "no difference", then "out of tolerance" in the score)
+            int differing = 0, outside = 0;
+            const QString readings = readings_text(seen, regulated, differing, outside);
+            QString verdict;
+            if (differing == 0)
+              verdict = tr("%1: the same as a regulated action%2.").arg(name, readings);
+            else if (outside == 0)
+              verdict = tr("%1: within the regulation tolerance (±0.05 mm) of a regulated "
+                           "action%2.")
+                            .arg(name, readings);
+            else
+              verdict =
+                  tr("%1: no symptom a player would notice, but %2 outside the regulation "
+                     "tolerance (±0.05 mm) of a regulated action's: not yet regulated%3.")
+                      .arg(name,
+                           outside == 1 ? tr("one reading is") : tr("%n readings are", "", outside),
+                           readings);
+            symptoms_->addItem(verdict);
           }
           for (const Symptom& s : symptoms)
             symptoms_->addItem(name + ": " + QString::fromStdString(s.text));
@@ -355,8 +374,14 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
             const QString hints = s.hint_penalty > 0.0
                                       ? tr(", hints −%1").arg(s.hint_penalty, 0, 'f', 1)
                                       : tr(", no hints taken");
-            show_status(tr("Score %1 / 100 (diagnosis %2, regulation %3, economy %4%5). "
-                           "The hidden %6: %7.")
+            // each part with its maximum, and how it was reached (the engine's notes: that only
+            // the first answer is scored, how much of each fault was corrected, the tests)
+            QStringList how;
+            for (const std::string& note : s.notes)
+              if (note.rfind("out of tolerance", 0) != 0)  // said below, as what to set next
+                how << QString::fromStdString(note);
+            show_status(tr("Score %1 / 100 (diagnosis %2 of 50, regulation %3 of 40, economy %4 "
+                           "of 10%5). The hidden %6: %7.")
                             .arg(s.total, 0, 'f', 1)
                             .arg(s.diagnosis, 0, 'f', 1)
                             .arg(s.regulation, 0, 'f', 1)
@@ -367,7 +392,8 @@ PracticePanel::PracticePanel(QWidget* parent) : QWidget(parent) {
                         (s.out_of_tolerance.empty()
                              ? QString()
                              : tr(" Still out of tolerance, to set next: %1.")
-                                   .arg(QString::fromStdString(s.out_of_tolerance))));
+                                   .arg(QString::fromStdString(s.out_of_tolerance))) +
+                        tr(" How it was scored: %1.").arg(how.join("; ")));
             export_button_->setEnabled(true);
             remember_session(s);
             emit scored(s.total);

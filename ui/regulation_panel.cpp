@@ -24,6 +24,12 @@ RegulationPanel::RegulationPanel(QWidget* parent) : QWidget(parent) {
   grid_->setHorizontalSpacing(6);
   grid_->setColumnStretch(1, 1);
   column->addWidget(grid_host_);
+  // the readings' marks, explained where a class sees them (a tooltip is not seen on a
+  // projector); under the rows, outside their grid (its columns keep their widths)
+  auto* key = new QLabel(tr("✓ within tolerance   ▲ above   ▼ below the target"), this);
+  key->setObjectName("tolerance_key");
+  key->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+  column->addWidget(key);
   buttons_ = new QVBoxLayout;
   column->addLayout(buttons_);
   auto* reset = add_button(tr("Reset to regulated"),

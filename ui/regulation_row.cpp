@@ -32,7 +32,7 @@ RegulationRow::RegulationRow(const Adjuster& adjuster, const RegulationSetting* 
   name_label_->setText(
       QStringLiteral("<b>%1</b>").arg(setting_title(adjuster.name).toHtmlEscaped()) +
       (part.isEmpty() ? QString()
-                      : QStringLiteral("<br><span style=\"color:#555; font-size:small\">"
+                      : QStringLiteral("<br><span style=\"color:#333; font-size:small\">"
                                        "%1</span>")
                             .arg(part.toHtmlEscaped())));
   name_label_->setToolTip(tip);

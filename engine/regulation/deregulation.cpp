@@ -195,4 +195,34 @@ AdjusterSteps adjuster_steps(const CsvTable& trace) {
   return steps;
 }
 
+std::string stop_in_trade_words(const std::string& stop_cause) {
+  const std::string marker = "unphysical penetration in contact '";
+  const std::size_t at = stop_cause.find(marker);
+  if (at == std::string::npos) {
+    if (stop_cause.find("diverged") != std::string::npos ||
+        stop_cause.find("integrator failed") != std::string::npos)
+      return "the parts left the action's working geometry (the model cannot follow it further)";
+    return stop_cause;
+  }
+  const std::size_t name_from = at + marker.size();
+  const std::size_t name_to = stop_cause.find('\'', name_from);
+  const std::string contact = stop_cause.substr(name_from, name_to - name_from);
+  if (contact.find("repetition lever window") != std::string::npos)
+    return "the jack jammed in the repetition lever's window (it cannot get back under the "
+           "knuckle)";
+  if (contact.find("backcheck") != std::string::npos)  // (on the key: "into the key" misleads)
+    return "the hammer was driven into the backcheck (" + contact + "): the action jams there";
+  if (contact.find("string") != std::string::npos && contact.find("hammer") != std::string::npos)
+    return "the hammer blocks against the string (it is driven into it, without let-off)";
+  // "(A into B)" after the name
+  const std::size_t open = stop_cause.find('(', name_to);
+  const std::size_t into = stop_cause.find(" into ", open);
+  const std::size_t close = stop_cause.find(')', into);
+  if (open == std::string::npos || into == std::string::npos || close == std::string::npos)
+    return "the action jams at the " + contact;
+  const std::string a = stop_cause.substr(open + 1, into - open - 1);
+  const std::string b = stop_cause.substr(into + 6, close - into - 6);
+  return "the " + a + " was driven into the " + b + " (" + contact + "): the action jams there";
+}
+
 }  // namespace pat

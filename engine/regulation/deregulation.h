@@ -50,6 +50,13 @@ struct DeregulationResult {
 
 DeregulationResult deregulate(const ActionModel& model, const DeregulationOptions& options);
 
+/// A run's stop cause in a technician's words, for a class watching a demo fail: "the jack
+/// jammed in the repetition lever's window (it cannot get back under the knuckle)" for the
+/// simulator's "unphysical penetration in contact 'jack–repetition lever window' (jack into
+/// lever): …"; "the A was driven into the B: the action jams there" for another contact; "the
+/// parts left the action's working geometry" for a diverged run; else the cause as it is.
+std::string stop_in_trade_words(const std::string& stop_cause);
+
 /// How fast the setting itself should change in a demo a class can follow: 2 mm per second for
 /// a setting in mm (a millimetre per 0.5 s screw turn), 0.1 per second for a fraction (the
 /// upright's damper lift).

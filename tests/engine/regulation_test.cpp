@@ -580,6 +580,10 @@ TEST(Regulation, DeregulatingTheKeyPilotShrinksTheBlowAndRaisesTheWhippen) {
   EXPECT_NE(cause.find("unphysical penetration"), std::string::npos) << cause;
   EXPECT_NE(cause.find("jack–repetition lever window"), std::string::npos) << cause;
   EXPECT_NE(cause.find("(jack into lever)"), std::string::npos) << cause;
+  // and in a technician's words, for the class watching the demo
+  EXPECT_EQ(stop_in_trade_words(cause),
+            "the jack jammed in the repetition lever's window (it cannot get back under the "
+            "knuckle)");
 
   const DeregulationResult upright = deregulate_at_1mm_per_s("upright", "lost_motion", 2.5);
   ASSERT_GE(upright.samples.size(), 3u);
@@ -623,6 +627,26 @@ TEST(Regulation, DeregulatingTheUprightHammerRailShrinksTheBlowAlone) {
 
 // The deregulation demo's adjuster plot: the screw as the run turned it, a staircase with a
 // vertical step at each turn (two points at one time), held to the end of the trace.
+// The stop causes a demo can meet, in a technician's words; a cause that is no contact's (a
+// cancel) stays as it is.
+TEST(Deregulation, StopsAreToldInATechniciansWords) {
+  EXPECT_EQ(stop_in_trade_words("unphysical penetration in contact 'hammer tail–backcheck' "
+                                "(hammer into key): 9.1 mm, limit 4 mm"),
+            "the hammer was driven into the backcheck (hammer tail–backcheck): the action jams "
+            "there");
+  EXPECT_EQ(stop_in_trade_words("unphysical penetration in contact 'capstan–whippen heel' (key "
+                                "into whippen): 3 mm, limit 2 mm"),
+            "the key was driven into the whippen (capstan–whippen heel): the action jams there");
+  EXPECT_EQ(stop_in_trade_words("unphysical penetration in contact 'hammer head–string' (hammer "
+                                "into frame): 6 mm, limit 5 mm"),
+            "the hammer blocks against the string (it is driven into it, without let-off)");
+  EXPECT_NE(stop_in_trade_words("the simulation diverged: the jack turned 190° from rest")
+                .find("working geometry"),
+            std::string::npos);
+  EXPECT_EQ(stop_in_trade_words("cancelled"), "cancelled");
+  EXPECT_EQ(stop_in_trade_words(""), "");
+}
+
 TEST(DeregulationPlot, AdjusterStepsAreAStaircase) {
   CsvTable trace;
   trace.columns = {"time_s", "key_angle_deg", "adjuster_mm"};

@@ -17,6 +17,7 @@
 #include <map>
 #include <optional>
 
+#include "analyses_panel.h"
 #include "core/error.h"
 #include "dynamics/action_dynamics.h"
 #include "frame_history.h"
@@ -499,7 +500,11 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   const double view_text = window.view()->font().pointSizeF();
   // the measured values shown (coloured by their style sheet) before the text grows
   const QLabel* measured = window.regulation()->rows().front()->measured_label();
-  QVERIFY(wait_until([&] { return measured->text().endsWith("mm"); }, 60000));
+  QVERIFY(wait_until([&] { return measured->text().contains(" mm"); }, 60000));
+  const auto* summary = window.analyses()->findChild<QLabel*>("analysis_summary");
+  const auto* description = window.analyses()->findChild<QLabel*>("analysis_description");
+  QVERIFY(summary && description);
+  const double summary_text = summary->font().pointSizeF();
   window.set_large_text(true);
   QVERIFY(window.large_text());
   // the widgets hear of the application's new font through events; the 9 pt floor of the tick
@@ -526,6 +531,11 @@ void ActionViewTest::larger_text_for_a_class_enlarges_the_plots_and_panels() {
   QVERIFY2(wait_until([&] { return measured->font().pointSizeF() > 1.3 * view_text; }),
            qPrintable(QString("%1 pt").arg(measured->font().pointSizeF())));
   QVERIFY(measured->font().bold());
+  // and the analyses' summary and description (a style sheet had kept them small)
+  QVERIFY2(wait_until([&] { return summary->font().pointSizeF() > 1.3 * summary_text; }),
+           qPrintable(QString("%1 pt").arg(summary->font().pointSizeF())));
+  QVERIFY(summary->font().bold());
+  QVERIFY(description->font().pointSizeF() > 1.3 * summary_text);
   QVERIFY(wait_until([&] {  // the scroll area's viewport (the panel's parent) shows it whole
     return window.regulation()->parentWidget()->width() >=
            window.regulation()->minimumSizeHint().width();

@@ -36,6 +36,7 @@
 #include "practice_report.h"
 #include "practice_runner.h"
 #include "regulation_panel.h"
+#include "regulation_row.h"
 #include "run_controls.h"
 #include "setting_names.h"
 #include "step_slider.h"
@@ -269,17 +270,18 @@ void PracticePanelTest::walk_through_an_exercise() {
   for (const pat::HiddenFault& f : panel->session()->exercise().faults)
     panel->move_adjuster(f.setting, -f.adjuster_mm);
   QCOMPARE(window.model()->adjusters[window.model()->adjuster_index("checking")].value, 0.0);
-  // a check that finds nothing a gauge would notice still names the readings that are not the
-  // regulated action's, with its (the hammer blow's screw 0.03 mm off: the hammer 0.38 mm
-  // from its place, under the ruler's 0.5 mm)
+  // a check that finds no symptom still names the readings that are not the regulated
+  // action's, with its, and says when one is beyond the regulation tolerance the score holds
+  // it to (the hammer blow's screw 0.03 mm off: the hammer 0.38 mm from its place, under the
+  // ruler's 0.5 mm but over the ±0.05 mm)
   panel->move_adjuster("hammer_blow", 0.03);
   panel->run_test(pat::PracticeTest::Rest);
   QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
   const QString off = panel->symptom_lines().last();
-  QVERIFY2(off.startsWith("Rest geometry: no difference a technician's gauge or eye would "
-                          "notice, but ") &&
-               off.contains(" not the regulated action's (") &&
-               off.contains(", regulated action 45.") && off.contains(" mm"),
+  QVERIFY2(off.startsWith("Rest geometry: no symptom a player would notice, but one reading is "
+                          "outside the regulation tolerance (±0.05 mm)") &&
+               off.contains("not yet regulated (") && off.contains(", regulated action 45.") &&
+               off.contains(" mm"),
            qPrintable(off));
   panel->move_adjuster("hammer_blow", -0.03);
   // a test of the corrected action that finds nothing amiss still gives its readings, which a
@@ -296,13 +298,21 @@ void PracticePanelTest::walk_through_an_exercise() {
                lines.at(lines.size() - 2).endsWith("Rest geometry: a check of the correction"),
            qPrintable(lines.join("\n")));
 
+  // a last touch the readings do not show (the jack's regulating screw 0.01 mm), which the
+  // regulation rows must show after the score
+  panel->move_adjuster("jack_position", 0.01);
   QSignalSpy scored(panel, &PracticePanel::scored);
   panel->finish();
   QVERIFY(wait_until([&] { return scored.count() == 1; }, 60000));
   const pat::SessionScore score = *panel->session()->final_score();
   QVERIFY2(score.regulation > 39.0, qPrintable(panel->status_text()));
-  // the score comes with the answer
+  // the score comes with the answer, each part with its maximum and how it was reached
   QVERIFY2(panel->status_text().contains("The hidden settings were: "),
+           qPrintable(panel->status_text()));
+  QVERIFY2(panel->status_text().contains(" of 50, regulation ") &&
+               panel->status_text().contains(" of 40, economy ") &&
+               panel->status_text().contains("How it was scored: diagnosis ") &&
+               panel->status_text().contains("% corrected"),
            qPrintable(panel->status_text()));
   QVERIFY(score.total > 0.0);
   // the scored session is remembered for the next run of the program
@@ -318,6 +328,16 @@ void PracticePanelTest::walk_through_an_exercise() {
   QVERIFY(window.findChild<QDockWidget*>("regulation_dock")->isVisibleTo(&window));
   QVERIFY(window.view()->measurements_visible());
   QVERIFY(plot_export_enabled());
+  // the regulation rows show the adjusters as the trainee left them (they had kept their
+  // positions from before the exercise)
+  QVERIFY(window.model()->adjusters[window.model()->adjuster_index("jack_position")].value != 0.0);
+  for (const pat::Adjuster& a : window.model()->adjusters)
+    if (pat::ui::RegulationRow* row = window.regulation()->row(a.name))
+      QVERIFY2(std::abs(row->value_mm() - 1e3 * a.value) < 1e-6 + 0.005,  // (shown to 0.01)
+               qPrintable(QString("%1: row %2 mm, action %3 mm")
+                              .arg(QString::fromStdString(a.name))
+                              .arg(row->value_mm())
+                              .arg(1e3 * a.value)));
 
   QTemporaryDir dir;
   const QString pdf = dir.filePath("session.pdf"), csv = dir.filePath("session.csv");
