@@ -44,11 +44,12 @@ bool confirm_replacing(QWidget* parent, const QStringList& paths) {
   if (existing.isEmpty()) return true;
   QStringList names;
   for (const QString& p : existing) names << QFileInfo(p).fileName();
-  return QMessageBox::question(
-             parent, QObject::tr("Replace files?"),
-             QObject::tr("%n file(s) already exist and would be replaced:\n%1\n\nReplace them?",
-                         nullptr, static_cast<int>(names.size()))
-                 .arg(names.join("\n"))) == QMessageBox::Yes;
+  const QString question = names.size() == 1
+                               ? QObject::tr("%1 already exists. Replace it?").arg(names.front())
+                               : QObject::tr("These %1 files already exist:\n%2\n\nReplace them?")
+                                     .arg(names.size())
+                                     .arg(names.join("\n"));
+  return QMessageBox::question(parent, QObject::tr("Replace files?"), question) == QMessageBox::Yes;
 }
 
 bool confirm_writing_into(QWidget* parent, const QString& folder) {
