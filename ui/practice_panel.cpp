@@ -420,7 +420,17 @@ void PracticePanel::changeEvent(QEvent* event) {
   // larger text for a class: the buttons and lines grow, and so must the dock (they were cut
   // at its right edge); measured once the layouts have taken the new font
   if (event->type() == QEvent::FontChange || event->type() == QEvent::ApplicationFontChange)
-    QTimer::singleShot(0, this, [this] { fit_width(); });
+    QTimer::singleShot(0, this, [this] {
+      fit_moved_labels();
+      fit_width();
+    });
+}
+
+void PracticePanel::fit_moved_labels() {
+  // as wide as the widest reading they show: the slider beside one kept its length as "moved
+  // 0.00 mm" became "moved +0.01 mm" (its handle had seemed to jump left at the first step)
+  for (auto& [name, label] : moved_labels_)
+    label->setMinimumWidth(label->fontMetrics().horizontalAdvance(tr("moved −9.99 mm")) + 4);
 }
 
 bool PracticePanel::leave_running_exercise() {
@@ -552,6 +562,7 @@ void PracticePanel::build_adjusters() {
     form->addRow(setting_title(s.name), row);
     sliders_[s.name] = slider;
     moved_labels_[s.name] = moved;
+    fit_moved_labels();
     const std::string name = s.name;
     auto apply = [this, name, slider] {
       if (!session_) return;

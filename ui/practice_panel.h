@@ -95,6 +95,8 @@ class PracticePanel : public QWidget {
 
  private:
   /// The form's width: all of it, without a horizontal scroll bar, in the current font.
+  /// The correction sliders' "moved …" labels at their widest reading's width.
+  void fit_moved_labels();
   void fit_width();
   void begin(Exercise exercise, ActionModel regulated);
   /// Asks before an unscored exercise is replaced (the form's Start, a file opened); true: go on.

@@ -19,6 +19,7 @@
 #include <QSettings>
 #include <QShortcut>
 #include <QSignalSpy>
+#include <QSlider>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QTimer>
@@ -605,6 +606,17 @@ void PracticePanelTest::correction_sliders_say_which_way_is_which() {
     auto* label = panel.findChild<QLabel*>(QString("direction_") + setting);
     QVERIFY2(label && label->text().contains("to the right (+)"), setting);
   }
+  // a slider keeps its length as its "moved …" reading grows (its handle had seemed to jump)
+  panel.resize(500, 900);
+  panel.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&panel));
+  const QList<QSlider*> sliders = panel.findChildren<QSlider*>();
+  QVERIFY(sliders.size() >= 7);
+  QList<int> before;
+  for (QSlider* s : sliders) before << s->width();
+  panel.move_adjuster("hammer_blow", -0.37);
+  QTest::qWait(50);
+  for (int i = 0; i < sliders.size(); ++i) QCOMPARE(sliders[i]->width(), before[i]);
 }
 
 // A test that finished as a new exercise began (its result queued for the window's thread) must
