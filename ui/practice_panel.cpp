@@ -74,19 +74,17 @@ QString reading_value_text(const Observation& o, double raw) {
       .trimmed();
 }
 
-/// " (label value; …)" of the readings, each that differs from the regulated action's by more
-/// than the rounding of the digits shown followed by that one ("45.45 mm, regulated action
-/// 45.00 mm"); `differing` counts those. (Shown to hundredths, 0.00 against −0.01 may be a
-/// difference of 0.005: 0.015 is the least that is surely more than rounding.)
 /// The regulation tolerance in the units a reading is shown in: ±0.05 mm, or ±1 % for a
 /// fraction shown in percent (DESIGN.md section 3; the regulation panel's targets).
 double shown_tolerance(const Observation& o) {
   return o.unit == "fraction" ? 1.0 : 0.05;
 }
 
-/// The readings in words, each that differs from the regulated action's (by 0.015 in the units
-/// shown, the last digit) with it; `differing` counts those, `outside` those beyond the regulation
-/// tolerance.
+/// " (label value; …)" of the readings, each that differs from the regulated action's by more
+/// than the rounding of the digits shown followed by that one ("45.45 mm, regulated action
+/// 45.00 mm"); `differing` counts those, `outside` those beyond the regulation tolerance.
+/// (Shown to hundredths, 0.00 against −0.01 may be a difference of 0.005: 0.015 is the least
+/// that is surely more than rounding.)
 QString readings_text(const std::vector<Observation>& seen,
                       const std::vector<Observation>& regulated, int& differing, int& outside) {
   QStringList readings;

@@ -152,27 +152,24 @@ void RegulationRow::show_reading() {
   if (measured_) {
     // within tolerance or not, and which way, in the text too: not by colour alone (a washed-out
     // projector, a colour-blind student)
-    QString mark;
-    if (setting_ && !measuring_)
-      mark = !out_of_tolerance()             ? QString(" ✓")
-             : *measured_ > setting_->target ? QString(" ▲")
-                                             : QString(" ▼");
-    measured_label_->setText(setting_value_text(*measured_, unit()) + mark);
-    measured_label_->setAccessibleName(
-        mark.isEmpty() ? measured_label_->text()
-        : !out_of_tolerance()
-            ? tr("%1, within tolerance").arg(setting_value_text(*measured_, unit()))
-            : tr("%1, %2 the target")
-                  .arg(setting_value_text(*measured_, unit()),
-                       *measured_ > setting_->target ? tr("above") : tr("below")));
-    // the note ("read with the drop screw out of the way …") as a sentence of its own
-    measured_label_->setToolTip(note_.isEmpty() ? tr("Measured the way a technician measures it")
-                                                : note_.left(1).toUpper() + note_.mid(1) + ".");
     const bool bad = out_of_tolerance();
+    const bool above = setting_ && *measured_ > setting_->target;
+    const QString value = setting_value_text(*measured_, unit());
+    const bool marked = setting_ && !measuring_;
+    const QString mark = !marked ? QString() : !bad ? QString(" ✓") : above ? " ▲" : " ▼";
+    measured_label_->setText(value + mark);
+    measured_label_->setAccessibleName(
+        !marked ? value
+        : !bad  ? tr("%1, within tolerance").arg(value)
+                : tr("%1, %2 the target").arg(value, above ? tr("above") : tr("below")));
+    // the note ("read with the drop screw out of the way …") as a sentence of its own, and the
+    // marks' meaning
+    QString tip = note_.isEmpty() ? tr("Measured the way a technician measures it")
+                                  : note_.left(1).toUpper() + note_.mid(1) + ".";
     if (setting_)
-      measured_label_->setToolTip(measured_label_->toolTip() + "\n" +
-                                  (bad ? tr("▲ above, ▼ below the target's tolerance")
-                                       : tr("✓ within the target's tolerance")));
+      tip += "\n" + (bad ? tr("▲ above, ▼ below the target's tolerance")
+                         : tr("✓ within the target's tolerance"));
+    measured_label_->setToolTip(tip);
     measured_label_->setStyleSheet(
         measuring_ ? "color: #888888; padding: 1px 3px;"
         : setting_ ? (bad ? "color: white; background: #c0392b; padding: 1px 3px;"

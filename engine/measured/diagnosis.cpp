@@ -784,9 +784,8 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   // the fit made without it), which tells apart two candidates that fit the same trials equally
   // well but predict the others differently; with one trial the fit itself. Candidates screened
   // out come after, by their best scan point.
-  const bool by_held_out = d.held_out;
-  auto criterion = [by_held_out](const CandidateWork& w) {
-    return by_held_out ? w.fit.validated_rms_deg : w.fit.training_rms_deg;
+  auto criterion = [&d](const CandidateWork& w) {
+    return d.held_out ? w.fit.validated_rms_deg : w.fit.training_rms_deg;
   };
   std::sort(work.begin(), work.end(), [&](const CandidateWork& a, const CandidateWork& b) {
     if (a.refined != b.refined) return a.refined;
@@ -815,7 +814,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     d.ranking.front().note =
         "fits best, but " + runner_up->fit.effect + " fits within " +
         format_fixed(100.0 * (std::sqrt(kMinRunnerUpRatio) - 1.0), 0) + " % of its " +
-        (by_held_out ? "held-out " : "") + "rms error (" + format_fixed(criterion(*runner_up), 3) +
+        (d.held_out ? "held-out " : "") + "rms error (" + format_fixed(criterion(*runner_up), 3) +
         " against " + format_fixed(criterion(best), 3) + " deg): the trials do not tell them apart";
   }
   if (explains && decisive) {
