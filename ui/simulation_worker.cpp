@@ -74,7 +74,11 @@ void SimulationWorker::schedule_compute() {
 }
 
 void SimulationWorker::request_run(const RunSetup& setup) {
+  bool start_queued = false;
   {
+    // the run and its flag change together, under the lock: raised after the lock was let go,
+    // the flag could go up after the worker had already taken this run, and stay up with nothing
+    // to take (every later run then waited for a start that never came)
     std::lock_guard lock(pending_mutex_);
     pending_run_ = setup;
     // a blow, key move or model asked for before belonged to the run being replaced
@@ -82,8 +86,10 @@ void SimulationWorker::request_run(const RunSetup& setup) {
     pending_blow_.clear();
     pending_key_ = false;
     has_pending_.store(false);
+    start_queued = run_requested_.exchange(true);
   }
-  if (!run_requested_.exchange(true))
+  after_run_stored();
+  if (!start_queued)
     QMetaObject::invokeMethod(
         this, [this] { start_requested_run(); }, Qt::QueuedConnection);
 }
@@ -92,10 +98,10 @@ void SimulationWorker::start_requested_run() {
   RunSetup setup;
   {
     std::lock_guard lock(pending_mutex_);
+    run_requested_.store(false);
     if (!pending_run_) return;
     setup = std::move(*pending_run_);
     pending_run_.reset();
-    run_requested_.store(false);
   }
   start_run(setup);
   // what was asked for since (a blow struck as the run started) acts on it

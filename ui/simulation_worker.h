@@ -69,6 +69,12 @@ class SimulationWorker : public QObject {
   /// The run stopped by itself (unphysical contact, divergence): the simulator's cause.
   void runStopped(int run_id, const QString& cause);
 
+ protected:
+  /// Called by request_run (in the asking thread) once the run is stored, before its start is
+  /// queued: where a loaded machine can pause the asking thread while the worker goes on. A test
+  /// waits there to make that pause happen every time.
+  virtual void after_run_stored() {}
+
  private:
   void schedule_compute();
   void start_requested_run();

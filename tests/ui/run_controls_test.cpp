@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QElapsedTimer>
 #include <QFile>
 #include <QLabel>
 #include <QMenu>
@@ -25,6 +26,7 @@
 #include <QTimer>
 #include <QToolButton>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <vector>
 
@@ -69,6 +71,7 @@ class RunControlsTest : public QObject {
   void the_run_trace_export_holds_every_column();
   void a_focused_input_keeps_its_keys_and_the_view_strikes();
   void the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after();
+  void runs_asked_for_while_the_worker_takes_one_are_never_lost();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -795,6 +798,54 @@ void RunControlsTest::the_worker_builds_the_latest_run_asked_for_and_keeps_a_blo
         for (const pat::ui::Frame& f : worker.take_frames())
           highest = std::max(highest, f.angle_deg[hammer]);
         return highest > 5.0;
+      },
+      10000));
+}
+
+// Runs asked for from another thread while the worker is taking the one before: the last one
+// always starts and steps. The request's flag had been raised after the run was stored, outside
+// the lock: a worker taking the run in between left the flag up with nothing to take, and every
+// later run waited for a start that never came (the window's drawing froze at rest; the key
+// dragged with the mouse never moved, twice under a full CI).
+void RunControlsTest::runs_asked_for_while_the_worker_takes_one_are_never_lost() {
+  // the asking thread paused after storing each run (as a loaded machine may pause it), for the
+  // worker to take the run in that pause: with the old flag, lost within the first few requests
+  struct PausedAsker : pat::ui::SimulationWorker {
+    void after_run_stored() override { QThread::usleep(200); }
+  };
+  std::atomic<int> last_started{0};  // written in the worker's thread, which ends before it
+  PausedAsker worker;
+  QThread thread;
+  worker.moveToThread(&thread);
+  thread.start();
+  auto stop_thread = qScopeGuard([&] {
+    thread.quit();
+    thread.wait();
+  });
+  connect(
+      &worker, &pat::ui::SimulationWorker::runStarted, &worker,
+      [&](int id, double, const QString&) { last_started.store(id); }, Qt::DirectConnection);
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  // two runs asked for at once (a slider dragged at rest), the second while the worker is taking
+  // the first; then a wait until the second has started; for a second and a half
+  QElapsedTimer wall;
+  wall.start();
+  int id = 0;
+  while (wall.elapsed() < 1500) {
+    worker.request_run(pat::ui::RunSetup{model, "", ++id});
+    worker.request_run(pat::ui::RunSetup{model, "", ++id});
+    QVERIFY2(
+        wait_until([&] { return last_started.load() == id; }, 5000),
+        qPrintable(
+            QString("run %1 asked for, run %2 started last").arg(id).arg(last_started.load())));
+  }
+  // and the last one steps
+  worker.set_target_time(0.002);
+  QVERIFY(wait_until(
+      [&] {
+        for (const pat::ui::Frame& f : worker.take_frames())
+          if (f.run == id && f.t > 0.001) return true;
+        return false;
       },
       10000));
 }
