@@ -767,6 +767,20 @@ void RunControlsTest::a_focused_input_keeps_its_keys_and_the_view_strikes() {
   QVERIFY2(c->inputs_text() != before, qPrintable(c->inputs_text()));  // struck
 }
 
+namespace {
+
+// Moves `worker` to `thread` and starts the thread; the guard returned ends it.
+auto start_in_thread(QObject& worker, QThread& thread) {
+  worker.moveToThread(&thread);
+  thread.start();
+  return qScopeGuard([&thread] {
+    thread.quit();
+    thread.wait();
+  });
+}
+
+}  // namespace
+
 // A slider dragged at rest restarts the run at every move: the worker builds only the latest
 // run asked for (it had built all of them, each finding its rest state, and was still busy 3 s
 // after a drag). A blow struck just after a restart acts on the new run (the run's start had
@@ -774,12 +788,7 @@ void RunControlsTest::a_focused_input_keeps_its_keys_and_the_view_strikes() {
 void RunControlsTest::the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after() {
   pat::ui::SimulationWorker worker;
   QThread thread;
-  worker.moveToThread(&thread);
-  thread.start();
-  auto stop_thread = qScopeGuard([&] {
-    thread.quit();
-    thread.wait();
-  });
+  const auto stop_thread = start_in_thread(worker, thread);
   QSignalSpy started(&worker, &pat::ui::SimulationWorker::runStarted);
   const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
   constexpr int kRequests = 20;
@@ -816,12 +825,7 @@ void RunControlsTest::runs_asked_for_while_the_worker_takes_one_are_never_lost()
   std::atomic<int> last_started{0};  // written in the worker's thread, which ends before it
   PausedAsker worker;
   QThread thread;
-  worker.moveToThread(&thread);
-  thread.start();
-  auto stop_thread = qScopeGuard([&] {
-    thread.quit();
-    thread.wait();
-  });
+  const auto stop_thread = start_in_thread(worker, thread);
   connect(
       &worker, &pat::ui::SimulationWorker::runStarted, &worker,
       [&](int id, double, const QString&) { last_started.store(id); }, Qt::DirectConnection);
