@@ -23,6 +23,9 @@ void AnalysisRunner::start(const QString& title, AnalysisTask task) {
   if (running_) return;
   running_ = true;
   cancel_requested_.store(false);
+  // its deliveries are queued even when the task runs on this thread (one not yet started runs
+  // inside waitForFinished, the destructor's): called directly, they reached a window being
+  // taken down
   future_ = QtConcurrent::run(background_pool(), [this, title, task = std::move(task)] {
     // the task may report from several threads (parallel runs): throttle under a lock
     auto throttle = std::make_shared<std::pair<std::mutex, QElapsedTimer>>();
@@ -33,29 +36,39 @@ void AnalysisRunner::start(const QString& title, AnalysisTask task) {
         if (throttle->second.elapsed() >= 30 || fraction >= 1.0) {
           throttle->second.restart();
           const QString text = QString::fromStdString(stage);
-          QMetaObject::invokeMethod(this,
-                                    [this, fraction, text] { emit progress(fraction, text); });
+          QMetaObject::invokeMethod(
+              this, [this, fraction, text] { emit progress(fraction, text); },
+              Qt::QueuedConnection);
         }
       }
       return !cancel_requested_.load();
     };
     try {
       AnalysisResult result = task(report);
-      QMetaObject::invokeMethod(this, [this, title, result = std::move(result)] {
-        running_ = false;
-        emit finished(title, result);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, title, result = std::move(result)] {
+            running_ = false;
+            emit finished(title, result);
+          },
+          Qt::QueuedConnection);
     } catch (const Cancelled&) {
-      QMetaObject::invokeMethod(this, [this, title] {
-        running_ = false;
-        emit cancelled(title);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, title] {
+            running_ = false;
+            emit cancelled(title);
+          },
+          Qt::QueuedConnection);
     } catch (const std::exception& e) {
       const QString message = QString::fromStdString(e.what());
-      QMetaObject::invokeMethod(this, [this, title, message] {
-        running_ = false;
-        emit failed(title, message);
-      });
+      QMetaObject::invokeMethod(
+          this,
+          [this, title, message] {
+            running_ = false;
+            emit failed(title, message);
+          },
+          Qt::QueuedConnection);
     }
   });
 }

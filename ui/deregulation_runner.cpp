@@ -24,6 +24,9 @@ void DeregulationRunner::start(std::shared_ptr<const ActionModel> model,
   if (running_) return;
   running_ = true;
   cancelled_.store(false);
+  // its deliveries are queued even when the task runs on this thread (one not yet started runs
+  // inside waitForFinished, the destructor's): called directly, they reached a window being
+  // taken down
   future_ = QtConcurrent::run(background_pool(), [this, model, options]() mutable {
     const double duration = options.duration_s;
     double last_reported = -1.0;
@@ -31,7 +34,8 @@ void DeregulationRunner::start(std::shared_ptr<const ActionModel> model,
       if (t - last_reported >= 0.01 * duration) {
         last_reported = t;
         const double fraction = t / duration;
-        QMetaObject::invokeMethod(this, [this, fraction] { emit progress(fraction); });
+        QMetaObject::invokeMethod(
+            this, [this, fraction] { emit progress(fraction); }, Qt::QueuedConnection);
       }
       return !cancelled_.load();
     };
@@ -45,10 +49,13 @@ void DeregulationRunner::start(std::shared_ptr<const ActionModel> model,
       result.stop_cause = e.what();
     }
     if (cancelled_.load()) result.stop_cause = "cancelled";
-    QMetaObject::invokeMethod(this, [this, frames = std::move(frames), result] {
-      running_ = false;
-      emit finished(frames, result);
-    });
+    QMetaObject::invokeMethod(
+        this,
+        [this, frames = std::move(frames), result] {
+          running_ = false;
+          emit finished(frames, result);
+        },
+        Qt::QueuedConnection);
   });
 }
 

@@ -22,6 +22,9 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
   if (running_) return;
   running_ = true;
   cancelled_.store(false);
+  // its deliveries are queued even when the task runs on this thread (one not yet started runs
+  // inside waitForFinished, the destructor's): called directly, they reached a window being
+  // taken down
   future_ = QtConcurrent::run(background_pool(), [this, model] {
     RegulationOptions options;
     options.on_step = [this, model](const RegulationStep& s) {
@@ -38,7 +41,8 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
               .arg(setting_value_text(s.measured, unit))
               .arg(setting_value_text(s.target, unit))
               .arg(s.note.empty() ? QString() : " — " + QString::fromStdString(s.note));
-      QMetaObject::invokeMethod(this, [this, line] { emit stepDone(line); });
+      QMetaObject::invokeMethod(
+          this, [this, line] { emit stepDone(line); }, Qt::QueuedConnection);
       return !cancelled_.load();
     };
     std::shared_ptr<const ActionModel> result_model = model;
@@ -56,10 +60,13 @@ void RegulationRunner::start(std::shared_ptr<const ActionModel> model) {
     } catch (const std::exception& e) {
       message = QString::fromStdString(e.what());
     }
-    QMetaObject::invokeMethod(this, [this, result_model, converged, message] {
-      running_ = false;
-      emit finished(result_model, converged, message);
-    });
+    QMetaObject::invokeMethod(
+        this,
+        [this, result_model, converged, message] {
+          running_ = false;
+          emit finished(result_model, converged, message);
+        },
+        Qt::QueuedConnection);
   });
 }
 

@@ -12,15 +12,21 @@
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScopeGuard>
 #include <QSignalSpy>
 #include <QSlider>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
+#include <QThreadPool>
+#include <atomic>
 #include <cmath>
 
 #include "analyses_panel.h"
+#include "analysis_runner.h"
+#include "background_pool.h"
 #include "core/error.h"
 #include "deregulation_runner.h"
 #include "io/csv.h"
@@ -51,6 +57,7 @@ class RegulationPanelTest : public QObject {
   void deregulation_demo_rate_follows_the_setting();
   void saved_state_loads_back();
   void broken_preset_names_the_field();
+  void a_runner_destroyed_before_its_task_began_sends_nothing();
 };
 
 namespace {
@@ -494,6 +501,55 @@ void RegulationPanelTest::deregulation_demo_rate_follows_the_setting() {
   QVERIFY(wait_until([&] { return !window.demo_rate_pending(); }));
   QTest::qWait(50);
   QCOMPARE(rate->value(), 1.25);
+}
+
+// A runner destroyed while its task still waits in the pool (both threads busy, the window
+// closed): Qt runs the task in the destructor's waitForFinished, on this thread. Its signals
+// had then been delivered directly, into a window half taken down (a crash at exit); queued,
+// they go nowhere.
+void RegulationPanelTest::a_runner_destroyed_before_its_task_began_sends_nothing() {
+  QThreadPool* pool = pat::ui::background_pool();
+  std::atomic<bool> release{false};
+  std::atomic<int> busy{0};
+  for (int i = 0; i < pool->maxThreadCount(); ++i)
+    pool->start([&] {
+      ++busy;
+      while (!release.load()) QThread::msleep(1);
+    });
+  auto free_pool = qScopeGuard([&] {
+    release.store(true);
+    pool->waitForDone();
+  });
+  QVERIFY(wait_until([&] { return busy.load() == pool->maxThreadCount(); }));
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  {
+    auto* runner = new pat::ui::RegulationRunner;
+    QSignalSpy steps(runner, &pat::ui::RegulationRunner::stepDone);
+    QSignalSpy finished(runner, &pat::ui::RegulationRunner::finished);
+    runner->start(model);
+    delete runner;
+    QCOMPARE(steps.count() + finished.count(), 0);
+  }
+  {
+    auto* runner = new pat::ui::DeregulationRunner;
+    QSignalSpy progress(runner, &pat::ui::DeregulationRunner::progress);
+    QSignalSpy finished(runner, &pat::ui::DeregulationRunner::finished);
+    runner->start(model, pat::DeregulationOptions{});
+    delete runner;
+    QCOMPARE(progress.count() + finished.count(), 0);
+  }
+  {
+    auto* runner = new pat::ui::AnalysisRunner;
+    QSignalSpy progress(runner, &pat::ui::AnalysisRunner::progress);
+    QSignalSpy finished(runner, &pat::ui::AnalysisRunner::finished);
+    runner->start("a table", [](const pat::ProgressCallback& report) {
+      report(0.5, "half");
+      return pat::ui::AnalysisResult{};
+    });
+    delete runner;
+    QCOMPARE(progress.count() + finished.count(), 0);
+  }
+  QCoreApplication::processEvents();  // what was posted to them is gone with them
 }
 
 QTEST_MAIN(RegulationPanelTest)
