@@ -274,15 +274,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     }
   });
   connect(regulation_runner_, &RegulationRunner::stepDone, this, [this](const QString& line) {
-    if (model_ && regulation_model_ && same_action(*regulation_model_, *model_))
+    if (regulation_opened_at_ == actions_opened_)
       regulation_->log(line);  // not into the log of an action opened meanwhile
   });
   connect(regulation_runner_, &RegulationRunner::finished, this,
           [this](std::shared_ptr<const ActionModel> model, bool converged, const QString& msg) {
             regulate_button_->setText(tr("Regulate automatically"));
-            if (!model_ || !same_action(*model, *model_)) {  // another action opened meanwhile
+            if (!model_ || regulation_opened_at_ != actions_opened_) {  // an action opened since
               statusBar()->showMessage(
-                  tr("The regulation of the %1 was dropped: another action was opened.")
+                  tr("The regulation of the %1 was dropped: an action was opened while it ran.")
                       .arg(QString::fromStdString(model->name)));
               return;
             }
@@ -359,9 +359,12 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
           [this](const std::vector<Frame>& frames, const DeregulationResult& result) {
             progress_->hide();
             deregulate_button_->setText(tr("Deregulation demo"));
-            if (!model_ || !demo_model_ || !same_action(*demo_model_, *model_)) {
+            // an action opened since (the same one opened again too: its log was cleared, its
+            // run restarted at rest)
+            if (!model_ || !demo_model_ || demo_opened_at_ != actions_opened_) {
               statusBar()->showMessage(
-                  tr("The deregulation demo of the %1 was dropped: another action was opened.")
+                  tr("The deregulation demo of the %1 was dropped: an action was opened while it "
+                     "ran.")
                       .arg(QString::fromStdString(demo_model_ ? demo_model_->name : "")));
               return;
             }
@@ -750,6 +753,7 @@ void MainWindow::practise_on(std::shared_ptr<const ActionModel> model) {
   }
   // another action: set the view and plots up for it (the regulation panel stays hidden)
   model_ = model;
+  ++actions_opened_;
   regulation_->set_model(*model);
   plots_->set_model(*model);
   fit_split_to_action(*model);
@@ -777,6 +781,7 @@ void MainWindow::open_action(const std::string& name_or_path) {
   if (practice_took_over_ && !practising_) give_back_class_input();
   action_name_ = name_or_path;
   model_ = model;
+  ++actions_opened_;
   // a regulation or demo of the action before ends (its result is dropped when it comes)
   regulation_runner_->cancel();
   deregulation_runner_->cancel();
@@ -1000,6 +1005,7 @@ void MainWindow::regulate_automatically() {
                        .arg(QString::fromStdString(model_->name)));
   regulate_button_->setText(tr("Cancel regulation"));
   regulation_model_ = model_;
+  regulation_opened_at_ = actions_opened_;
   regulation_cancelled_ = false;
   regulation_runner_->start(model_);
 }
@@ -1025,6 +1031,7 @@ void MainWindow::run_deregulation_demo() {
   progress_->show();
   deregulate_button_->setText(tr("Cancel the deregulation demo"));
   demo_model_ = model_;
+  demo_opened_at_ = actions_opened_;
   deregulation_runner_->start(model_, options);
 }
 

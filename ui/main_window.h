@@ -230,6 +230,11 @@ class MainWindow : public QMainWindow {
   std::shared_ptr<const ActionModel> demo_model_;        ///< the action the demo runs on
   std::shared_ptr<const ActionModel> regulation_model_;  ///< the action being regulated
   bool regulation_cancelled_ = false;  ///< Cancel pressed: its result is not applied
+  /// Counts the actions opened (the same one opened again counts too: its log is cleared and its
+  /// run restarted), so that a regulation or demo begun before delivers nothing after
+  int actions_opened_ = 0;
+  int regulation_opened_at_ = -1;  ///< actions_opened_ when the regulation began
+  int demo_opened_at_ = -1;        ///< actions_opened_ when the demo began
   QAction* upright_action_;
   std::shared_ptr<const ActionModel> model_;
   std::string action_name_;

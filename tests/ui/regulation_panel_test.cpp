@@ -334,6 +334,22 @@ void RegulationPanelTest::a_result_for_the_action_before_is_dropped() {
   QVERIFY(!window.controller()->replaying());
   QVERIFY2(window.statusBar()->currentMessage().contains("deregulation demo"),
            qPrintable(window.statusBar()->currentMessage()));
+
+  // the same action opened again (its log cleared, its run restarted at rest): the demo and the
+  // regulation begun before deliver nothing (the cancelled demo had been replayed over the
+  // action just opened, and the regulation's steps had filled its fresh log)
+  window.set_adjuster("hammer_blow", 1.0);
+  window.regulate_automatically();
+  window.run_deregulation_demo();
+  QVERIFY(window.regulation_runner()->running() && window.deregulation_runner()->running());
+  window.open_action("upright");
+  QVERIFY(wait_until([&] { return regulated.count() == 2 && demo_done.count() == 2; }, 120000));
+  QTest::qWait(50);  // their last steps' lines, queued before the results, are in
+  QVERIFY(!window.controller()->replaying());
+  QVERIFY2(!window.regulation()->log_text().contains("→") &&
+               !window.regulation()->log_text().contains("Deregulation"),
+           qPrintable(window.regulation()->log_text()));
+  QCOMPARE(window.regulation()->row("hammer_blow")->value_mm(), 0.0);
 }
 
 // Fact F7 in the window: the hammer blow screw turned at 1 mm/s while the key plays; the demo
