@@ -327,6 +327,11 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
          "button moves the let-off about 6 mm per mm, its capstan the blow about 12)"));
   demo_rate_watcher_ = new QFutureWatcher<double>(this);
   connect(demo_rate_watcher_, &QFutureWatcherBase::finished, this, [this] {
+    if (demo_rate_start_waits_) {  // a newer suggestion waited for this one: it starts now
+      demo_rate_start_waits_ = false;
+      if (demo_rate_request_running_ == demo_rate_request_) start_demo_rate_suggestion();
+      return;
+    }
     if (demo_rate_request_running_ != demo_rate_request_) return;  // overridden or superseded
     const double rate = demo_rate_watcher_->result();
     if (!std::isfinite(rate)) return;
@@ -1047,6 +1052,19 @@ void MainWindow::suggest_demo_rate() {
   const std::string setting = deregulation_setting_->currentData().toString().toStdString();
   if (!model_ || setting.empty()) return;
   demo_rate_request_running_ = ++demo_rate_request_;
+  // one suggestion at a time: a setting chosen while one is computed (the combo box scrolled
+  // through) waits for it, the latest only; each had started a run of its own, which kept both
+  // of the pool's threads from the demo, the regulation and the analyses asked for next
+  if (demo_rate_watcher_->isRunning()) {
+    demo_rate_start_waits_ = true;
+    return;
+  }
+  start_demo_rate_suggestion();
+}
+
+void MainWindow::start_demo_rate_suggestion() {
+  const std::string setting = deregulation_setting_->currentData().toString().toStdString();
+  if (!model_ || setting.empty()) return;
   demo_rate_watcher_->setFuture(
       QtConcurrent::run(background_pool(), [model = model_, setting]() -> double {
         try {

@@ -192,9 +192,12 @@ class MainWindow : public QMainWindow {
   QDoubleSpinBox* deregulation_rate_;
   /// Suggests the demo's rate for the chosen setting (demo_adjuster_rate), in the background.
   void suggest_demo_rate();
+  /// Starts computing the suggested rate for the action and setting shown (none running).
+  void start_demo_rate_suggestion();
   QFutureWatcher<double>* demo_rate_watcher_;
-  int demo_rate_request_ = 0;          ///< the latest suggestion asked for (or overridden)
-  int demo_rate_request_running_ = 0;  ///< the one the watcher's future computes
+  int demo_rate_request_ = 0;           ///< the latest suggestion asked for (or overridden)
+  int demo_rate_request_running_ = 0;   ///< the one computed now, or started next
+  bool demo_rate_start_waits_ = false;  ///< a suggestion waits for the one computed to end
   QProgressBar* progress_;
   QPushButton* regulate_button_;
   QLabel* banner_;

@@ -512,6 +512,15 @@ void RegulationPanelTest::deregulation_demo_rate_follows_the_setting() {
   setting->setCurrentIndex(setting->findData("key_dip"));
   QVERIFY(wait_until([&] { return std::abs(rate->value() + key_dip) < 1e-9; }));
   QVERIFY2(key_dip > 1.5 && let_off < 0.5, qPrintable(QString("%1, %2").arg(key_dip).arg(let_off)));
+  // the settings scrolled through: one suggestion computed at a time (each had started its own,
+  // taking both of the pool's threads from what was asked for next), the last one's shown
+  QVERIFY(wait_until([&] { return !window.demo_rate_pending(); }));
+  for (int i = 0; i < setting->count(); ++i) setting->setCurrentIndex(i);
+  QVERIFY2(pat::ui::background_pool()->activeThreadCount() <= 1,
+           qPrintable(QString::number(pat::ui::background_pool()->activeThreadCount())));
+  const std::string last = setting->itemData(setting->count() - 1).toString().toStdString();
+  const double last_rate = pat::demo_adjuster_rate(model, last);
+  QVERIFY(wait_until([&] { return std::abs(std::abs(rate->value()) - last_rate) < 1e-9; }));
   // a rate given with the setting wins over the suggestion still being computed
   window.set_deregulation_demo("drop", 1.25);
   QVERIFY(wait_until([&] { return !window.demo_rate_pending(); }));
