@@ -16,6 +16,7 @@ KeyFallResult key_fall(const ActionModel& action, const KeyFallOptions& options,
                        const ProgressCallback& progress) {
   if (action.landmarks.key < 0)
     throw InputError(action.source_file + ": the action names no key (landmarks.key)");
+  check_trace_rows(options.duration_s, options.sample_interval_s);
   const ActionModel alone =
       isolated_body_model(action, action.bodies[action.landmarks.key].name, true);
   const int punching = alone.landmarks.key_bottom_contact;

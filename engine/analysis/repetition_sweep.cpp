@@ -317,6 +317,23 @@ void check_options(const SweepOptions& o) {
     throw InputError("sweep maximum frequency (--fmax) must be at most " +
                      format_number(kMaxKeyMotionHz) + " Hz (got " + format_number(o.f_max_hz) +
                      " Hz)");
+  // a chirp faster than this changes its frequency by more than itself within a cycle of the
+  // lowest band (2 Hz): no cycle there is a cycle at one frequency; and its tail after the band
+  // (a millisecond) would hold billions of cycles to judge
+  constexpr double kMaxChirpRateHzPerS = 1000.0;
+  if (o.mode == SweepMode::chirp && o.chirp_rate_hz_per_s > kMaxChirpRateHzPerS)
+    throw InputError("chirp rate (--rate) must be at most " +
+                     format_number(kMaxChirpRateHzPerS, 6) + " Hz per second (got " +
+                     format_number(o.chirp_rate_hz_per_s) +
+                     "): faster, the frequency changes within a cycle");
+  // each step is a run of its own: more than this is a slip in the increment
+  constexpr double kMaxSteps = 10000.0;
+  const double steps = (o.f_max_hz - o.f_start_hz) / o.step_hz + 1.0;
+  if (o.mode == SweepMode::steps && steps > kMaxSteps)
+    throw InputError("frequency step (--step-hz) " + format_number(o.step_hz) + " Hz makes " +
+                     format_number(steps, 3) + " steps from " + format_number(o.f_start_hz) +
+                     " to " + format_number(o.f_max_hz) + " Hz: at most " +
+                     format_number(kMaxSteps, 6) + " (a larger step)");
   if (o.settle_cycles < 0) throw InputError("settling cycles must not be negative");
   if (!(o.min_strike_speed_mps >= 0.0) || !std::isfinite(o.min_strike_speed_mps))
     throw InputError("the slowest strike speed must be 0 or more m/s (got " +

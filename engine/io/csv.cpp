@@ -280,6 +280,21 @@ std::string format_csv(const CsvTable& table) {
   return out;
 }
 
+namespace {
+
+// `target` with `infix` and a random suffix appended: a name beside it that nothing else uses
+std::filesystem::path unique_sibling(const std::filesystem::path& target,
+                                     const std::string& infix) {
+  std::random_device random;
+  std::ostringstream suffix;
+  suffix << std::hex << random() << random();
+  std::filesystem::path sibling = target;
+  sibling += infix + suffix.str();
+  return sibling;
+}
+
+}  // namespace
+
 void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;
   if (path.empty()) throw InputError("cannot write a file with an empty name");
@@ -293,6 +308,30 @@ void check_output_path(const std::string& path) {
   if (fs::is_directory(target, ec)) {
     throw InputError(located_message(path, "", "cannot write the file: it is a folder"));
   }
+  // what is there is replaced (through a rename): never a device, pipe or socket (/dev/null
+  // would be replaced by a plain file), nor a file its owner made read-only
+  const fs::file_status existing = fs::status(target, ec);  // a link's target
+  if (fs::exists(existing)) {
+    if (!fs::is_regular_file(existing))
+      throw InputError(located_message(
+          path, "", "cannot write the file: it is not a plain file (a device, pipe or socket)"));
+    constexpr fs::perms kWritable =
+        fs::perms::owner_write | fs::perms::group_write | fs::perms::others_write;
+    if ((existing.permissions() & kWritable) == fs::perms::none)
+      throw InputError(located_message(path, "", "cannot write the file: it is read-only"));
+  }
+  // the folder must take a new file (the temporary the file is written through): tried now, so
+  // that a command finds out before its work and before it writes its other outputs
+  const fs::path probe = unique_sibling(target, ".probe-");
+  {
+    std::ofstream out(probe, std::ios::binary | std::ios::trunc);
+    if (!out)
+      throw InputError(located_message(
+          path, "",
+          "cannot write the file: the folder '" + (folder.empty() ? "." : folder.string()) +
+              "' takes no new file (no permission, or a read-only disk)"));
+  }
+  fs::remove(probe, ec);
 }
 
 void write_csv(const std::string& path, const CsvTable& table) {
@@ -311,16 +350,18 @@ std::string csv_quoted(const std::string& text) {
 
 void write_file_replacing(const std::string& path, const std::string& text) {
   namespace fs = std::filesystem;
-  const fs::path target(path);
   check_output_path(path);
   std::error_code ec;
+  // a link is followed: the file it points to is replaced, the link stays
+  fs::path target(path);
+  if (fs::is_symlink(target, ec)) {
+    target = fs::canonical(target, ec);
+    if (ec) throw InputError(located_message(path, "", "cannot follow the link: " + ec.message()));
+  }
+  ec.clear();
 
   // A unique temporary name next to the target, so the rename stays on one file system.
-  std::random_device random;
-  std::ostringstream suffix;
-  suffix << std::hex << random() << random();
-  fs::path temporary = target;
-  temporary += ".tmp-" + suffix.str();
+  const fs::path temporary = unique_sibling(target, ".tmp-");
 
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

@@ -109,16 +109,19 @@ RestState find_rest_state(const ActionModel& model) {
   return rest;
 }
 
+void check_trace_rows(double duration_s, double sample_interval_s) {
+  // a trace row holds every angle and contact force (about 30 numbers): 5 million rows are over
+  // a gigabyte; more than that is a slip in the sampling interval or the duration
+  constexpr double kMaxTraceRows = 5e6;
+  if (sample_interval_s > 0.0 && duration_s / sample_interval_s > kMaxTraceRows)
+    throw InputError("sampling every " + format_number(sample_interval_s) + " s for " +
+                     format_number(duration_s) + " s makes more than 5 million trace " +
+                     "rows: sample less often or simulate a shorter time");
+}
+
 SimulationResult simulate(const ActionModel& model, const KeyInput* input,
                           const SimulationOptions& options, const RestState* given_rest) {
-  // a trace row holds every angle and contact force (about 30 numbers): 5 million rows are over
-  // a gigabyte; more than that is a slip in the sampling interval, refused before any work
-  constexpr double kMaxTraceRows = 5e6;
-  if (options.sample_interval_s > 0.0 &&
-      options.duration_s / options.sample_interval_s > kMaxTraceRows)
-    throw InputError("sampling every " + format_number(options.sample_interval_s) + " s for " +
-                     format_number(options.duration_s) + " s makes more than 5 million trace " +
-                     "rows: sample less often or simulate a shorter time");
+  check_trace_rows(options.duration_s, options.sample_interval_s);  // before any work
   // the caller owns model and input for the whole call
   Simulator sim(borrow(model), input ? borrow(*input) : nullptr, options, given_rest);
   SimulationResult result;

@@ -57,6 +57,10 @@ struct SimulationResult {
   double realtime_factor = 0.0;  ///< simulated time / wall time
 };
 
+/// Throws InputError when sampling every `sample_interval_s` for `duration_s` would make more than
+/// 5 million trace rows (over a gigabyte): refused before any work.
+void check_trace_rows(double duration_s, double sample_interval_s);
+
 /// Simulates `model` driven by `input` (may be null: no finger) for options.duration_s.
 /// The rest state is computed first (or passed in to save the time).
 SimulationResult simulate(const ActionModel& model, const KeyInput* input,

@@ -2,6 +2,7 @@
 #include "io/csv.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <cmath>
 #include <filesystem>
@@ -131,6 +132,50 @@ TEST_F(CsvTest, WriteIntoAMissingFolderNamesThePath) {
     EXPECT_TRUE(contains(e.what(), file)) << e.what();
     EXPECT_TRUE(contains(e.what(), "does not exist")) << e.what();
   }
+}
+
+// What a write would replace through its rename is checked first: a pipe or device (an --out
+// of /dev/null, as root, had replaced the device with a plain file), a read-only file, a folder
+// that takes no new file (checked before a command's work, so that it writes none of its other
+// outputs); a link is followed, its target replaced and the link kept.
+TEST_F(CsvTest, WriteRefusesPipesReadOnlyFilesAndClosedFoldersAndFollowsLinks) {
+  CsvTable table;
+  table.columns = {"time_s"};
+  table.rows = {{2.0}};
+  auto refusal = [&](const std::string& file) -> std::string {
+    try {
+      write_csv(file, table);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const std::string pipe = path("pipe");
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0644), 0);
+  EXPECT_TRUE(contains(refusal(pipe), "not a plain file")) << refusal(pipe);
+  EXPECT_TRUE(fs::is_fifo(pipe));
+
+  const std::string locked = write_text("locked.csv", "kept\n");
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+  EXPECT_TRUE(contains(refusal(locked), "read-only")) << refusal(locked);
+  EXPECT_EQ(read_text(locked), "kept\n");
+
+  // /proc takes no new file, even for root (CI runs as root: a folder's permissions would not do)
+  const std::string closed = refusal("/proc/pat_csv_test.csv");
+  EXPECT_TRUE(contains(closed, "takes no new file") && contains(closed, "/proc")) << closed;
+
+  const std::string target = write_text("target.csv", "old\n");
+  const std::string link = path("link.csv");
+  fs::create_symlink("target.csv", link);
+  write_csv(link, table);
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(read_text(target), "time_s\n2\n");
+  int entries = 0;  // pipe, locked, target and link: no temporary or probe left behind
+  for (const auto& entry : fs::directory_iterator(dir_)) {
+    (void)entry;
+    ++entries;
+  }
+  EXPECT_EQ(entries, 4);
 }
 
 TEST_F(CsvTest, WriteRejectsRowsOfTheWrongLengthAndKeysThatCannotRoundTrip) {

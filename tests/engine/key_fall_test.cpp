@@ -104,6 +104,19 @@ TEST(KeyFall, KeyLandsAndRestsOnThePunching) {
   EXPECT_EQ(r.trace.columns.front(), "time_s");
 }
 
+// a duration whose trace would fill the memory is refused before the fall (1e308 s had run 42 s
+// into bad_alloc)
+TEST(KeyFall, ARunawayDurationIsRefusedBeforeAnyWork) {
+  KeyFallOptions options;
+  options.duration_s = 1e308;
+  try {
+    key_fall(test::shipped("grand"), options);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("5 million trace rows"), std::string::npos) << e.what();
+  }
+}
+
 TEST(KeyFall, NeedsAKeyBottomContact) {
   ActionModel grand = test::shipped("grand");
   grand.landmarks.key_bottom_contact = -1;

@@ -389,5 +389,28 @@ TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
   EXPECT_EQ(chirp_spec(SweepOptions{}), "motion:chirp:2:20:18:full");
 }
 
+// Paces that would fill the memory are refused before any run: a chirp of 1e20 Hz/s (its
+// millisecond tail past the band held ~1e14 cycles to judge; out of memory at 24 GB) and a
+// steps increment of 1e-300 Hz (5e299 runs).
+TEST(RepetitionSweepOptions, RunawayPacesAreRefusedBeforeAnyRun) {
+  auto message = [](const SweepOptions& o) -> std::string {
+    try {
+      run_repetition_sweep(ActionModel{}, o);  // an empty model: no run could even start
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  SweepOptions chirp;
+  chirp.f_max_hz = 2.5;
+  chirp.chirp_rate_hz_per_s = 1e20;
+  EXPECT_NE(message(chirp).find("--rate"), std::string::npos) << message(chirp);
+  SweepOptions steps;
+  steps.mode = SweepMode::steps;
+  steps.f_max_hz = 2.5;
+  steps.step_hz = 1e-300;
+  EXPECT_NE(message(steps).find("--step-hz"), std::string::npos) << message(steps);
+}
+
 }  // namespace
 }  // namespace pat
