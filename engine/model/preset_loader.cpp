@@ -569,6 +569,13 @@ std::string preset_directory() {
   return PAT_PRESET_DIR;
 }
 
+std::string json_error_without_id(const std::exception& e) {
+  // "[json.exception.out_of_range.406] number overflow parsing '1e999'": the text after the id
+  const std::string text = e.what();
+  const std::size_t end_of_id = text.rfind("] ", text.find(' '));
+  return end_of_id == std::string::npos ? text : text.substr(end_of_id + 2);
+}
+
 ActionModel parse_action(const std::string& json_text, const std::string& source_name) {
   json root;
   if (json_text.find_first_not_of(" \t\r\n") == std::string::npos)
@@ -587,6 +594,10 @@ ActionModel parse_action(const std::string& json_text, const std::string& source
     throw InputError(located_message(
         source_name, "line " + std::to_string(line) + ", column " + std::to_string(column),
         "malformed JSON"));
+  } catch (const json::out_of_range& e) {
+    // a number beyond a double's range ("1e999"): the library says which
+    throw InputError(
+        located_message(source_name, "", "malformed JSON: " + json_error_without_id(e)));
   }
   const PresetReader r(source_name);
   if (!root.is_object()) r.fail("", "a preset is a JSON object");

@@ -79,8 +79,8 @@ Exercise load_exercise(const std::string& path) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InputError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+  } catch (const nlohmann::json::exception& e) {  // malformed, or a number beyond a double
+    throw InputError(path + ": not valid JSON (" + json_error_without_id(e) + ")");
   }
   auto fail = [&path](const std::string& field, const std::string& problem) {
     return InputError(located_message(path, field, problem));

@@ -138,6 +138,18 @@ TEST(PresetErrors, MalformedJsonOnFirstLine) {
   expect_contains_all(message, {kBrokenName, "line 1", "malformed"});
 }
 
+// a number beyond a double's range is named with the file, in words (the library's own text,
+// "[json.exception.out_of_range.406] …", had been shown with no file)
+TEST(PresetErrors, ANumberBeyondADoubleNamesTheFileAndTheNumber) {
+  std::string text = preset_text("grand");
+  const std::size_t mass = text.find("\"mass_g\":");
+  ASSERT_NE(mass, std::string::npos);
+  text.insert(text.find(':', mass) + 1, " 1e999, \"was\":");
+  const std::string message = parse_error(text);
+  expect_contains_all(message, {kBrokenName, "malformed JSON", "1e999"});
+  EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
+}
+
 TEST(PresetErrors, NotAnObject) {
   const std::string message = parse_error("[1, 2, 3]");
   expect_contains_all(message, {kBrokenName, "object"});
