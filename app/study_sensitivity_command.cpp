@@ -195,7 +195,16 @@ int run_study_sensitivity(const std::vector<std::string>& args) {
     for (std::size_t i = 0; i < ranks.size() && i < 3; ++i)
       std::cout << (i ? ", " : "") << ranks[i].setting << " " << std::setprecision(3)
                 << ranks[i].change;
-    std::cout << (ranks.empty() ? "(no setting changes it measurably)\n" : "\n");
+    // no reading on the action as given (a blow that never struck: too soft, or so hard that
+    // its run stopped) is not "no change"
+    const bool of_the_blow =
+        result.metrics[m] == "impact_velocity_mps" || result.metrics[m] == "let_off_time_ms";
+    const char* none = std::isfinite(result.baseline[m]) ? "(no setting changes it measurably)\n"
+                       : of_the_blow
+                           ? "(not read on the action as given: its blow did not strike in 0.4 s, "
+                             "too soft, or so hard that the run stopped; try another --force)\n"
+                           : "(not read on the action as given)\n";
+    std::cout << (ranks.empty() ? none : "\n");
   }
   // the repetition limit is no smooth function of a screw: it can jump between two regimes
   // (the grand's halfway stroke repeats to about 13 Hz, or to 22-24 Hz once let-off is closer:

@@ -322,5 +322,17 @@ else
   echo "ok: the part beyond its travel is named: $(grep stop_cause stdout.txt)"
 fi
 
+# --- a sensitivity table whose blow never strikes says so, not "no setting changes it" -------
+# (5000 N on the key: every blow's run stops; the table had read "no setting changes it
+# measurably" for the impact velocity)
+cases=$((cases + 1))
+"$exe" study sensitivity --action grand --force 5000 >stdout.txt 2>stderr.txt || true
+if ! grep -q "impact_velocity_mps.*not read on the action as given: its blow did not strike" \
+  stdout.txt; then
+  fail "a sensitivity blow that never strikes is not named: $(tail -8 stdout.txt) $(cat stderr.txt)"
+else
+  echo "ok: a blow that never strikes is named in the sensitivity ranking"
+fi
+
 echo "$cases cases, $failures failures"
 [[ $failures -eq 0 ]]
