@@ -103,6 +103,14 @@ class PresetReader {
     return value.get<std::string>();
   }
 
+  /// An item's "name": a string, not empty (commands and messages refer to parts by it).
+  std::string name(const json& object, const std::string& path) const {
+    std::string value = text(object, path, "name");
+    if (value.find_first_not_of(" \t") == std::string::npos)
+      fail(child(path, "name"), "a name must not be empty");
+    return value;
+  }
+
   const json& array(const json& object, const std::string& path, const char* key) const {
     const json& value = field(object, path, key);
     if (!value.is_array()) fail(child(path, key), "expected an array, got " + type_name(value));
@@ -234,6 +242,33 @@ FeltLaw read_felt(const PresetReader& r, const json& object, const std::string& 
   return law;
 }
 
+// A body's parent is listed before it (the tree is built in the list's order): a parent named
+// later, or the body itself, is named as such, not as an unknown body.
+void check_parent_order(const PresetReader& r, const json& list, std::size_t i,
+                        const std::string& path, const std::string& name) {
+  const json* parent = r.optional(list[i], "parent");
+  if (!parent || !parent->is_string()) return;
+  const std::string wanted = parent->get<std::string>();
+  if (wanted == name) r.fail(path + ".parent", "a body cannot be its own parent");
+  for (std::size_t j = i + 1; j < list.size(); ++j) {
+    const json* later = list[j].is_object() ? r.optional(list[j], "name") : nullptr;
+    if (later && later->is_string() && later->get<std::string>() == wanted)
+      r.fail(path + ".parent", "its parent '" + wanted + "' is listed after it (bodies[" +
+                                   std::to_string(j) + "]): list each parent before its children");
+  }
+}
+
+// Springs and straps are removed by name (--without NAME): each name once among them.
+void check_part_name_free(const PresetReader& r, const ActionModel& model, const std::string& path,
+                          const std::string& name) {
+  for (const JointSpring& spring : model.springs)
+    if (spring.name == name)
+      r.fail(path + ".name", "duplicate name: a spring is named '" + name + "'");
+  for (const Strap& strap : model.straps)
+    if (strap.name == name)
+      r.fail(path + ".name", "duplicate name: a strap is named '" + name + "'");
+}
+
 void read_bodies(const PresetReader& r, const json& root, ActionModel& model) {
   const json& list = r.array(root, "", "bodies");
   if (list.empty()) r.fail("bodies", "an action needs at least one body");
@@ -243,8 +278,9 @@ void read_bodies(const PresetReader& r, const json& root, ActionModel& model) {
     const json& item = list[i];
     const std::string path = item_path("bodies", i, item);
     Body body;
-    body.name = r.text(item, path, "name");
+    body.name = r.name(item, path);
     if (model.body_index(body.name) >= 0) r.fail(path + ".name", "duplicate body name");
+    check_parent_order(r, list, i, path, body.name);
     body.parent = body_reference(r, model, item, path, "parent");
     body.pivot = r.point(item, path, "pivot_mm", kMm);
     body.mass = r.positive(item, path, "mass_g") * 1e-3;
@@ -276,7 +312,7 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
     const json& item = list[i];
     const std::string path = item_path("contacts", i, item);
     Contact contact;
-    contact.name = r.text(item, path, "name");
+    contact.name = r.name(item, path);
     if (model.contact_index(contact.name) >= 0) r.fail(path + ".name", "duplicate contact name");
     contact.body_a = body_reference(r, model, item, path, "body_a");
     contact.body_b = body_reference(r, model, item, path, "body_b");
@@ -363,7 +399,8 @@ void read_springs_and_straps(const PresetReader& r, const json& root, ActionMode
     const json& item = springs[i];
     const std::string path = item_path("springs", i, item);
     JointSpring spring;
-    spring.name = r.text(item, path, "name");
+    spring.name = r.name(item, path);
+    check_part_name_free(r, model, path, spring.name);
     spring.body = body_reference(r, model, item, path, "body");
     if (spring.body < 0) r.fail(path + ".body", "a joint spring acts on a body's joint");
     spring.stiffness = r.nonnegative(item, path, "stiffness_n_mm_per_rad", 0.0) * 1e-3;
@@ -376,7 +413,8 @@ void read_springs_and_straps(const PresetReader& r, const json& root, ActionMode
       const json& item = (*straps)[i];
       const std::string path = item_path("straps", i, item);
       Strap strap;
-      strap.name = r.text(item, path, "name");
+      strap.name = r.name(item, path);
+      check_part_name_free(r, model, path, strap.name);
       strap.body_a = body_reference(r, model, item, path, "body_a");
       strap.point_a = r.point(item, path, "point_a_mm", kMm);
       strap.body_b = body_reference(r, model, item, path, "body_b");
@@ -396,7 +434,9 @@ void read_adjusters(const PresetReader& r, const json& root, ActionModel& model)
     const json& item = list[i];
     const std::string path = item_path("adjusters", i, item);
     Adjuster adjuster;
-    adjuster.name = r.text(item, path, "name");
+    adjuster.name = r.name(item, path);
+    for (const Adjuster& before : model.adjusters)
+      if (before.name == adjuster.name) r.fail(path + ".name", "duplicate adjuster name");
     adjuster.description = r.text(item, path, "description");
     const Vec2 range = r.point(item, path, "range_mm", kMm);
     adjuster.min = range.x();

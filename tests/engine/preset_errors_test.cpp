@@ -150,6 +150,27 @@ TEST(PresetErrors, ANumberBeyondADoubleNamesTheFileAndTheNumber) {
   EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
 }
 
+// a preset edited by hand: what is wrong is named, not a consequence of it ("unknown body" for a
+// parent listed later or the body itself; a second spring of the same name had been accepted,
+// and --without listed it twice; an empty name had surfaced as an unknown body in a contact)
+TEST(PresetErrors, ParentsOrderNamesAndDuplicatePartsAreNamed) {
+  json later = preset_json("grand");
+  later["bodies"][1]["parent"] = later["bodies"][2]["name"];
+  expect_preset_error(later, {"bodies[1]", "parent", "listed after it", "bodies[2]"});
+  json own = preset_json("grand");
+  own["bodies"][1]["parent"] = own["bodies"][1]["name"];
+  expect_preset_error(own, {"bodies[1]", "parent", "its own parent"});
+  json empty = preset_json("grand");
+  empty["bodies"][5]["name"] = "";
+  expect_preset_error(empty, {"bodies[5]", "name", "must not be empty"});
+  json springs = preset_json("grand");
+  springs["springs"][1]["name"] = springs["springs"][0]["name"];
+  expect_preset_error(springs, {"springs[1]", "name", "duplicate name"});
+  json adjusters = preset_json("grand");
+  adjusters["adjusters"][1]["name"] = adjusters["adjusters"][0]["name"];
+  expect_preset_error(adjusters, {"adjusters[1]", "name", "duplicate adjuster name"});
+}
+
 TEST(PresetErrors, NotAnObject) {
   const std::string message = parse_error("[1, 2, 3]");
   expect_contains_all(message, {kBrokenName, "object"});
