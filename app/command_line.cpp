@@ -45,6 +45,11 @@ CommandLine::CommandLine(std::vector<std::string> args, const std::set<std::stri
       flags_.insert(arg);
     } else if (value_options.count(arg)) {
       if (i + 1 >= args.size()) throw InputError("option " + arg + " needs a value");
+      // the next word is one of this command's own options: the value was left out (it had been
+      // taken as the value: "--measured --threads 1" said "--threads: cannot read the file")
+      const std::string& next = args[i + 1];
+      if (value_options.count(next) || flags.count(next))
+        throw InputError("option " + arg + " needs a value (found the option " + next + ")");
       values_[arg].push_back(args[++i]);
       if (list_options.count(arg))
         while (i + 1 < args.size() && args[i + 1].rfind("--", 0) != 0)
