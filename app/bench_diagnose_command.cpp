@@ -20,8 +20,8 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
   const CommandLine cl(
       args, {"--action", "--seeds", "--null-seeds", "--family", "--threads", "--plot"}, {"--json"});
   const ActionModel model = load_action(cl.value_or("--action", "grand"));
-  const int seeds = static_cast<int>(cl.positive_number_or("--seeds", 3));
-  const int null_seeds = static_cast<int>(cl.positive_number_or("--null-seeds", 3));
+  const int seeds = cl.whole_number_or("--seeds", 1000, 3);
+  const int null_seeds = cl.whole_number_or("--null-seeds", 1000, 3);
   const std::vector<std::string> only = cl.values("--family");
   if (!only.empty() && cl.has("--null-seeds"))
     throw InputError(
@@ -36,8 +36,7 @@ int run_bench_diagnose(const std::vector<std::string>& args) {
       throw InputError("--family " + family + ": not a family of the " + model.kind +
                        "'s candidate library (" + known + ")");
     }
-  const unsigned threads =
-      cl.has("--threads") ? static_cast<unsigned>(cl.positive_number("--threads")) : 0;
+  const unsigned threads = static_cast<unsigned>(cl.whole_number_or("--threads", 256, 0));
   const PlotOption plot(cl);
   nlohmann::json cases = nlohmann::json::array();
   // per case: the gain of the found cause (passed and failed cases apart) and the wall time

@@ -105,6 +105,15 @@ double CommandLine::positive_number_or(const std::string& option, double fallbac
   return has(option) ? positive_number(option) : fallback;
 }
 
+int CommandLine::whole_number_or(const std::string& option, int most, int fallback) const {
+  if (!has(option)) return fallback;
+  const double x = parse_number(value(option), option);
+  if (!(x >= 1.0 && x <= most && x == std::floor(x)))
+    throw InputError(option + ": must be a whole number from 1 to " + std::to_string(most) +
+                     " (got " + value(option) + ")");
+  return static_cast<int>(x);
+}
+
 std::string CommandLine::output_path(const std::string& option, bool required) const {
   if (!has(option) && !required) return "";
   const std::string path = value(option);  // throws for a missing required option

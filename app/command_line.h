@@ -31,6 +31,9 @@ class CommandLine {
   /// A positive number (seconds, hertz...); names the option in the error.
   double positive_number(const std::string& option) const;
   double positive_number_or(const std::string& option, double fallback) const;
+  /// A whole number from 1 to `most` (seeds, threads, passes): a fraction or a number beyond
+  /// `most` is refused naming the option (a cast had run 1.5 as 1 and 3e9 as none).
+  int whole_number_or(const std::string& option, int most, int fallback) const;
   /// The path of an output option ("" when absent), checked before any work: not empty, in a
   /// folder that exists, not a folder, not a file another output option of the same command
   /// already names (one would overwrite the other; the error names both options), and not a file

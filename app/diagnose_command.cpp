@@ -103,7 +103,8 @@ int run_diagnose(const std::vector<std::string>& args) {
   DiagnoseOptions options;
   options.candidates = cl.values("--candidate");
   refuse_repeated_names("--candidate", options.candidates);  // each candidate is fitted once
-  if (cl.has("--threads")) options.threads = static_cast<unsigned>(cl.positive_number("--threads"));
+  if (cl.has("--threads"))
+    options.threads = static_cast<unsigned>(cl.whole_number_or("--threads", 256, 0));
   const std::string report = cl.value_or("--report", "");
   if (cl.has("--report")) check_report_folder(report);
   const PlotOption plot(cl);

@@ -59,7 +59,7 @@ int run_regulate(const std::vector<std::string>& args) {
   if (model.regulation.empty())
     throw InputError(model.source_file + ": the preset lists no regulation settings");
   RegulationOptions options;
-  options.max_passes = static_cast<int>(cl.positive_number_or("--max-passes", 6));
+  options.max_passes = cl.whole_number_or("--max-passes", 100, 6);
   const bool text = !cl.has("--json");
   if (text && !cl.has("--quiet")) {
     options.on_step = [&model](const RegulationStep& s) {

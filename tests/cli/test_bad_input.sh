@@ -131,6 +131,7 @@ expect_failure "missing --duration" "--duration|missing" \
   simulate --action grand --input mass:1kg --out out.csv
 expect_failure "a value left out before the next option" "--input needs a value|found the option --duration" \
   simulate --action grand --input --duration 0.1 --out out.csv
+expect_failure "a fraction for a count" "--seeds|whole number|1.5" bench-diagnose --seeds 1.5
 expect_failure "non-numeric --duration" "--duration|abc|not a number" \
   simulate --action grand --input mass:1kg --duration abc --out out.csv
 expect_failure "negative --duration" "--duration|must be positive" \
