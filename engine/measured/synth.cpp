@@ -16,7 +16,10 @@ CsvTable synthesize(const ActionModel& base, const std::string& input_spec, cons
   // fill the memory with samples
   if (o.fps > 1e5) throw InputError("--fps must be at most 100000 frames per second");
   if (!(o.duration_s > 0)) throw InputError("--duration must be positive");
-  if (!(o.noise_deg >= 0)) throw InputError("--noise-deg must be zero or positive");
+  // a sensor's noise is a fraction of a degree; more than 10° (a fifth of the hammer's travel)
+  // is a slip (1e308 had written inf into the file)
+  if (!(o.noise_deg >= 0) || o.noise_deg > 10)
+    throw InputError("--noise-deg must be from 0 to 10 degrees");
   if (!std::isfinite(o.time_offset_s) || std::abs(o.time_offset_s) > 0.1)
     throw InputError("--time-offset-ms must be within ±100 ms");
   if (!std::isfinite(o.angle_offset_deg) || std::abs(o.angle_offset_deg) > 10)

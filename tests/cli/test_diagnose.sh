@@ -68,6 +68,9 @@ expect_failure "wrong action" "but the upright action was requested" \
 expect_failure "unknown effect" "unknown effect 'wobble'" \
   synth --action grand --input mass:1kg --duration 0.1 --effect wobble=1 --out x.csv
 [[ ! -e x.csv ]] || fail "synth wrote a file despite a bad effect"
+expect_failure "noise beyond a sensor's" "--noise-deg must be from 0 to 10 degrees" \
+  synth --action grand --input mass:1kg --duration 0.1 --noise-deg 1e308 --out x.csv
+[[ ! -e x.csv ]] || fail "synth wrote a file despite a noise of 1e308 degrees"
 expect_failure "effect range" "outside its physical range" \
   simulate --action grand --input mass:1kg --duration 0.1 --effect joint_friction.hammer=1000
 # an option's value given twice, which one of them would silently win or count twice
