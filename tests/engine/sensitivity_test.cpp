@@ -42,6 +42,20 @@ double velocity_slope(const std::string& action, const std::string& setting) {
   return row_of(r, setting).per_unit_of_setting.at(0);
 }
 
+// a step no screw can turn is named as the table's step, before any run
+TEST(Sensitivity, AStepBeyondAnAdjustersRangeNamesTheStep) {
+  SensitivityOptions options;
+  options.step_mm = 100.0;
+  try {
+    sensitivity(test::shipped("grand"), options);
+    FAIL() << "no InputError";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("--step"), std::string::npos) << message;
+    EXPECT_NE(message.find("100 mm"), std::string::npos) << message;
+  }
+}
+
 TEST(Sensitivity, EverySettingHasARowAndAllButOneAreMeasuredOnBothSides) {
   for (const char* action : {"grand", "upright"}) {
     const SensitivityResult& r = blow_sensitivity(action);
