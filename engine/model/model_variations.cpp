@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace pat {
 
@@ -14,9 +15,12 @@ ActionModel with_spring_factor(const ActionModel& model, const std::string& name
     throw InputError(model.source_file + ": no spring named '" + name + "' (springs: " + names +
                      ")");
   }
-  if (!(factor >= 0.0) || !std::isfinite(factor))
-    throw InputError("spring factor for '" + name + "' must be a finite number ≥ 0, got " +
-                     std::to_string(factor));
+  // ten times a spring's strength is beyond any spring a technician fits; more is a slip (1e308
+  // had been refused as "the action does not settle at rest", naming no option)
+  constexpr double kStrongestFactor = 10.0;
+  if (!(factor >= 0.0) || !(factor <= kStrongestFactor))
+    throw InputError("spring factor for '" + name + "' must be from 0 to 10, got " +
+                     format_number(factor));
   ActionModel out = model;
   out.springs[index].stiffness *= factor;
   out.springs[index].preload *= factor;
@@ -25,7 +29,11 @@ ActionModel with_spring_factor(const ActionModel& model, const std::string& name
 
 ActionModel with_key_front_lead(const ActionModel& model, double grams) {
   if (model.landmarks.key < 0) throw InputError(model.source_file + ": the action has no key");
-  if (!std::isfinite(grams)) throw InputError("key front lead must be a finite number of grams");
+  // a key carries a few leads of about 10 g; ±200 g is beyond any key (1e308 had been refused as
+  // "the action does not settle at rest")
+  constexpr double kHeaviestLeadG = 200.0;
+  if (!(std::abs(grams) <= kHeaviestLeadG))
+    throw InputError("key front lead must be within ±200 g, got " + format_number(grams) + " g");
   ActionModel out = model;
   Body& key = out.bodies[model.landmarks.key];
   const double dm = grams * 1e-3;

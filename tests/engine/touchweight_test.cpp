@@ -143,6 +143,11 @@ TEST(Touchweight, SpringFactorAndLeadRejectBadValues) {
   EXPECT_THROW(with_spring_factor(grand, "no_such_spring", 1.0), InputError);
   EXPECT_THROW(with_spring_factor(grand, "repetition_spring", -1.0), InputError);
   EXPECT_THROW(with_key_front_lead(grand, -1000.0), InputError);
+  // beyond any spring or lead: named, not left to fail as an action that never settles
+  EXPECT_THROW(with_spring_factor(grand, "jack_spring", 1e308), InputError);
+  EXPECT_THROW(with_key_front_lead(grand, 1e308), InputError);
+  EXPECT_NO_THROW(with_spring_factor(grand, "jack_spring", 10.0));
+  EXPECT_NO_THROW(with_key_front_lead(grand, 200.0));
 }
 
 TEST(Touchweight, CancelsThroughItsProgressCallback) {
