@@ -166,18 +166,21 @@ RawImport import_raw(const RawTrace& trace, const RawImportOptions& o) {
             << 1.0 / kMaxSampleIntervalS << " samples/s are needed)";
     throw InputError(problem.str());
   }
-  if (!(o.from_s >= 0.0) || !(o.to_s > o.from_s)) {
+  if (!(o.from_s >= 0.0) || !std::isfinite(o.from_s)) {
+    problem << "--from " << o.from_s << " s: the window must start at 0 s or later";
+    throw InputError(problem.str());
+  }
+  if (!(o.to_s > o.from_s)) {  // an --to not given is +inf
     problem << "--from " << o.from_s << " s and --to " << o.to_s
-            << " s: the window must start at 0 s or later and end after it starts";
+            << " s: the window must end after it starts";
     throw InputError(problem.str());
   }
   const std::size_t total = trace.reading.size();
   const double file_duration = static_cast<double>(total - 1) / o.rate_hz;
   const auto first = static_cast<std::size_t>(std::ceil(o.from_s * o.rate_hz - 1e-9));
-  const std::size_t last =
-      std::isfinite(o.to_s)
-          ? std::min(total - 1, static_cast<std::size_t>(std::floor(o.to_s * o.rate_hz + 1e-9)))
-          : total - 1;
+  // bounded in floating point before the cast (an --to of 1e17 s overflowed the index)
+  const std::size_t last = static_cast<std::size_t>(
+      std::min(static_cast<double>(total - 1), std::floor(o.to_s * o.rate_hz + 1e-9)));
   const std::size_t count = first <= last && first < total ? last - first + 1 : 0;
   if (o.from_s > file_duration) {  // the window lies beyond the recording's end
     problem << "--from " << o.from_s << " s is beyond the end of the recording: column "

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -41,6 +42,9 @@ RawTrace read_raw_trace(const std::string& path, int column, int bits) {
   if (bits < 1 || bits > 32)
     throw InputError("--bits: an ADC resolution from 1 to 32 bits is expected (got " +
                      std::to_string(bits) + ")");
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(located_message(path, "", "is a folder, not a raw trace file"));
   std::ifstream in(path);
   if (!in) throw InputError(located_message(path, "", "cannot open the raw trace (missing file?)"));
   RawTrace trace;

@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <random>
 #include <sstream>
 
@@ -310,6 +311,8 @@ TEST(RawImport, BadRawFilesAreNamed) {
   const auto mixed = write_file("mixed.txt", "3600000\n0.5\n");
   expect_message(error_of([&] { read_raw_trace(mixed, 1); }),
                  {"line 2", "neither a normalized reading in [0, 1] nor a whole ADC count"});
+  const std::string folder = std::filesystem::temp_directory_path().string();
+  expect_message(error_of([&] { read_raw_trace(folder, 1); }), {"a folder"});
   const auto empty = write_file("empty.txt", "# nothing\n\n");
   expect_message(error_of([&] { read_raw_trace(empty, 1); }), {empty, "no samples"});
   // a blank line between samples would shift the later ones by a period; at the end it is fine
@@ -333,6 +336,14 @@ TEST(RawImport, BadRatesWindowsAndMissingStrikesAreNamed) {
   o.from_s = 0.2;
   o.to_s = 0.1;
   expect_message(error_of([&] { import_file(path, o); }), {"--from", "end after it starts"});
+  // a window from before the file's start is named alone (it had printed "--to inf s"); a window
+  // ending far past the file's end is the whole file (1e17 s had overflowed the sample index)
+  o.from_s = -1.0;
+  o.to_s = std::numeric_limits<double>::infinity();
+  expect_message(error_of([&] { import_file(path, o); }), {"--from -1 s", "0 s or later"});
+  RawImportOptions far;
+  far.to_s = 1e17;
+  EXPECT_EQ(import_file(path, far).table.rows.size(), import_file(path).table.rows.size());
 
   const auto flat = write_raw("flat.txt", std::vector<double>(400, 0.3));
   expect_message(error_of([&] { import_file(flat); }),
