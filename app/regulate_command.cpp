@@ -121,7 +121,7 @@ int run_regulate(const std::vector<std::string>& args) {
   if (!result.converged) {
     std::cerr << "pianoaction regulate: the " << model.kind
               << " action could not be regulated: " << result.message
-              << (out_path.empty() ? "" : " (nothing written)") << "\n";
+              << (out_path.empty() ? "" : " (no preset written to " + out_path + ")") << "\n";
     return 1;
   }
   return 0;
