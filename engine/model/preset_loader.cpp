@@ -24,6 +24,7 @@ namespace {
 using nlohmann::json;
 
 constexpr double kMm = 1e-3;
+constexpr double kFarthestPointMm = 10000.0;  // ten metres: see PresetReader::point
 
 std::string type_name(const json& value) {
   if (value.is_number()) return "a number";
@@ -120,7 +121,23 @@ class PresetReader {
   Vec2 point(const json& value, const std::string& path, double scale) const {
     if (!value.is_array() || value.size() != 2 || !value[0].is_number() || !value[1].is_number())
       fail(path, "expected a pair of numbers [x, y]");
-    return Vec2(value[0].get<double>(), value[1].get<double>()) * scale;
+    const Vec2 p(value[0].get<double>(), value[1].get<double>());
+    if (!p.allFinite()) fail(path, "must be finite numbers");
+    // a position in mm: a piano action is well within a metre of its key's balance point; ten
+    // metres is a slip (1e300 mm had loaded and run)
+    if (scale == kMm && p.cwiseAbs().maxCoeff() > kFarthestPointMm)
+      fail(path, "lies " + format(p.cwiseAbs().maxCoeff()) + " mm away: positions in an action " +
+                     "are within ±" + format(kFarthestPointMm) + " mm");
+    return p * scale;
+  }
+
+  /// A positive number no larger than `most` (a mass, an inertia: beyond, a slip of units).
+  double positive_at_most(const json& object, const std::string& path, const char* key,
+                          double most) const {
+    const double x = positive(object, path, key);
+    if (x > most)
+      fail(child(path, key), "must be at most " + format(most) + " (got " + format(x) + ")");
+    return x;
   }
 
   Vec2 point(const json& object, const std::string& path, const char* key, double scale) const {
@@ -283,9 +300,10 @@ void read_bodies(const PresetReader& r, const json& root, ActionModel& model) {
     check_parent_order(r, list, i, path, body.name);
     body.parent = body_reference(r, model, item, path, "parent");
     body.pivot = r.point(item, path, "pivot_mm", kMm);
-    body.mass = r.positive(item, path, "mass_g") * 1e-3;
+    // 100 kg and 10^7 g·cm² (100 kg at 10 cm): beyond any part of an action
+    body.mass = r.positive_at_most(item, path, "mass_g", 1e5) * 1e-3;
     body.com = r.point(item, path, "com_mm", kMm);
-    body.inertia_com = r.positive(item, path, "inertia_com_g_cm2") * 1e-7;  // g·cm² → kg·m²
+    body.inertia_com = r.positive_at_most(item, path, "inertia_com_g_cm2", 1e7) * 1e-7;  // → kg·m²
     if (const json* f = r.optional(item, "friction")) {
       const std::string fpath = path + ".friction";
       body.friction.a_nm = r.nonnegative(*f, fpath, "a_n_mm", 0.0) * 1e-3;
@@ -293,7 +311,11 @@ void read_bodies(const PresetReader& r, const json& root, ActionModel& model) {
       body.friction.b2 = r.nonnegative(*f, fpath, "b2", 0.0);
       body.friction.omega_t = r.positive(*f, fpath, "omega_t_rad_per_s");
     }
-    body.trace_sign = r.number_or(item, path, "trace_sign", 1.0) < 0.0 ? -1.0 : 1.0;
+    const double trace_sign = r.number_or(item, path, "trace_sign", 1.0);
+    if (trace_sign != 1.0 && trace_sign != -1.0)
+      r.fail(path + ".trace_sign",
+             "must be 1 or -1 (got " + PresetReader::format(trace_sign) + ")");
+    body.trace_sign = trace_sign;
     body.outline = r.polygon(item, path, "outline_mm");
     r.require_source(item, path);
     model.bodies.push_back(body);

@@ -171,6 +171,23 @@ TEST(PresetErrors, ParentsOrderNamesAndDuplicatePartsAreNamed) {
   expect_preset_error(adjusters, {"adjusters[1]", "name", "duplicate adjuster name"});
 }
 
+// values no action has, a slip of units or a typo, are named (they had loaded and run, or
+// failed later as an action that does not come to rest)
+TEST(PresetErrors, ValuesBeyondAnyActionAreNamed) {
+  json far = preset_json("grand");
+  far["bodies"][4]["com_mm"] = {1e300, 0.0};
+  expect_preset_error(far, {"bodies[4]", "com_mm", "mm away"});
+  json heavy = preset_json("grand");
+  heavy["bodies"][2]["mass_g"] = 1e9;
+  expect_preset_error(heavy, {"bodies[2]", "mass_g", "at most"});
+  json inertia = preset_json("grand");
+  inertia["bodies"][2]["inertia_com_g_cm2"] = 1e12;
+  expect_preset_error(inertia, {"bodies[2]", "inertia_com_g_cm2", "at most"});
+  json sign = preset_json("grand");
+  sign["bodies"][0]["trace_sign"] = 5;
+  expect_preset_error(sign, {"bodies[0]", "trace_sign", "1 or -1"});
+}
+
 TEST(PresetErrors, NotAnObject) {
   const std::string message = parse_error("[1, 2, 3]");
   expect_contains_all(message, {kBrokenName, "object"});
