@@ -210,7 +210,8 @@ int run_window(int argc, char** argv, const std::vector<std::string>& args) {
     if (!(w >= 640 && h >= 400 && w <= 10000 && h <= 10000) || w != std::floor(w) ||
         h != std::floor(h))
       throw pat::InputError(
-          "--size: expected WIDTHxHEIGHT in whole pixels, at least 640x400 (got '" + size + "')");
+          "--size: expected WIDTHxHEIGHT in whole pixels, from 640x400 to 10000x10000 (got '" +
+          size + "')");
     options.width = static_cast<int>(w);
     options.height = static_cast<int>(h);
   }
