@@ -46,6 +46,22 @@ ActionModel load_configured_action(const CommandLine& cl, bool needs_rest) {
   }
   for (const std::string& effect : cl.values("--effect"))
     model = with_effect(model, parse_effect(effect));
+  // settings that leave the action no rest position (every adjuster at an end of its range) are
+  // the choice they are, named with the options (the engine's message leaves adjusters out: it
+  // also reaches a student whose exercise hides them)
+  if (needs_rest && cl.has("--set") && adjuster_settings_text(model) != "regulated") {
+    try {
+      find_rest_state(model);
+    } catch (const InputError&) {
+      throw;
+    } catch (const std::exception& e) {
+      std::string given;
+      for (const std::string& assignment : cl.values("--set"))
+        given += (given.empty() ? "" : ", ") + assignment;
+      throw InputError("--set " + given + ": with these settings the action has no rest (" +
+                       e.what() + "); move them back toward 0, one at a time to find which");
+    }
+  }
   return model;
 }
 

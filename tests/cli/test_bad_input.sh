@@ -127,6 +127,9 @@ expect_failure "unknown --without part" "bridle|removable parts|repetition_sprin
   "${run_args[@]}" --without bridle --out out.csv
 expect_failure "a --without part the action cannot rest without" "--without jack_spring|no rest|jack" \
   "${run_args[@]}" --without jack_spring --out out.csv
+expect_failure "settings that leave no rest" "--set key_dip=3, let_off=-4|no rest|one at a time" \
+  measure --action grand --set key_dip=3 --set let_off=-4 --set drop=4 --set checking=-4 \
+  --set hammer_blow=4 --set lever_height=-2.5 --set jack_position=3
 expect_failure "missing --duration" "--duration|missing" \
   simulate --action grand --input mass:1kg --out out.csv
 expect_failure "a value left out before the next option" "--input needs a value|found the option --duration" \
