@@ -126,17 +126,17 @@ SensitivityResult sensitivity(const ActionModel& model, const SensitivityOptions
   std::vector<std::shared_ptr<const ActionModel>> variants{std::make_shared<ActionModel>(model)};
   for (const RegulationSetting& s : model.regulation) {
     const Adjuster& a = adjuster_of(model, s.name);
-    // the step is the table's, the same for every setting: named as such when a screw cannot
-    // turn that far (the adjuster's own message had seemed to blame the setting)
-    const double step_m = options.step_mm * 1e-3;
-    if (a.value - step_m < a.min - 1e-12 || a.value + step_m > a.max + 1e-12)
-      throw InputError("sensitivity step (--step) " + format_number(options.step_mm) + " mm: the " +
-                       s.name + " adjuster at " + format_number(a.value * 1e3) +
-                       " mm turns only within [" + format_number(a.min * 1e3) + ", " +
-                       format_number(a.max * 1e3) + "] mm; give a smaller step");
-    for (const double sign : {-1.0, 1.0})
-      variants.push_back(std::make_shared<ActionModel>(
-          with_adjuster(model, s.name, a.value + sign * options.step_mm * 1e-3)));
+    for (const double sign : {-1.0, 1.0}) {
+      try {
+        variants.push_back(std::make_shared<ActionModel>(
+            with_adjuster(model, s.name, a.value + sign * options.step_mm * 1e-3)));
+      } catch (const InputError& e) {
+        // the step is the table's, the same for every setting: named as such when a screw
+        // cannot turn that far (the adjuster's message alone had seemed to blame the setting)
+        throw InputError("sensitivity step (--step) " + format_number(options.step_mm) +
+                         " mm: " + e.what() + "; give a smaller step");
+      }
+    }
   }
   std::vector<RestState> rests(variants.size());
   std::vector<char> failed(variants.size(), 0);            // a variant without a rest state

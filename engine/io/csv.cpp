@@ -104,6 +104,17 @@ bool has_line_break(const std::string& s) {
   return s.find_first_of("\r\n") != std::string::npos;
 }
 
+// `target` with `infix` and a random suffix appended: a name beside it that nothing else uses
+std::filesystem::path unique_sibling(const std::filesystem::path& target,
+                                     const std::string& infix) {
+  std::random_device random;
+  std::ostringstream suffix;
+  suffix << std::hex << random() << random();
+  std::filesystem::path sibling = target;
+  sibling += infix + suffix.str();
+  return sibling;
+}
+
 }  // namespace
 
 int CsvTable::column_index(const std::string& name) const {
@@ -279,21 +290,6 @@ std::string format_csv(const CsvTable& table) {
   }
   return out;
 }
-
-namespace {
-
-// `target` with `infix` and a random suffix appended: a name beside it that nothing else uses
-std::filesystem::path unique_sibling(const std::filesystem::path& target,
-                                     const std::string& infix) {
-  std::random_device random;
-  std::ostringstream suffix;
-  suffix << std::hex << random() << random();
-  std::filesystem::path sibling = target;
-  sibling += infix + suffix.str();
-  return sibling;
-}
-
-}  // namespace
 
 void check_output_path(const std::string& path) {
   namespace fs = std::filesystem;

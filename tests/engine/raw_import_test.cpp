@@ -282,14 +282,7 @@ TEST(RawImport, ShippedStrikeAgreesWithThePreset) {
 
 // ---- bad input -------------------------------------------------------------------------------
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
-}
+using test::error_of;
 
 void expect_message(const std::string& message, const std::vector<std::string>& parts) {
   for (const std::string& part : parts)

@@ -393,13 +393,9 @@ TEST(RepetitionSweepOptions, InconsistentOptionsAreNamed) {
 // millisecond tail past the band held ~1e14 cycles to judge; out of memory at 24 GB) and a
 // steps increment of 1e-300 Hz (5e299 runs).
 TEST(RepetitionSweepOptions, RunawayPacesAreRefusedBeforeAnyRun) {
-  auto message = [](const SweepOptions& o) -> std::string {
-    try {
-      run_repetition_sweep(ActionModel{}, o);  // an empty model: no run could even start
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    return "";
+  auto message = [](const SweepOptions& o) {
+    // an empty model: no run could even start
+    return test::error_of([&] { run_repetition_sweep(ActionModel{}, o); });
   };
   SweepOptions chirp;
   chirp.f_max_hz = 2.5;

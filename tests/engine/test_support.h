@@ -2,15 +2,27 @@
 #pragma once
 
 #include <algorithm>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "core/error.h"
 #include "inputs/key_input.h"
 #include "model/preset_loader.h"
 #include "sim/key_travel.h"
 #include "sim/simulation.h"
 
 namespace pat::test {
+
+/// The message of the InputError `f` throws, or "no error".
+inline std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 inline ActionModel shipped(const std::string& name) {
   return load_action(std::string(PAT_PRESET_DIR) + "/" + name + ".json");
