@@ -140,9 +140,11 @@ void PlaybackController::play_key(double angle_rad) {
     seek(history_.last_time());
     play();
   }
-  // the key follows the mouse within 30 ms of wall time (shorter in simulated time when slowed)
+  // the key follows the mouse within 30 ms of wall time (shorter in simulated time when slowed);
+  // the run keeps the angle within its own full dip (known to the worker as it builds the run,
+  // here only once its start is reported: a key grabbed on the first frame drawn came before it)
   const double transition = std::clamp(0.03 * speed_, 2e-3, 0.03);
-  worker_->request_key_angle(std::clamp(angle_rad, 0.0, full_dip_rad_), transition);
+  worker_->request_key_angle(std::max(angle_rad, 0.0), transition);
 }
 
 void PlaybackController::release_key() {
@@ -319,9 +321,8 @@ void PlaybackController::show_time(double t) {
   emit frameShown(current_);
 }
 
-void PlaybackController::on_run_started(int run_id, double full_dip_rad, const QString& notes) {
+void PlaybackController::on_run_started(int run_id, const QString& notes) {
   if (run_id != run_id_) return;
-  full_dip_rad_ = full_dip_rad;
   // what the input's reading means (a CSV's ignored column, its held end) goes with its name
   if (!notes.isEmpty() && inputs_.size() == 1) {
     inputs_.front().words += tr(" (%1)").arg(notes);

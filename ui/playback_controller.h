@@ -39,14 +39,12 @@ class PlaybackController : public QObject {
   /// A blow (force SPEC) struck now; starts playing.
   void strike(const std::string& force_spec);
   /// The key played with the mouse: key angle (rad from rest, positive down), kept between
-  /// rest and full dip; starts playing.
+  /// rest and the run's full dip by the worker; starts playing.
   void play_key(double angle_rad);
   /// The mouse lets the key go: from now the key is free (no finger force), as a finger lifted
   /// off it; it had been led back to rest and held there, pulling it up (−0.5 N) as the
   /// hammer came down.
   void release_key();
-  /// Key angle at full dip (rad) of the current run.
-  double full_dip_rad() const { return full_dip_rad_; }
 
   void play();
   void pause();
@@ -108,7 +106,7 @@ class PlaybackController : public QObject {
 
  private slots:
   void tick();
-  void on_run_started(int run_id, double full_dip_rad, const QString& notes);
+  void on_run_started(int run_id, const QString& notes);
   void on_run_failed(int run_id, const QString& message);
   void on_run_stopped(int run_id, const QString& cause);
 
@@ -137,7 +135,6 @@ class PlaybackController : public QObject {
   std::shared_ptr<const ActionModel> model_;
   std::string run_spec_;
   int run_id_ = 0;
-  double full_dip_rad_ = 0.0;
   bool playing_ = false;
   bool stopped_ = false;
   bool replay_ = false;      // frames from an analysis: no worker behind them

@@ -136,7 +136,7 @@ void SimulationWorker::start_run(const RunSetup& setup) {
   }
   target_time_.store(0.0);
   record_frame();  // the first frame, at rest; it sets last_frame_t_
-  emit runStarted(run_id_, full_dip_rad_, notes);
+  emit runStarted(run_id_, notes);
 }
 
 void SimulationWorker::compute() {

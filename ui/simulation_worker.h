@@ -61,9 +61,9 @@ class SimulationWorker : public QObject {
 
  signals:
   void framesAvailable();
-  /// The run started; full_dip_rad is the key angle at full dip (for the mouse-played key);
-  /// `notes`: what the user should know of its input (input_notes; empty: nothing).
-  void runStarted(int run_id, double full_dip_rad, const QString& notes);
+  /// The run started; `notes`: what the user should know of its input (input_notes; empty:
+  /// nothing).
+  void runStarted(int run_id, const QString& notes);
   /// The run could not start (bad SPEC, a model that does not settle): the message says why.
   void runFailed(int run_id, const QString& message);
   /// The run stopped by itself (unphysical contact, divergence): the simulator's cause.

@@ -72,6 +72,7 @@ class RunControlsTest : public QObject {
   void a_focused_input_keeps_its_keys_and_the_view_strikes();
   void the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after();
   void runs_asked_for_while_the_worker_takes_one_are_never_lost();
+  void a_key_played_as_the_run_starts_goes_down();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -828,7 +829,7 @@ void RunControlsTest::runs_asked_for_while_the_worker_takes_one_are_never_lost()
   const auto stop_thread = start_in_thread(worker, thread);
   connect(
       &worker, &pat::ui::SimulationWorker::runStarted, &worker,
-      [&](int id, double, const QString&) { last_started.store(id); }, Qt::DirectConnection);
+      [&](int id, const QString&) { last_started.store(id); }, Qt::DirectConnection);
   const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
   // two runs asked for at once (a slider dragged at rest), the second while the worker is taking
   // the first; then a wait until the second has started; for a second and a half
@@ -852,6 +853,25 @@ void RunControlsTest::runs_asked_for_while_the_worker_takes_one_are_never_lost()
         return false;
       },
       10000));
+}
+
+// The key played with the mouse before the run's start has reached the window (its first frame
+// is drawn, the key can be grabbed, but the start's report is still queued): the key goes down.
+// The window had kept the mouse's angle within the full dip it knew, 0 until that report came,
+// and the key stayed at rest for the whole of a full CI's minute-long wait.
+void RunControlsTest::a_key_played_as_the_run_starts_goes_down() {
+  PlaybackController controller;
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  controller.restart(model, "");
+  controller.play_key(0.05);  // rad, near full dip (kept within it by the run), before any event
+  const int key = model->landmarks.key;
+  QVERIFY2(
+      wait_until(
+          [&] { return controller.has_frame() && controller.current_frame().angle_deg[key] > 0.3; },
+          30000),
+      qPrintable(QString("key at %1 deg, t = %2 s")
+                     .arg(controller.current_frame().angle_deg[key])
+                     .arg(controller.current_frame().t)));
 }
 
 QTEST_MAIN(RunControlsTest)
