@@ -131,13 +131,19 @@ class PresetReader {
     return p * scale;
   }
 
-  /// A positive number no larger than `most` (a mass, an inertia: beyond, a slip of units).
+  /// `x`, read at `key`, no larger in size than `most`: beyond, no part of an action has it (a
+  /// slip of units or a typo, which had loaded and run).
+  double at_most(double x, const std::string& path, const char* key, double most) const {
+    if (std::abs(x) > most)
+      fail(child(path, key), std::string(x < 0.0 ? "must be at least -" : "must be at most ") +
+                                 format(most) + " (got " + format(x) + ")");
+    return x;
+  }
+
+  /// A positive number no larger than `most` (a mass, an inertia).
   double positive_at_most(const json& object, const std::string& path, const char* key,
                           double most) const {
-    const double x = positive(object, path, key);
-    if (x > most)
-      fail(child(path, key), "must be at most " + format(most) + " (got " + format(x) + ")");
-    return x;
+    return at_most(positive(object, path, key), path, key, most);
   }
 
   Vec2 point(const json& object, const std::string& path, const char* key, double scale) const {
@@ -396,7 +402,9 @@ void read_contacts(const PresetReader& r, const json& root, ActionModel& model) 
       contact.friction.slip_velocity =
           r.positive(*f, path + ".friction", "slip_velocity_mm_per_s") * kMm;
     }
-    contact.max_penetration = r.positive(item, path, "max_penetration_mm") * kMm;
+    // the deepest a felt is pressed before the run stops as unphysical: 25 mm is thicker than
+    // any felt of an action (the presets' deepest is 6 mm, the hammer's)
+    contact.max_penetration = r.positive_at_most(item, path, "max_penetration_mm", 25.0) * kMm;
     if (const auto x = unloading_above_loading(contact.law, contact.max_penetration)) {
       auto force = [&](const FeltCurve& k) {
         return format_fixed(exact_felt_force(k, *x), 2) + " N";
@@ -425,8 +433,15 @@ void read_springs_and_straps(const PresetReader& r, const json& root, ActionMode
     check_part_name_free(r, model, path, spring.name);
     spring.body = body_reference(r, model, item, path, "body");
     if (spring.body < 0) r.fail(path + ".body", "a joint spring acts on a body's joint");
-    spring.stiffness = r.nonnegative(item, path, "stiffness_n_mm_per_rad", 0.0) * 1e-3;
-    spring.preload = r.number(item, path, "preload_n_mm") * 1e-3;
+    // an action's springs: 10-30 N·mm/rad and preloads of a few tens of N·mm (presets); 1e4
+    // of either (10 N·m, 100 N at 10 cm) is beyond any of them
+    constexpr double kStrongestSpring = 1e4;
+    spring.stiffness = r.at_most(r.nonnegative(item, path, "stiffness_n_mm_per_rad", 0.0), path,
+                                 "stiffness_n_mm_per_rad", kStrongestSpring) *
+                       1e-3;
+    spring.preload =
+        r.at_most(r.number(item, path, "preload_n_mm"), path, "preload_n_mm", kStrongestSpring) *
+        1e-3;
     r.require_source(item, path);
     model.springs.push_back(spring);
   }
@@ -441,8 +456,10 @@ void read_springs_and_straps(const PresetReader& r, const json& root, ActionMode
       strap.point_a = r.point(item, path, "point_a_mm", kMm);
       strap.body_b = body_reference(r, model, item, path, "body_b");
       strap.point_b = r.point(item, path, "point_b_mm", kMm);
-      strap.slack = r.number(item, path, "slack_mm") * kMm;
-      strap.stiffness = r.positive(item, path, "stiffness_n_per_mm") / kMm;
+      // a strap's slack within the action's reach (±1 m), its stiffness within 500 times the
+      // bridle's 20 N/mm (upright preset)
+      strap.slack = r.at_most(r.number(item, path, "slack_mm"), path, "slack_mm", 1000.0) * kMm;
+      strap.stiffness = r.positive_at_most(item, path, "stiffness_n_per_mm", 1e4) / kMm;
       strap.damping = r.nonnegative(item, path, "damping_n_s_per_mm", 0.0) / kMm;
       r.require_source(item, path);
       model.straps.push_back(strap);
