@@ -25,6 +25,10 @@ struct Frame {
   /// The model this frame was computed with (adjusters change while the action runs).
   std::shared_ptr<const ActionModel> model;
   int run = 0;  ///< the run it belongs to (frames of a replaced run are dropped)
+  /// Inputs asked for from the window (a blow, a grab of the key) up to this serial number took
+  /// effect since the frame before, at simulated time inputs_applied_t (s); 0: none did.
+  int inputs_applied_through = 0;
+  double inputs_applied_t = 0.0;
 };
 
 }  // namespace pat::ui

@@ -84,24 +84,36 @@ void MeasurementService::run(std::shared_ptr<const ActionModel> model, int gener
       if (reading.problem.empty()) {
         const double value = reading.measured;
         const QString note = QString::fromStdString(reading.note);
-        QMetaObject::invokeMethod(this, [this, name, value, note, generation] {
-          if (generation_.load() == generation) emit measured(name, value, note);
-        });
+        QMetaObject::invokeMethod(
+            this,
+            [this, name, value, note, generation] {
+              if (generation_.load() == generation) emit measured(name, value, note);
+            },
+            Qt::QueuedConnection);
       } else {
         const QString reason = QString::fromStdString(reading.problem);
-        QMetaObject::invokeMethod(this, [this, name, reason, generation] {
-          if (generation_.load() == generation) emit failed(name, reason);
-        });
+        QMetaObject::invokeMethod(
+            this,
+            [this, name, reason, generation] {
+              if (generation_.load() == generation) emit failed(name, reason);
+            },
+            Qt::QueuedConnection);
       }
     }
   } catch (const std::exception& e) {
     const QString reason = QString::fromStdString(e.what());
-    QMetaObject::invokeMethod(this, [this, reason, generation] {
-      if (generation_.load() == generation) emit failed(QString(), reason);
-    });
+    QMetaObject::invokeMethod(
+        this,
+        [this, reason, generation] {
+          if (generation_.load() == generation) emit failed(QString(), reason);
+        },
+        Qt::QueuedConnection);
   }
-  // the next request, in the window's thread
-  QMetaObject::invokeMethod(this, [this] { start_next(); });
+  // the next request, in the window's thread, always queued: a task the pool had not begun when
+  // the window closed runs inside the destructor's waitForFinished, on the window's thread, where
+  // a direct call would start another task on the object being destroyed
+  QMetaObject::invokeMethod(
+      this, [this] { start_next(); }, Qt::QueuedConnection);
 }
 
 }  // namespace pat::ui

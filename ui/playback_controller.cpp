@@ -84,9 +84,18 @@ void PlaybackController::replay(std::vector<Frame> frames) {
   play();
 }
 
-void PlaybackController::note_input(double from_t, const QString& what, const std::string& spec) {
-  inputs_.push_back({from_t, what, spec});
+void PlaybackController::note_input(double from_t, const QString& what, const std::string& spec,
+                                    int request) {
+  inputs_.push_back({from_t, what, spec, request});
   emit inputChanged(what);
+}
+
+void PlaybackController::time_inputs(int through, double t) {
+  for (InputRecord& input : inputs_)
+    if (input.request > 0 && input.request <= through) {
+      input.from_t = t;
+      input.request = 0;
+    }
 }
 
 QString PlaybackController::input_at(double t) const {
@@ -126,32 +135,35 @@ void PlaybackController::change_model(std::shared_ptr<const ActionModel> model) 
 void PlaybackController::strike(const std::string& force_spec) {
   if (stopped_ || replay_) return;
   seek(history_.last_time());
-  worker_->request_blow(force_spec);
+  const int request = worker_->request_blow(force_spec);
   key_played_ = false;
-  note_input(history_.last_time(), tr("%1, struck").arg(input_in_words(force_spec)), force_spec);
+  note_input(history_.last_time(), tr("%1, struck").arg(input_in_words(force_spec)), force_spec,
+             request);
   play();
 }
 
 void PlaybackController::play_key(double angle_rad) {
   if (stopped_ || replay_) return;
-  if (!key_played_) note_input(history_.last_time(), tr("the key played with the mouse"));
-  key_played_ = true;
-  if (!playing_) {
-    seek(history_.last_time());
-    play();
-  }
+  // a grab plays the key from the run's end, as a blow does (playing behind it, after a rewind,
+  // the run would not reach the grab until the display had caught up)
+  if (!key_played_ || !playing_) seek(history_.last_time());
   // the key follows the mouse within 30 ms of wall time (shorter in simulated time when slowed);
   // the run keeps the angle within its own full dip (known to the worker as it builds the run,
   // here only once its start is reported: a key grabbed on the first frame drawn came before it)
   const double transition = std::clamp(0.03 * speed_, 2e-3, 0.03);
-  worker_->request_key_angle(std::max(angle_rad, 0.0), transition);
+  const int request = worker_->request_key_angle(std::max(angle_rad, 0.0), transition);
+  if (!key_played_)
+    note_input(history_.last_time(), tr("the key played with the mouse"), {}, request);
+  key_played_ = true;
+  play();
 }
 
 void PlaybackController::release_key() {
   if (stopped_ || replay_ || !key_played_) return;
-  worker_->request_blow("force:const:0");
+  seek(history_.last_time());
+  const int request = worker_->request_blow("force:const:0");
   key_played_ = false;
-  note_input(history_.last_time(), input_in_words("force:const:0"), "force:const:0");
+  note_input(history_.last_time(), input_in_words("force:const:0"), "force:const:0", request);
   play();
 }
 
@@ -262,10 +274,15 @@ double PlaybackController::sample_interval() const {
 
 void PlaybackController::drain() {
   std::vector<Frame> frames = worker_->take_frames();
-  for (Frame& f : frames)
-    if (f.run == run_id_) history_.append(std::move(f));
-  // a step waiting for its frame (a run started paused shows its first one in on_run_started):
-  // shown, or with more frames to step, the next one asked for
+  for (Frame& f : frames) {
+    if (f.run != run_id_) continue;
+    if (f.inputs_applied_through > 0) time_inputs(f.inputs_applied_through, f.inputs_applied_t);
+    history_.append(std::move(f));
+  }
+  // a run's first frame, shown as it comes (playing, the tick shows it): shown only once the
+  // run's start was reported, a step asked for in between was undone by it
+  if (!has_frame_ && !playing_ && !history_.empty() && !replay_) show_time(history_.first_time());
+  // a step waiting for its frame: shown, or with more frames to step, the next one asked for
   if (!playing_ && !history_.empty() && display_time_ > current_.t &&
       history_.last_time() >= display_time_ - 1e-12) {
     if (frames_to_step_ > 0 && !stopped_) {
@@ -323,13 +340,13 @@ void PlaybackController::show_time(double t) {
 
 void PlaybackController::on_run_started(int run_id, const QString& notes) {
   if (run_id != run_id_) return;
-  // what the input's reading means (a CSV's ignored column, its held end) goes with its name
-  if (!notes.isEmpty() && inputs_.size() == 1) {
+  // what the input's reading means (a CSV's ignored column, its held end) goes with its name,
+  // also when a blow or the mouse took over before this report came (said when it still drives)
+  if (!notes.isEmpty() && !inputs_.empty()) {
     inputs_.front().words += tr(" (%1)").arg(notes);
-    emit inputChanged(inputs_.front().words);
+    if (inputs_.size() == 1) emit inputChanged(inputs_.front().words);
   }
   drain();
-  if (!history_.empty()) show_time(history_.first_time());
 }
 
 void PlaybackController::on_run_failed(int run_id, const QString& message) {

@@ -120,8 +120,12 @@ class PlaybackController : public QObject {
   /// Paused: has the worker compute the frame after the last one recorded, for drain() to show.
   void ask_next_frame();
   /// Records what drives the key from simulated time `from_t` on (in words, and the SPEC where
-  /// there is one), and says so (inputChanged).
-  void note_input(double from_t, const QString& what, const std::string& spec = {});
+  /// there is one), and says so (inputChanged). `request`: the worker's serial number of the
+  /// request behind it, whose frames give the time it took effect (0: none; from_t is exact).
+  void note_input(double from_t, const QString& what, const std::string& spec = {},
+                  int request = 0);
+  /// Inputs asked for up to serial `through` took effect at simulated time `t`.
+  void time_inputs(int through, double t);
   void show_time(double t);
   double sample_interval() const;
 
@@ -144,6 +148,9 @@ class PlaybackController : public QObject {
     double from_t;  // simulated time, s
     QString words;
     std::string spec;  // "" where there is none (the mouse's play, a replay)
+    // the worker's request behind it, until its frames say when it took effect (0: timed): till
+    // then from_t is the time last drawn, up to a redraw's worth of run earlier
+    int request = 0;
   };
   std::vector<InputRecord> inputs_;  // in order
   double speed_ = 0.1;

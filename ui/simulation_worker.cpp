@@ -40,25 +40,31 @@ void SimulationWorker::request_model(std::shared_ptr<const ActionModel> model) {
   has_pending_.store(true);
 }
 
-void SimulationWorker::request_blow(const std::string& spec) {
+int SimulationWorker::request_blow(const std::string& spec) {
+  int serial = 0;
   {
     std::lock_guard lock(pending_mutex_);
     pending_blow_ = spec;
     pending_key_ = false;  // a blow (or the key let go) comes after the mouse's last move
+    serial = pending_input_serial_ = ++last_input_serial_;
     has_pending_.store(true);
   }
   schedule_compute();
+  return serial;
 }
 
-void SimulationWorker::request_key_angle(double angle_rad, double transition_s) {
+int SimulationWorker::request_key_angle(double angle_rad, double transition_s) {
+  int serial = 0;
   {
     std::lock_guard lock(pending_mutex_);
     pending_key_ = true;
     pending_key_angle_ = angle_rad;
     pending_key_transition_ = transition_s;
+    serial = pending_input_serial_ = ++last_input_serial_;
     has_pending_.store(true);
   }
   schedule_compute();
+  return serial;
 }
 
 std::vector<Frame> SimulationWorker::take_frames() {
@@ -113,6 +119,7 @@ void SimulationWorker::start_run(const RunSetup& setup) {
   sim_.reset();
   live_key_.reset();
   unreported_events_.clear();
+  applied_input_serial_ = 0;
   QString notes;
   try {
     SimulationOptions options;
@@ -151,7 +158,8 @@ void SimulationWorker::compute() {
   QElapsedTimer wall;
   wall.start();
   while (sim_->time() < target_time_.load() - 1e-12 && wall.nsecsElapsed() < kChunkNs) {
-    if (has_pending_.load()) apply_pending();
+    // a new run asked for meanwhile: what is pending is its (start_requested_run applies it)
+    if (has_pending_.load() && !apply_pending()) return;
     if (!sim_->step(target_time_.load())) break;
     for (int k = sim_->new_event_count(); k > 0; --k)
       unreported_events_.push_back(sim_->events()[sim_->events().size() - k].type);
@@ -172,13 +180,19 @@ bool SimulationWorker::frame_due() const {
   return sim_->time() >= last_frame_t_ + sample_interval_.load() - 1e-12;
 }
 
-void SimulationWorker::apply_pending() {
+bool SimulationWorker::apply_pending() {
   std::shared_ptr<const ActionModel> model;
   std::string blow;
   bool key = false;
   double key_angle = 0.0, key_transition = 0.0;
+  int serial = 0;
   {
     std::lock_guard lock(pending_mutex_);
+    // asked for after a new run was (request_run clears what came before): for that run, not
+    // for this one, which it replaces. Checked under the lock the request took, so that a
+    // request made as the run is asked for cannot slip in between
+    if (run_requested_.load()) return false;
+    serial = pending_input_serial_;
     model.swap(pending_model_);
     blow.swap(pending_blow_);
     key = pending_key_;
@@ -194,6 +208,7 @@ void SimulationWorker::apply_pending() {
       live_key_.reset();
       const InputContext context{full_dip_rad_};
       sim_->set_input(std::make_shared<ShiftedKeyInput>(parse_input_spec(blow, context), t));
+      stamp_input(serial);
     }
     if (key) {
       const int key_body = sim_->model().landmarks.key;
@@ -204,6 +219,7 @@ void SimulationWorker::apply_pending() {
         live_key_->set_target(key_angle);
         live_key_->update(t, key_transition);
         sim_->set_input(live_key_);
+        stamp_input(serial);
       } else {
         live_key_->set_target(key_angle);
         if (live_key_->update(t, key_transition)) sim_->set_input(live_key_);
@@ -212,6 +228,12 @@ void SimulationWorker::apply_pending() {
   } catch (const std::exception& e) {
     sim_->stop(e.what());
   }
+  return true;
+}
+
+void SimulationWorker::stamp_input(int serial) {
+  applied_input_serial_ = serial;
+  applied_input_t_ = sim_->time();
 }
 
 void SimulationWorker::record_frame() {
@@ -233,6 +255,9 @@ void SimulationWorker::record_frame() {
   frame.strap_tension_n = reading_.strap_tension;
   frame.events.swap(unreported_events_);
   frame.run = run_id_;
+  frame.inputs_applied_through = applied_input_serial_;
+  frame.inputs_applied_t = applied_input_t_;
+  applied_input_serial_ = 0;
   last_frame_t_ = frame.t;
 
   bool was_empty = false;

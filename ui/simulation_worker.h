@@ -39,10 +39,13 @@ class SimulationWorker : public QObject {
   void set_sample_interval(double seconds);
   void request_model(std::shared_ptr<const ActionModel> model);
   /// A blow struck now: `spec` (a force SPEC) starting at the current simulated time.
-  void request_blow(const std::string& spec);
-  /// The key follows `angle_rad` (from rest, positive down) from now on (mouse play); the
-  /// transition to each new target lasts `transition_s` of simulated time.
-  void request_key_angle(double angle_rad, double transition_s);
+  /// Returns the request's serial number: the first frame recorded after the worker applies it
+  /// carries it with the simulated time it took effect (Frame::inputs_applied_through).
+  int request_blow(const std::string& spec);
+  /// The key follows `angle_rad` (from rest, positive down) from now on (mouse play), kept
+  /// between rest and the run's full dip; the transition to each new target lasts
+  /// `transition_s` of simulated time. Returns the request's serial number, as request_blow.
+  int request_key_angle(double angle_rad, double transition_s);
 
   /// A new run wanted (any thread): the worker builds the latest one asked for when it gets to
   /// it, so that a slider dragged at rest (a restart at every move, each finding its rest state)
@@ -78,7 +81,11 @@ class SimulationWorker : public QObject {
  private:
   void schedule_compute();
   void start_requested_run();
-  void apply_pending();
+  /// Applies what was asked for at this step boundary; false (nothing taken) when a new run is
+  /// asked for: what is pending then waits for it.
+  bool apply_pending();
+  /// An input (a blow, a grab of the key) took effect now: the next frame says so.
+  void stamp_input(int serial);
   void record_frame();
   /// The run is a frame spacing (at the current playback speed) past its last frame.
   bool frame_due() const;
@@ -103,6 +110,11 @@ class SimulationWorker : public QObject {
   std::string pending_blow_;
   bool pending_key_ = false;
   double pending_key_angle_ = 0.0, pending_key_transition_ = 0.0;
+  int last_input_serial_ = 0;     // of the latest blow or key request (under pending_mutex_)
+  int pending_input_serial_ = 0;  // of the latest one pending (under pending_mutex_)
+  // worker thread: the latest input applied since the last frame, for the next frame
+  int applied_input_serial_ = 0;
+  double applied_input_t_ = 0.0;
 
   std::mutex frames_mutex_;
   std::vector<Frame> frames_;

@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "action_view.h"
@@ -73,6 +74,11 @@ class RunControlsTest : public QObject {
   void the_worker_builds_the_latest_run_asked_for_and_keeps_a_blow_struck_after();
   void runs_asked_for_while_the_worker_takes_one_are_never_lost();
   void a_key_played_as_the_run_starts_goes_down();
+  void a_blow_struck_as_a_new_run_is_asked_for_drives_the_new_run();
+  void a_step_pressed_before_the_run_start_is_reported_is_kept();
+  void a_recording_s_notes_survive_a_blow_struck_at_once();
+  void a_blow_is_dated_when_it_took_effect();
+  void grabbing_the_key_after_a_rewind_plays_it_from_the_run_s_end();
 };
 
 void RunControlsTest::event_loop_stays_responsive_while_the_worker_runs() {
@@ -872,6 +878,164 @@ void RunControlsTest::a_key_played_as_the_run_starts_goes_down() {
       qPrintable(QString("key at %1 deg, t = %2 s")
                      .arg(controller.current_frame().angle_deg[key])
                      .arg(controller.current_frame().t)));
+}
+
+// A blow struck just after a restart, while the worker is still stepping the run it replaces
+// (the status line then says it was struck): it drives the new run. The worker's step loop had
+// taken it into the old run, and the new run started without it. The worker stays in this
+// thread, and the restart is asked for from inside its loop (at a frame), every time.
+void RunControlsTest::a_blow_struck_as_a_new_run_is_asked_for_drives_the_new_run() {
+  pat::ui::SimulationWorker worker;
+  int started = 0;
+  connect(
+      &worker, &pat::ui::SimulationWorker::runStarted, &worker,
+      [&](int id, const QString&) { started = id; }, Qt::DirectConnection);
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  worker.request_run(pat::ui::RunSetup{model, "", 1});
+  QVERIFY(wait_until([&] { return started == 1; }));
+  worker.take_frames();
+  bool asked = false;
+  const QMetaObject::Connection at_frame = connect(
+      &worker, &pat::ui::SimulationWorker::framesAvailable, &worker,
+      [&] {
+        worker.take_frames();  // each frame then announces itself
+        if (asked) return;
+        asked = true;
+        worker.request_run(pat::ui::RunSetup{model, "", 2});
+        worker.request_blow("force:pulse:20:40");
+      },
+      Qt::DirectConnection);
+  worker.set_target_time(0.005);
+  QVERIFY(wait_until([&] { return started == 2; }));
+  disconnect(at_frame);
+  QVERIFY(asked);
+  worker.set_target_time(0.03);
+  double strongest = 0.0, reached = 0.0;
+  QVERIFY(wait_until(
+      [&] {
+        for (const pat::ui::Frame& f : worker.take_frames())
+          if (f.run == 2) strongest = std::max(strongest, f.finger_force_n), reached = f.t;
+        return reached >= 0.03 - 1e-9;
+      },
+      10000));
+  // the pulse is at its 20 N from 1 ms on (a 1 ms ramp)
+  QVERIFY2(strongest > 19.0,
+           qPrintable(QString("the new run's finger force peaked at %1 N").arg(strongest)));
+}
+
+namespace {
+
+// Calls `act` as the `nth` queued call reaches `target` (before it is delivered).
+class AtQueuedCall : public QObject {
+ public:
+  AtQueuedCall(QObject* target, int nth, std::function<void()> act)
+      : nth_(nth), act_(std::move(act)) {
+    target->installEventFilter(this);
+  }
+  int calls() const { return calls_; }
+
+ protected:
+  bool eventFilter(QObject*, QEvent* event) override {
+    if (event->type() == QEvent::MetaCall && ++calls_ == nth_) act_();
+    return false;
+  }
+
+ private:
+  int calls_ = 0;
+  int nth_;
+  std::function<void()> act_;
+};
+
+}  // namespace
+
+// A run restarted paused (a setting moved at rest): a step pressed once its first frame is drawn
+// but before its start is reported shows the next frame. The report used to show the run's first
+// frame again, and the step's frame, when it came, was not shown.
+void RunControlsTest::a_step_pressed_before_the_run_start_is_reported_is_kept() {
+  PlaybackController controller;
+  // the worker reports the first frame, then the start: the second queued call is the start
+  AtQueuedCall step_there(&controller, 2, [&] { controller.step_forward(); });
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  controller.restart(model, "");
+  QVERIFY(wait_until([&] { return controller.history().size() >= 2; }));
+  QCOMPARE(step_there.calls() >= 2, true);
+  QVERIFY(wait_until([&] { return controller.has_frame() && controller.current_frame().t > 0.0; },
+                     5000));
+  QVERIFY(controller.display_time() > 0.0);
+}
+
+// A recording's notes (its held end) reach the words of the run's input also when a blow was
+// struck before the run's start was reported (they had been dropped: the exported trace's
+// input_words lacked them).
+void RunControlsTest::a_recording_s_notes_survive_a_blow_struck_at_once() {
+  QTemporaryDir dir;
+  const QString path = dir.filePath("short.csv");
+  QFile file(path);
+  QVERIFY(file.open(QIODevice::WriteOnly));
+  file.write("time_s,key_force_n\n0,0\n0.002,20\n0.05,20\n");
+  file.close();
+  PlaybackController controller;
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  controller.restart(model, "csv:" + path.toStdString());
+  controller.strike("force:pulse:10:20");
+  QVERIFY2(wait_until([&] { return controller.inputs_text(true).contains("held after it"); }),
+          qPrintable(controller.inputs_text(true)));
+}
+
+// A blow struck while the run plays at real time is dated when it took effect in the run (the
+// worker's step), not at the last frame drawn, which lay 2-6 ms earlier at real time: "from t =
+// ..." in an exported trace named the blow too early, and Rewind, which goes to 2 ms before it,
+// showed the key already on its way down.
+void RunControlsTest::a_blow_is_dated_when_it_took_effect() {
+  PlaybackController controller;
+  controller.set_speed(1.0);
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  controller.restart(model, "");
+  controller.play();
+  QVERIFY(wait_until([&] { return controller.display_time() > 0.05; }));
+  controller.strike("force:const:20");
+  const QString struck = controller.input_at(1e9);
+  QVERIFY(struck.contains("struck"));
+  // the first frame with the finger on the key, and the one before it
+  std::size_t first = 0;
+  QVERIFY(wait_until([&] {
+    const pat::ui::FrameHistory& h = controller.history();
+    for (std::size_t i = 1; i < h.size(); ++i)
+      if (h.at(i).finger_force_n > 0.0) return (first = i) > 0;
+    return false;
+  }));
+  const double before = controller.history().at(first - 1).t;
+  const double pressed = controller.history().at(first).t;
+  // the blow began at a step after the frame before (or at its very time) and by the first
+  // frame with force: exact to the worker's frame spacing
+  QCOMPARE(controller.input_at(pressed), struck);
+  QVERIFY2(
+      controller.input_at(before - 1e-9) != struck,
+      qPrintable(QString("dated at or before %1 s: %2").arg(before).arg(controller.inputs_text())));
+}
+
+// After a rewind the run plays again from its history; a grab of the key goes to the run's end
+// (as a blow does), where the key goes down. The grab had waited until the playback had caught up
+// with the run (here 3 s at 1/10), the display still at the rewound time.
+void RunControlsTest::grabbing_the_key_after_a_rewind_plays_it_from_the_run_s_end() {
+  PlaybackController controller;
+  controller.set_speed(1.0);
+  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+  controller.restart(model, "");
+  controller.play();
+  QVERIFY(wait_until([&] { return controller.history().last_time() > 0.3; }));
+  controller.set_speed(0.1);
+  controller.seek(0.0);
+  controller.play();
+  const double end = controller.history().last_time();
+  controller.play_key(0.05);  // rad, near full dip (kept within it by the run)
+  QVERIFY(controller.display_time() >= end);
+  const int key = model->landmarks.key;
+  QVERIFY2(
+      wait_until(
+          [&] { return controller.has_frame() && controller.current_frame().angle_deg[key] > 0.3; },
+          10000),
+      qPrintable(QString("key at %1 deg").arg(controller.current_frame().angle_deg[key])));
 }
 
 QTEST_MAIN(RunControlsTest)
