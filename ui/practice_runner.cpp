@@ -46,12 +46,16 @@ void PracticeRunner::observe(std::shared_ptr<const ActionModel> hidden,
     // the engine reports every step (tens of thousands in a forte blow): the window hears of
     // each whole percent only, so its event queue never floods
     ProgressReporter reporter(
-        [this, stage, &run_index, &last_sent, runs](double f, const std::string&) {
+        [this, stage, &run_index, &last_sent, runs, generation](double f, const std::string&) {
           const double overall = (run_index + f) / runs;
           if (overall - last_sent >= 0.01) {
             last_sent = overall;
             QMetaObject::invokeMethod(
-                this, [this, overall, stage] { emit progress(overall, stage); },
+                this,
+                [this, overall, stage, generation] {
+                  // an exercise left behind: its stage is not the new one's
+                  if (generation == generation_) emit progress(overall, stage);
+                },
                 Qt::QueuedConnection);
           }
           return !cancelled_.load();
@@ -88,7 +92,11 @@ void PracticeRunner::measure(const PracticeSession& session) {
   future_ = QtConcurrent::run(background_pool(), [this, copy, generation] {
     try {
       QMetaObject::invokeMethod(
-          this, [this] { emit progress(0.0, tr("measuring")); }, Qt::QueuedConnection);
+          this,
+          [this, generation] {
+            if (generation == generation_) emit progress(0.0, tr("measuring"));
+          },
+          Qt::QueuedConnection);
       std::vector<CorrectionReading> readings = measure_corrections(*copy);
       if (cancelled_.load()) throw Cancelled();
       deliver(generation, [this, readings] { emit measured(readings); });

@@ -626,15 +626,19 @@ void PracticePanelTest::a_result_left_behind_by_a_new_exercise_is_dropped() {
   pat::ui::PracticeRunner runner;
   auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
   QSignalSpy observed(&runner, &pat::ui::PracticeRunner::observed);
-  runner.observe(model, model, pat::PracticeTest::Rest);
+  QSignalSpy progress(&runner, &pat::ui::PracticeRunner::progress);
+  runner.observe(model, model, pat::PracticeTest::ForteBlow);
   runner.wait();         // finished: its delivery waits in the event queue
   runner.reset_cache();  // a new exercise
   QTest::qWait(100);
   QCOMPARE(observed.count(), 0);
+  // nor does its progress (it had shown the old test's stage in the new exercise's bar)
+  QCOMPARE(progress.count(), 0);
   QVERIFY(!runner.running());
-  // the new exercise's own test is delivered
-  runner.observe(model, model, pat::PracticeTest::Rest);
+  // the new exercise's own test is delivered, with its progress
+  runner.observe(model, model, pat::PracticeTest::ForteBlow);
   QVERIFY(observed.wait(60000));
+  QVERIFY(progress.count() > 0);
 }
 
 QTEST_MAIN(PracticePanelTest)
