@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "core/error.h"
 #include "model/action_model.h"
@@ -174,33 +175,40 @@ TEST(PresetErrors, ParentsOrderNamesAndDuplicatePartsAreNamed) {
 // values no action has, a slip of units or a typo, are named (they had loaded and run, or
 // failed later as an action that does not come to rest)
 TEST(PresetErrors, ValuesBeyondAnyActionAreNamed) {
-  json far = preset_json("grand");
-  far["bodies"][4]["com_mm"] = {1e300, 0.0};
-  expect_preset_error(far, {"bodies[4]", "com_mm", "mm away"});
-  json heavy = preset_json("grand");
-  heavy["bodies"][2]["mass_g"] = 1e9;
-  expect_preset_error(heavy, {"bodies[2]", "mass_g", "at most"});
-  json inertia = preset_json("grand");
-  inertia["bodies"][2]["inertia_com_g_cm2"] = 1e12;
-  expect_preset_error(inertia, {"bodies[2]", "inertia_com_g_cm2", "at most"});
-  json spring = preset_json("grand");
-  spring["springs"][0]["stiffness_n_mm_per_rad"] = 1e300;
-  expect_preset_error(spring, {"springs[0]", "stiffness_n_mm_per_rad", "at most"});
-  json preload = preset_json("grand");
-  preload["springs"][2]["preload_n_mm"] = -1e300;
-  expect_preset_error(preload, {"springs[2]", "preload_n_mm", "at least -"});
-  json penetration = preset_json("grand");
-  penetration["contacts"][0]["max_penetration_mm"] = 1e300;
-  expect_preset_error(penetration, {"contacts[0]", "max_penetration_mm", "at most 25"});
-  json strap = preset_json("upright");
-  strap["straps"][0]["stiffness_n_per_mm"] = 1e300;
-  expect_preset_error(strap, {"straps[0]", "stiffness_n_per_mm", "at most"});
-  json slack = preset_json("upright");
-  slack["straps"][0]["slack_mm"] = 1e300;
-  expect_preset_error(slack, {"straps[0]", "slack_mm", "at most"});
-  json sign = preset_json("grand");
-  sign["bodies"][0]["trace_sign"] = 5;
-  expect_preset_error(sign, {"bodies[0]", "trace_sign", "1 or -1"});
+  struct Case {
+    const char* preset;
+    const char* field;  // a JSON pointer
+    json value;
+    std::vector<const char*> expected;  // in the message
+  };
+  const std::vector<Case> cases = {
+      {"grand", "/bodies/4/com_mm", {1e300, 0.0}, {"bodies[4]", "com_mm", "mm away"}},
+      {"grand", "/bodies/2/mass_g", 1e9, {"bodies[2]", "mass_g", "at most"}},
+      {"grand", "/bodies/2/inertia_com_g_cm2", 1e12, {"bodies[2]", "inertia_com_g_cm2", "at most"}},
+      {"grand",
+       "/springs/0/stiffness_n_mm_per_rad",
+       1e300,
+       {"springs[0]", "stiffness_n_mm_per_rad", "at most"}},
+      {"grand", "/springs/2/preload_n_mm", -1e300, {"springs[2]", "preload_n_mm", "at least -"}},
+      {"grand",
+       "/contacts/0/max_penetration_mm",
+       1e300,
+       {"contacts[0]", "max_penetration_mm", "at most 25"}},
+      {"upright",
+       "/straps/0/stiffness_n_per_mm",
+       1e300,
+       {"straps[0]", "stiffness_n_per_mm", "at most"}},
+      {"upright", "/straps/0/slack_mm", 1e300, {"straps[0]", "slack_mm", "at most"}},
+      {"grand", "/bodies/0/trace_sign", 5, {"bodies[0]", "trace_sign", "1 or -1"}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.field);
+    json preset = preset_json(c.preset);
+    preset[json::json_pointer(c.field)] = c.value;
+    const std::string message = parse_error(preset.dump(1));
+    expect_contains_all(message, {kBrokenName});
+    for (const char* part : c.expected) expect_contains_all(message, {part});
+  }
 }
 
 TEST(PresetErrors, NotAnObject) {

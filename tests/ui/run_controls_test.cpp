@@ -517,13 +517,24 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   QFile::remove(path);
 }
 
-void RunControlsTest::a_short_recording_says_its_end_is_held() {
-  QTemporaryDir dir;
+namespace {
+
+// A 50 ms recording of a 20 N press in `dir`, whose last force the run holds after it; "" if it
+// could not be written.
+QString write_short_recording(const QTemporaryDir& dir) {
   const QString path = dir.filePath("short.csv");
   QFile file(path);
-  QVERIFY(file.open(QIODevice::WriteOnly));
+  if (!file.open(QIODevice::WriteOnly)) return {};
   file.write("time_s,key_force_n\n0,0\n0.002,20\n0.05,20\n");
-  file.close();
+  return path;
+}
+
+}  // namespace
+
+void RunControlsTest::a_short_recording_says_its_end_is_held() {
+  QTemporaryDir dir;
+  const QString path = write_short_recording(dir);
+  QVERIFY(!path.isEmpty());
   MainWindow window;
   window.show();
   window.open_action("grand");
@@ -969,17 +980,14 @@ void RunControlsTest::a_step_pressed_before_the_run_start_is_reported_is_kept() 
 // input_words lacked them).
 void RunControlsTest::a_recording_s_notes_survive_a_blow_struck_at_once() {
   QTemporaryDir dir;
-  const QString path = dir.filePath("short.csv");
-  QFile file(path);
-  QVERIFY(file.open(QIODevice::WriteOnly));
-  file.write("time_s,key_force_n\n0,0\n0.002,20\n0.05,20\n");
-  file.close();
+  const QString path = write_short_recording(dir);
+  QVERIFY(!path.isEmpty());
   PlaybackController controller;
   const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
   controller.restart(model, "csv:" + path.toStdString());
   controller.strike("force:pulse:10:20");
   QVERIFY2(wait_until([&] { return controller.inputs_text(true).contains("held after it"); }),
-          qPrintable(controller.inputs_text(true)));
+           qPrintable(controller.inputs_text(true)));
 }
 
 // A blow struck while the run plays at real time is dated when it took effect in the run (the
