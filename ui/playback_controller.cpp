@@ -199,6 +199,9 @@ void PlaybackController::step_forward(int frames) {
 void PlaybackController::advance(int frames) {
   pause();
   if (history_.empty() || frames < 1) return;
+  // a run's first frame not drawn yet (it came while playing, and waits for the redraw): shown
+  // first, so that the step goes on from it and drain() does not show it over the step's frame
+  if (!has_frame_) show_time(history_.first_time());
   if (display_time_ > history_.last_time() + 1e-12 && !stopped_ && !replay_) {
     // a step still being computed: this one goes on from where that one will be
     frames_to_step_ += frames;

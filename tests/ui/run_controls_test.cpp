@@ -959,20 +959,26 @@ class AtQueuedCall : public QObject {
 
 }  // namespace
 
-// A run restarted paused (a setting moved at rest): a step pressed once its first frame is drawn
-// but before its start is reported shows the next frame. The report used to show the run's first
-// frame again, and the step's frame, when it came, was not shown.
+// A run restarted paused (a setting moved at rest) or playing (Start from rest): a step pressed
+// once its first frame is here but before its start is reported shows the next frame. The report
+// used to show the run's first frame again, and the step's frame, when it came, was not shown;
+// playing, the first frame waits for the redraw, and showing it then undid the step the same way.
 void RunControlsTest::a_step_pressed_before_the_run_start_is_reported_is_kept() {
-  PlaybackController controller;
-  // the worker reports the first frame, then the start: the second queued call is the start
-  AtQueuedCall step_there(&controller, 2, [&] { controller.step_forward(); });
-  const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
-  controller.restart(model, "");
-  QVERIFY(wait_until([&] { return controller.history().size() >= 2; }));
-  QCOMPARE(step_there.calls() >= 2, true);
-  QVERIFY(wait_until([&] { return controller.has_frame() && controller.current_frame().t > 0.0; },
-                     5000));
-  QVERIFY(controller.display_time() > 0.0);
+  for (const bool playing : {false, true}) {
+    PlaybackController controller;
+    // the worker reports the first frame, then the start: the second queued call is the start
+    AtQueuedCall step_there(&controller, 2, [&] { controller.step_forward(); });
+    const auto model = std::make_shared<const pat::ActionModel>(pat::load_action("grand"));
+    controller.restart(model, "");
+    if (playing) controller.play();
+    QVERIFY(wait_until([&] { return controller.history().size() >= 2; }));
+    QCOMPARE(step_there.calls() >= 2, true);
+    QVERIFY2(
+        wait_until([&] { return controller.has_frame() && controller.current_frame().t > 0.0; },
+                   5000),
+        playing ? "playing" : "paused");
+    QVERIFY(controller.display_time() > 0.0);
+  }
 }
 
 // A recording's notes (its held end) reach the words of the run's input also when a blow was
