@@ -282,8 +282,8 @@ void PlaybackController::drain() {
     if (f.inputs_applied_through > 0) time_inputs(f.inputs_applied_through, f.inputs_applied_t);
     history_.append(std::move(f));
   }
-  // a run's first frame, shown as it comes (playing, the tick shows it): shown only once the
-  // run's start was reported, a step asked for in between was undone by it
+  // a paused run's first frame is shown as it comes (playing, the tick shows it); shown later,
+  // when the run's start was reported, it undid a step asked for in between
   if (!has_frame_ && !playing_ && !history_.empty() && !replay_) show_time(history_.first_time());
   // a step waiting for its frame: shown, or with more frames to step, the next one asked for
   if (!playing_ && !history_.empty() && display_time_ > current_.t &&

@@ -158,7 +158,7 @@ void SimulationWorker::compute() {
   QElapsedTimer wall;
   wall.start();
   while (sim_->time() < target_time_.load() - 1e-12 && wall.nsecsElapsed() < kChunkNs) {
-    // a new run asked for meanwhile: what is pending is its (start_requested_run applies it)
+    // a new run asked for meanwhile: what is pending is for it (start_requested_run applies it)
     if (has_pending_.load() && !apply_pending()) return;
     if (!sim_->step(target_time_.load())) break;
     for (int k = sim_->new_event_count(); k > 0; --k)
