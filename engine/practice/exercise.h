@@ -46,7 +46,8 @@ struct Exercise {
 };
 
 /// The exercise drawn from `seed` for `model` (its kind selects the neglect ranges): `level`
-/// distinct settings, each offset by a magnitude in its neglect range with a random sign.
+/// distinct settings, each offset by a magnitude in its neglect range with a random sign. Seeds
+/// 1..n, n+1..2n, ... (n settings) hide each setting once as their first, in a shuffled order.
 /// Throws InputError for a level other than 1 or 2.
 Exercise generate_exercise(const ActionModel& model, const std::string& action, std::uint64_t seed,
                            int level);
