@@ -420,14 +420,18 @@ bool AnalysesPanel::run(const QString& name) {
   if (index < 0 || !model || runner_->running()) return false;
   choice_->setCurrentIndex(index);
   const AnalysisEntry& entry = catalogue_[choice_->itemData(index).toInt()];
-  clear_result();
   AnalysisTask task;
   try {
     task = entry.make(model, settings());
   } catch (const std::exception& e) {  // settings that cannot run: said next to the form
-    set_summary(tr("%1: %2").arg(entry.name, QString::fromStdString(e.what())));
+    // the result shown stays (an 80 s table, not yet exported, must not go for a typo)
+    QString message = tr("%1: %2").arg(entry.name, QString::fromStdString(e.what()));
+    if (!result_title_.isEmpty())
+      message += "\n" + tr("Nothing was run; shown below: the last %1 result.").arg(result_title_);
+    set_summary(message);
     return false;
   }
+  clear_result();
   set_summary(tr("%1: running…").arg(entry.name));
   set_busy(true);
   running_action_ = entry.on_the_window_action ? QString::fromStdString(model->kind) : QString();

@@ -31,13 +31,19 @@ void AnalysisRunner::start(const QString& title, AnalysisTask task) {
     auto throttle = std::make_shared<std::pair<std::mutex, QElapsedTimer>>();
     throttle->second.start();
     const ProgressCallback report = [this, throttle](double fraction, const std::string& stage) {
+      // cancelled: no more progress (queued after the panel's "cancelling…", it had said "5 of
+      // 15" again, as if the cancel had not been heard)
+      if (cancel_requested_.load()) return false;
       {
         std::lock_guard<std::mutex> lock(throttle->first);
         if (throttle->second.elapsed() >= 30 || fraction >= 1.0) {
           throttle->second.restart();
           const QString text = QString::fromStdString(stage);
           QMetaObject::invokeMethod(
-              this, [this, fraction, text] { emit progress(fraction, text); },
+              this,
+              [this, fraction, text] {
+                if (!cancel_requested_.load()) emit progress(fraction, text);
+              },
               Qt::QueuedConnection);
         }
       }

@@ -16,6 +16,7 @@
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTest>
+#include <QThread>
 #include <QTimer>
 #include <thread>
 
@@ -36,6 +37,7 @@ class AnalysesPanelTest : public QObject {
  private slots:
   void runner_reports_progress_and_result();
   void runner_cancels_and_reports_failures();
+  void a_cancelled_runner_reports_no_more_progress();
   void every_analysis_runs_from_the_window_for_both_actions();
   void cancel_from_the_panel_keeps_the_window_live();
   void table_exports_as_csv();
@@ -82,6 +84,28 @@ void AnalysesPanelTest::runner_cancels_and_reports_failures() {
   });
   QVERIFY(wait_until([&] { return failed.count() == 1; }, 2000));
   QVERIFY(failed.first().at(1).toString().contains("diverged"));
+}
+
+// Once cancelled, a task says no more progress: reports queued before the cancel, or made after
+// it, had put "5 of 15" back over the panel's "cancelling…", as if the cancel went unheard.
+void AnalysesPanelTest::a_cancelled_runner_reports_no_more_progress() {
+  AnalysisRunner runner;
+  QSignalSpy progress(&runner, &AnalysisRunner::progress);
+  QSignalSpy cancelled(&runner, &AnalysisRunner::cancelled);
+  runner.start("forever", [](const pat::ProgressCallback& report) -> AnalysisResult {
+    for (;;) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      // a whole fraction passes the runner's 30 ms throttle: every report is sent
+      if (!report(1.0, "waiting")) throw pat::Cancelled();
+    }
+  });
+  QVERIFY(wait_until([&] { return progress.count() >= 3; }, 5000));
+  // reports keep coming while this thread does not look: some wait in its queue at the cancel
+  QThread::msleep(20);
+  const int heard = progress.count();
+  runner.cancel();
+  QVERIFY(wait_until([&] { return cancelled.count() == 1; }, 2000));
+  QCOMPARE(progress.count(), heard);
 }
 
 void AnalysesPanelTest::every_analysis_runs_from_the_window_for_both_actions() {
@@ -202,6 +226,18 @@ void AnalysesPanelTest::table_exports_as_csv() {
   QVERIFY2(panel->description().contains("Shown below"), qPrintable(panel->description()));
   QVERIFY(panel->choose("Technician's measurements"));
   QVERIFY2(!panel->description().contains("Shown below"), qPrintable(panel->description()));
+  // settings that cannot run leave the result shown (it had been cleared before they were
+  // checked: an 80 s table not yet exported, gone for a typo)
+  const int rows = panel->table()->rowCount();
+  QVERIFY(rows > 0);
+  QVERIFY(panel->choose("Repetition-frequency sweep"));
+  QVERIFY(panel->set_parameter("f_start_hz", 15.0));
+  QVERIFY(panel->set_parameter("f_max_hz", 10.0));
+  QVERIFY(!panel->run("Repetition-frequency sweep"));
+  QCOMPARE(panel->table()->rowCount(), rows);
+  QVERIFY2(panel->summary().contains("Nothing was run; shown below: the last Technician's "
+                                     "measurements result"),
+           qPrintable(panel->summary()));
 }
 
 // Upright vs grand in the dock's width: its long quantity names had pushed the values to "…",
