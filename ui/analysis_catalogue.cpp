@@ -385,12 +385,16 @@ AnalysisEntry key_fall_test() {
                     .arg(number(r.fall_time_s * 1e3))
                     .arg(number(r.impact_velocity_mps))
                     .arg(r.bounces);
-      result.table = {{QObject::tr("fall time"), number(r.fall_time_s * 1e3), "ms"},
-                      {QObject::tr("fall distance"), number(r.fall_distance_mm), "mm"},
-                      {QObject::tr("impact velocity"), number(r.impact_velocity_mps), "m/s"},
-                      {QObject::tr("bounces"), QString::number(r.bounces), ""},
-                      {QObject::tr("first rebound"), number(r.first_rebound_mm), "mm"},
-                      {QObject::tr("final dip"), number(r.final_dip_mm), "mm"}};
+      // a key that never reaches the punching has no fall time nor impact (the engine's -1)
+      const bool landed = r.fall_time_s >= 0;
+      const QString none = QObject::tr("never reached");
+      result.table = {
+          {QObject::tr("fall time"), landed ? number(r.fall_time_s * 1e3) : none, "ms"},
+          {QObject::tr("fall distance"), number(r.fall_distance_mm), "mm"},
+          {QObject::tr("impact velocity"), landed ? number(r.impact_velocity_mps) : none, "m/s"},
+          {QObject::tr("bounces"), QString::number(r.bounces), ""},
+          {QObject::tr("first rebound"), number(r.first_rebound_mm), "mm"},
+          {QObject::tr("final dip"), number(r.final_dip_mm), "mm"}};
       result.plots.push_back(
           time_plot(QObject::tr("Key front"), QObject::tr("key-front dip (mm)"),
                     {trace_series(r.trace, "key_front_dip_mm", QObject::tr("dip"))}));
