@@ -178,7 +178,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   connect(runner_, &AnalysisRunner::finished, this,
           [this](const QString& title, const AnalysisResult& result) {
             set_busy(false);
-            show_result(title, result, running_action_);
+            show_result(title, result, running_action_, running_model_);
           });
   connect(runner_, &AnalysisRunner::cancelled, this, [this](const QString& title) {
     set_busy(false);
@@ -435,6 +435,7 @@ bool AnalysesPanel::run(const QString& name) {
   set_summary(tr("%1: running…").arg(entry.name));
   set_busy(true);
   running_action_ = entry.on_the_window_action ? QString::fromStdString(model->kind) : QString();
+  running_model_ = entry.on_the_window_action ? model : nullptr;
   runner_->start(entry.name, std::move(task));
   return true;
 }
@@ -488,15 +489,17 @@ void AnalysesPanel::clear_result() {
   grids_.clear();
   result_ = AnalysisResult{};
   result_title_.clear();
+  result_model_.reset();
   export_plots_->setEnabled(false);
   export_table_->setEnabled(false);
   export_report_->hide();
 }
 
 void AnalysesPanel::show_result(const QString& title, const AnalysisResult& result,
-                                const QString& action) {
+                                const QString& action, std::shared_ptr<const ActionModel> model) {
   clear_result();
   result_title_ = title;
+  result_model_ = std::move(model);
   // the result names its action: it stays on show when the window changes to the other one
   const QString heading = action.isEmpty() ? title : tr("%1 (%2)").arg(title, action);
   set_summary(result.summary.isEmpty() ? heading : heading + ": " + result.summary);

@@ -73,9 +73,14 @@ class AnalysesPanel : public QWidget {
   void write_report(const QString& folder) const;
   bool has_report() const { return static_cast<bool>(result_.write_report); }
   /// Shows a result computed elsewhere (the deregulation demo) as if run here.
-  /// `action` (the kind it ran on, e.g. "grand"), when given, is named in the summary.
+  /// `action` (the kind it ran on, e.g. "grand"), when given, is named in the summary; `model`
+  /// is the action it ran on, as result_model() gives it.
   void show_result(const QString& title, const AnalysisResult& result,
-                   const QString& action = QString());
+                   const QString& action = QString(),
+                   std::shared_ptr<const ActionModel> model = nullptr);
+  /// The action the shown result ran on, with its settings as they were at Run (they may have
+  /// moved since); null when none is shown or the result is not one action's (Upright vs grand).
+  std::shared_ptr<const ActionModel> result_model() const { return result_model_; }
   /// Writes the result table as CSV (quantity,value,unit), and each of the result's other
   /// tables (a sweep's cycles, a diagnosis's candidates) beside it as PATH-STEM_TABLE.csv with
   /// its own columns. Returns the files written. Throws InputError naming the file.
@@ -141,6 +146,8 @@ class AnalysesPanel : public QWidget {
   AnalysisResult result_;
   QString result_title_;
   QString running_action_;  ///< the kind of action the running analysis runs on
+  std::shared_ptr<const ActionModel> running_model_;  ///< the action it runs on (null: both)
+  std::shared_ptr<const ActionModel> result_model_;
 };
 
 }  // namespace pat::ui

@@ -1140,7 +1140,7 @@ void MainWindow::show_deregulation_result(const DeregulationResult& result) {
                          {},
                          {},
                          {}});
-  analyses_->show_result(tr("Deregulation of %1").arg(setting), shown);
+  analyses_->show_result(tr("Deregulation of %1").arg(setting), shown, QString(), demo_model_);
   show_analyses();
 }
 
@@ -1292,15 +1292,16 @@ void MainWindow::export_to_chosen_file(const QString& what, const QString& filte
 
 std::map<std::string, std::string> MainWindow::export_metadata(bool run_plots) const {
   std::map<std::string, std::string> metadata;
-  if (!model_) return metadata;
-  metadata["action"] = model_->kind;
-  metadata["preset"] = model_->source_file;
-  // the run's settings and input; an analysis may have run before a slider moved, so its
-  // settings are not known here. During an exercise the turned adjusters are what the student
-  // is looking for
+  // the run's action, or the one the analysis shown ran on, with its settings at Run (the window
+  // may have opened another action or moved a slider since); none for Upright vs grand
+  const std::shared_ptr<const ActionModel> model = run_plots ? model_ : analyses_->result_model();
+  if (!model) return metadata;
+  metadata["action"] = model->kind;
+  metadata["preset"] = model->source_file;
+  // during an exercise the turned adjusters are what the student is looking for
+  metadata["settings"] =
+      practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model);
   if (run_plots) {
-    metadata["settings"] =
-        practising_ ? "hidden (practice exercise)" : adjuster_settings_text(*model_);
     // every input of the run the plots hold: a blow struck into it is part of its record. By
     // their SPECs (a run of one input gives one SPEC, which `diagnose` reads back from an
     // exported trace), and in words beside them

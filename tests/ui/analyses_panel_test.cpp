@@ -41,6 +41,7 @@ class AnalysesPanelTest : public QObject {
   void every_analysis_runs_from_the_window_for_both_actions();
   void cancel_from_the_panel_keeps_the_window_live();
   void table_exports_as_csv();
+  void plot_exports_name_the_action_the_analysis_ran_on();
   void long_names_and_summaries_leave_the_values_and_plots_readable();
   void plots_replaced_while_the_file_is_chosen_are_not_written();
 };
@@ -238,6 +239,28 @@ void AnalysesPanelTest::table_exports_as_csv() {
   QVERIFY2(panel->summary().contains("Nothing was run; shown below: the last Technician's "
                                      "measurements result"),
            qPrintable(panel->summary()));
+}
+
+// An analysis's exported plots name the action and settings it ran with, not the window's at the
+// export: run on the grand with the let-off moved, exported after the upright was opened, they
+// had said "action: upright" and named no settings.
+void AnalysesPanelTest::plot_exports_name_the_action_the_analysis_ran_on() {
+  MainWindow window;
+  window.open_action("grand");
+  window.set_adjuster("let_off", 0.5);
+  pat::ui::AnalysesPanel* panel = window.analyses();
+  QVERIFY(panel->run("Technician's measurements"));
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 60000));
+  window.open_action("upright");
+  const std::map<std::string, std::string> exported = window.export_metadata(false);
+  QCOMPARE(exported.at("action"), std::string("grand"));
+  QCOMPARE(exported.at("settings"), std::string("let_off=0.5mm"));
+  QVERIFY(exported.at("preset").find("grand.json") != std::string::npos);
+  QVERIFY(!exported.count("input"));  // an analysis has no run input
+  // Upright vs grand is no one action's: nothing named
+  QVERIFY(panel->run("Upright vs grand"));
+  QVERIFY(wait_until([&] { return !panel->runner()->running(); }, 120000));
+  QVERIFY(window.export_metadata(false).empty());
 }
 
 // Upright vs grand in the dock's width: its long quantity names had pushed the values to "…",

@@ -489,9 +489,8 @@ void RunControlsTest::a_malformed_csv_keeps_the_run_on_screen() {
   QCOMPARE(exported.at("input"), std::string("force:pulse:20:40"));
   QCOMPARE(exported.at("input_words"), std::string("a 20 N blow held 40 ms"));
   QVERIFY(exported.at("preset").find("grand.json") != std::string::npos);
-  // an analysis has no run input, and may have run before a slider moved
-  QVERIFY(!window.export_metadata(false).count("input"));
-  QVERIFY(!window.export_metadata(false).count("settings"));
+  // no analysis result shown: its plots have nothing to name
+  QVERIFY(window.export_metadata(false).empty());
   // a blow struck on the run that went on: the refusal's red banner is old news (it stayed over
   // the next run), and so it is when a paused run is played on
   c->strike("force:pulse:10:20");
