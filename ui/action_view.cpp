@@ -297,8 +297,10 @@ void ActionView::fit() {
       box->low = box->low.cwiseMin(p);
       box->high = box->high.cwiseMax(p);
     };
+    // the parts where the preset draws them (the action at rest), not where they are now: a
+    // refit during a blow had framed the risen hammer a little differently each time
     for (int b = 0; b < model_->dofs(); ++b)
-      for (const Vec2& p : model_->bodies[b].outline) include(body_point(b, p));
+      for (const Vec2& p : model_->bodies[b].outline) include(p);
     for (const Fixture& f : model_->fixtures)
       for (const Vec2& p : f.outline) include(p);
     margin = 0.06;
