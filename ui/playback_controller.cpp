@@ -199,9 +199,6 @@ void PlaybackController::step_forward(int frames) {
 void PlaybackController::advance(int frames) {
   pause();
   if (history_.empty() || frames < 1) return;
-  // a run's first frame not drawn yet (it came while playing, and waits for the redraw): shown
-  // first, so that the step goes on from it and drain() does not show it over the step's frame
-  if (!has_frame_) show_time(history_.first_time());
   if (display_time_ > history_.last_time() + 1e-12 && !stopped_ && !replay_) {
     // a step still being computed: this one goes on from where that one will be
     frames_to_step_ += frames;
@@ -282,9 +279,9 @@ void PlaybackController::drain() {
     if (f.inputs_applied_through > 0) time_inputs(f.inputs_applied_through, f.inputs_applied_t);
     history_.append(std::move(f));
   }
-  // a paused run's first frame is shown as it comes (playing, the tick shows it); shown later,
-  // when the run's start was reported, it undid a step asked for in between
-  if (!has_frame_ && !playing_ && !history_.empty() && !replay_) show_time(history_.first_time());
+  // a run's first frame is shown as it comes, paused or playing: shown later (when the run's
+  // start was reported, or at the next redraw), it undid a step asked for in between
+  if (!has_frame_ && !history_.empty() && !replay_) show_time(history_.first_time());
   // a step waiting for its frame: shown, or with more frames to step, the next one asked for
   if (!playing_ && !history_.empty() && display_time_ > current_.t &&
       history_.last_time() >= display_time_ - 1e-12) {
