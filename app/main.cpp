@@ -94,8 +94,8 @@ effects (--effect NAME=VALUE): shank_flex=HZ  backcheck_compliance=N_PER_MM
 --plot FILE writes the command's plots, stacked (simulate: key and hammer angles, hammer-string
 gap, finger force; the others: what they computed, e.g. the measured setting over time, strikes
 per cycle against frequency, each setting's effect); the format comes from the extension:
-.png .pdf .svg, or .csv for the plotted columns (the plots over the first plot's x axis; those
-over another x go to FILE's stem + _<x column>.csv beside it).
+.png .pdf .svg, or .csv for the plotted columns (one table per set of plots with the same x
+values; the others go beside FILE as its stem + _<x column>.csv, or + _<plot title>.csv).
 --key-column N (import-raw) turns the key's own sensor, column N of the same recording, into
 key angles with its rows of the --calibration points (their 'sensor' names the columns in order);
 diagnose then drives the model with that key motion instead of an estimated finger force.

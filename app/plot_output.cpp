@@ -59,47 +59,24 @@ bool is_csv_plot_path(const std::string& path) {
 void write_plots(const std::string& path, const std::vector<PlotSpec>& plots,
                  const std::vector<KeptFile>& keep) {
   if (plots.empty()) throw InputError("--plot " + path + ": the run gave nothing to plot");
-  auto write_group = [](const std::string& file, const std::vector<const PlotSpec*>& group) {
-    std::vector<ui::AnalysisPlot> converted;
-    for (const PlotSpec* spec : group) converted.push_back(to_analysis_plot(*spec));
-    ui::write_analysis_plots(converted, text(file));
+  std::vector<ui::AnalysisPlot> converted;
+  for (const PlotSpec& spec : plots) converted.push_back(to_analysis_plot(spec));
+  // a CSV holds one table: plots whose rows differ (another x axis, other x values) go to further
+  // files beside PATH (said on stderr, which --json leaves to notes); those names are known only
+  // from the plots, so they are checked against the files kept before anything is written
+  const auto approve = [&](const QStringList& files) {
+    for (int f = 1; f < files.size(); ++f)
+      for (const auto& [what, kept] : keep)
+        if (same_file(files[f].toStdString(), kept))
+          throw InputError("--plot " + path + ": some of its plots go to " +
+                           files[f].toStdString() + ", which is " + what +
+                           "; nothing was plotted, so give --plot another name");
+    return true;
   };
-  std::vector<const PlotSpec*> all;
-  for (const PlotSpec& spec : plots) all.push_back(&spec);
-  if (!is_csv_plot_path(path)) {  // a picture stacks every plot
-    write_group(path, all);
-    return;
-  }
-  // a CSV holds one x axis: the plots over the first plot's x go to PATH, those over each other
-  // x to STEM_<x column>.csv beside it (said on stderr, which --json leaves to notes)
-  std::vector<std::string> x_columns;  // in the order the plots first use them
-  for (const PlotSpec& spec : plots)
-    if (std::find(x_columns.begin(), x_columns.end(), spec.x_column) == x_columns.end())
-      x_columns.push_back(spec.x_column);
-  const std::filesystem::path file(path);
-  std::vector<std::string> group_paths;
-  for (std::size_t g = 0; g < x_columns.size(); ++g) {
-    group_paths.push_back(
-        g == 0
-            ? path
-            : (file.parent_path() / (file.stem().string() + "_" + x_columns[g] + ".csv")).string());
-    for (const auto& [what, kept] : keep) {
-      if (g > 0 && same_file(group_paths[g], kept))
-        throw InputError("--plot " + path + ": its plots over " + x_columns[g] + " go to " +
-                         group_paths[g] + ", which is " + what +
-                         "; nothing was plotted, so give --plot another name");
-    }
-  }
-  for (std::size_t g = 0; g < x_columns.size(); ++g) {
-    std::vector<const PlotSpec*> group;
-    for (const PlotSpec* spec : all)
-      if (spec->x_column == x_columns[g]) group.push_back(spec);
-    const std::string& group_path = group_paths[g];
-    write_group(group_path, group);
-    if (g > 0)
-      std::cerr << "note: the plots over " << x_columns[g] << " went to " << group_path
-                << " (a CSV holds one x axis)\n";
-  }
+  const QStringList written = ui::write_analysis_plots(converted, text(path), {}, approve);
+  for (int f = 1; f < written.size(); ++f)
+    std::cerr << "note: plots went to " << written[f].toStdString()
+              << " too (a CSV holds one table: plots with other x values have their own)\n";
 }
 #else
 void check_plot_path(const std::string& path) {

@@ -22,8 +22,8 @@ bool is_csv_plot_path(const std::string& path);
 /// A file that a plot's second CSV must not replace, with the words that name it.
 using KeptFile = std::pair<std::string, std::string>;  ///< (words, path)
 
-/// Writes the plots, stacked top to bottom (a CSV: those over the first plot's x axis, and those
-/// over each other x to STEM_<x column>.csv beside it; those names are known only from the
+/// Writes the plots, stacked top to bottom (a CSV: one table per set of plots with the same x
+/// values, the others beside PATH: ui::plot_csv_files; those names are known only from the
 /// plots, so they are checked here, before anything is written, against `keep`: the command's
 /// inputs and other outputs). Throws InputError naming the file when it cannot be written, when
 /// a second CSV would replace a kept file, or when there is nothing to plot.
@@ -39,7 +39,8 @@ class PlotOption {
   PlotOption(const CommandLine&&) = delete;  // it keeps the reference: no temporaries
   bool given() const { return !path_.empty(); }
   const std::string& path() const { return path_; }
-  /// A CSV export: one table per x axis (write_plots puts the plots over another x beside it).
+  /// A CSV export: one table per set of plots with the same x values (write_plots puts the
+  /// others beside it).
   bool writes_csv() const { return given() && is_csv_plot_path(path_); }
   /// Writes when given; returns whether it wrote.
   bool write(const std::vector<PlotSpec>& plots) const;

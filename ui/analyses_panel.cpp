@@ -30,6 +30,7 @@
 #include "export_folder.h"
 #include "plot_export.h"
 #include "plot_panel.h"
+#include "result_settings_note.h"
 #include "save_paths.h"
 
 namespace pat::ui {
@@ -43,14 +44,6 @@ QString csv_field(const QString& text) {
 }
 
 // "Strikes per cycle" → "strikes_per_cycle": a file name for a plot's title.
-QString file_stem(const QString& title) {
-  QString stem;
-  for (const QChar c : title.toLower()) stem += c.isLetterOrNumber() ? c : QChar('_');
-  while (stem.contains("__")) stem.replace("__", "_");
-  while (stem.endsWith('_')) stem.chop(1);
-  return stem;
-}
-
 QStringList checked_items(const QListWidget* list) {
   QStringList names;
   for (int i = 0; i < list->count(); ++i)
@@ -103,6 +96,11 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   summary_scroll_->setWidgetResizable(true);
   summary_scroll_->setFrameShape(QFrame::NoFrame);
   summary_scroll_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  since_run_ = new QLabel(this);
+  since_run_->setObjectName("analysis_since_run");
+  since_run_->setWordWrap(true);
+  since_run_->setStyleSheet("color: #8a4b00;");  // dark amber: a caution, not an error
+  since_run_->hide();
   table_ = new QTableWidget(0, 3, this);
   table_->setHorizontalHeaderLabels({tr("quantity"), tr("value"), tr("unit")});
   table_->horizontalHeader()->setSectionResizeMode(1, QHeaderView::Stretch);
@@ -155,6 +153,7 @@ AnalysesPanel::AnalysesPanel(std::function<std::shared_ptr<const ActionModel>()>
   layout->addWidget(progress_);
   layout->addWidget(stage_);
   layout->addWidget(summary_scroll_);
+  layout->addWidget(since_run_);
   layout->addWidget(results_, 1);
   layout->addStretch(0);
   layout->addLayout(export_row);
@@ -228,6 +227,7 @@ void AnalysesPanel::set_model(const ActionModel& model) {
   const int again = choice_->findText(previous);
   if (again >= 0) choice_->setCurrentIndex(again);
   rebuild_form(&model);
+  compare_with_window();
 }
 
 const AnalysisEntry* AnalysesPanel::chosen_entry() const {
@@ -490,6 +490,8 @@ void AnalysesPanel::clear_result() {
   result_ = AnalysisResult{};
   result_title_.clear();
   result_model_.reset();
+  since_run_->clear();
+  since_run_->hide();
   export_plots_->setEnabled(false);
   export_table_->setEnabled(false);
   export_report_->hide();
@@ -549,6 +551,19 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
   export_plots_->setEnabled(!plots_.empty());
   export_table_->setEnabled(table_->rowCount() > 0);
   export_report_->setVisible(static_cast<bool>(result.write_report));
+  compare_with_window();  // a setting moved while it ran
+}
+
+void AnalysesPanel::compare_with_window() {
+  const std::shared_ptr<const ActionModel> window = current_model_ ? current_model_() : nullptr;
+  const QString note =
+      result_model_ && window ? settings_moved_note(*result_model_, *window) : QString();
+  since_run_->setText(note);
+  since_run_->setVisible(!note.isEmpty());
+}
+
+QString AnalysesPanel::since_run_note() const {
+  return since_run_->text();
 }
 
 void AnalysesPanel::add_grid(const AnalysisGrid& grid) {

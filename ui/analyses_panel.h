@@ -78,6 +78,12 @@ class AnalysesPanel : public QWidget {
   void show_result(const QString& title, const AnalysisResult& result,
                    const QString& action = QString(),
                    std::shared_ptr<const ActionModel> model = nullptr);
+  /// Says under the result when the window's action (current_model) is no longer the one the
+  /// result ran on: a setting moved since Run, another action or preset. The window calls it
+  /// when its action changes; a result shown calls it too.
+  void compare_with_window();
+  /// That sentence (empty when the result is the window's action as it is).
+  QString since_run_note() const;
   /// The action the shown result ran on, with its settings as they were at Run (they may have
   /// moved since); null when none is shown or the result is not one action's (Upright vs grand).
   std::shared_ptr<const ActionModel> result_model() const { return result_model_; }
@@ -121,6 +127,7 @@ class AnalysesPanel : public QWidget {
   QLabel* stage_;
   QLabel* summary_;
   QScrollArea* summary_scroll_;  ///< holds the summary, at most a few lines high
+  QLabel* since_run_;            ///< compare_with_window's sentence, hidden when empty
   /// Sets the summary, its scroll area as high as its text up to six lines.
   void set_summary(const QString& text);
   void fit_summary();

@@ -170,11 +170,19 @@ AnalysisEntry impact_velocity_range() {
                          {}};
       AnalysisSeries v{QObject::tr("impact velocity"), "impact_velocity_mps", {}, {}, false};
       AnalysisSeries t{QObject::tr("time to impact"), "time_to_impact_ms", {}, {}, false};
+      // the table: the speed under its unit (the time had shared its cell: "4.2 m/s after 31
+      // ms" under m/s); both, with the force, in the grid of the blows
+      AnalysisGrid blows{QObject::tr("Blows"),
+                         {QObject::tr("key force (N)"), QObject::tr("impact velocity (m/s)"),
+                          QObject::tr("time to impact (ms)")},
+                         {}};
       double lo = INFINITY, hi = -INFINITY;
       for (std::size_t i = 0; i < n; ++i) {
         if (std::isnan(velocity[i])) {
           result.table.push_back(
               {QObject::tr("%1 N").arg(number(forces[i])), QObject::tr("no strike"), ""});
+          blows.rows.push_back(
+              {number(forces[i]), QObject::tr("no strike"), QObject::tr("no strike")});
           continue;
         }
         v.x.push_back(forces[i]);
@@ -184,10 +192,10 @@ AnalysisEntry impact_velocity_range() {
         lo = std::min(lo, velocity[i]);
         hi = std::max(hi, velocity[i]);
         result.table.push_back(
-            {QObject::tr("%1 N").arg(number(forces[i])),
-             QObject::tr("%1 m/s after %2 ms").arg(number(velocity[i])).arg(number(time_ms[i])),
-             "m/s"});
+            {QObject::tr("%1 N").arg(number(forces[i])), number(velocity[i]), "m/s"});
+        blows.rows.push_back({number(forces[i]), number(velocity[i]), number(time_ms[i])});
       }
+      result.grids.push_back(blows);
       vplot.series.push_back(v);
       tplot.series.push_back(t);
       result.plots = {vplot, tplot};
@@ -418,11 +426,18 @@ AnalysisEntry touchweight() {
     return [model](const ProgressCallback& progress) {
       const TouchweightResult r = measure_touchweight(*model, TouchweightOptions{}, progress);
       AnalysisResult result;
-      result.summary = QObject::tr(
-                           "downweight %1 g, upweight %2 g (a regulated grand: about "
-                           "45–55 g down and 20–30 g up).")
+      // the usual range is a grand's (DESIGN.md F9, Stanwood); the references give none for an
+      // upright, so it is not quoted as if it were the upright's
+      const QString usual =
+          model->kind == "grand"
+              ? QObject::tr("a regulated grand: about 45–55 g down and 20–30 g up")
+              : QObject::tr(
+                    "the references give a range for grands only, about 45–55 g down and "
+                    "20–30 g up; none for uprights");
+      result.summary = QObject::tr("downweight %1 g, upweight %2 g (%3).")
                            .arg(number(r.downweight_g))
-                           .arg(number(r.upweight_g));
+                           .arg(number(r.upweight_g))
+                           .arg(usual);
       if (QString note = QString::fromStdString(key_rest_note(r)); !note.isEmpty()) {
         note[0] = note[0].toUpper();  // a sentence of its own after the summary's
         result.summary += " " + note + ".";

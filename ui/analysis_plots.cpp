@@ -31,7 +31,8 @@ QSize stacked_plot_size(std::size_t count) {
   return QSize(1000, 300 * static_cast<int>(std::max<std::size_t>(count, 1)));
 }
 
-void write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path, QSize size) {
+QStringList write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path,
+                                 QSize size, const ApproveFiles& approve) {
   export_format(path);  // a wrong extension is reported before any work
   if (!QApplication::instance() && qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
     qputenv("QT_QPA_PLATFORM", "offscreen");  // the command line needs no display
@@ -45,7 +46,7 @@ void write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString&
                           size.height() / int(std::max<std::size_t>(plots.size(), 1)));
     raw.push_back(panels.back().get());
   }
-  export_plots(raw, path, size);
+  return export_plots(raw, path, size, {}, approve);
 }
 
 }  // namespace pat::ui

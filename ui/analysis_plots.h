@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "analysis_result.h"
+#include "plot_export.h"
 
 class QWidget;
 
@@ -23,9 +24,10 @@ PlotPanel* make_analysis_plot_panel(const AnalysisPlot& plot, QWidget* parent = 
 QSize stacked_plot_size(std::size_t count);
 
 /// Exports the plots stacked top to bottom to `path` (format from the extension; size default:
-/// stacked_plot_size), creating an offscreen Qt application when none runs (the command line
-/// needs no display). Throws InputError naming the file.
-void write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path,
-                          QSize size = {});
+/// stacked_plot_size; a CSV may be several files: plot_csv_files), creating an offscreen Qt
+/// application when none runs (the command line needs no display). Returns the files written.
+/// Throws InputError naming the file.
+QStringList write_analysis_plots(const std::vector<AnalysisPlot>& plots, const QString& path,
+                                 QSize size = {}, const ApproveFiles& approve = {});
 
 }  // namespace pat::ui

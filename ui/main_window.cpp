@@ -475,9 +475,11 @@ void MainWindow::build_menus() {
   }
   measurement_actions_.push_back(
       exports->addAction(tr("Run &trace, every column (CSV)…"), this, [this] {
-        export_to_chosen_file(
-            tr("the run trace"), tr("CSV (*.csv)"), true,
-            [this](const QString& path) { export_run_trace(path.toStdString()); });
+        export_to_chosen_file(tr("the run trace"), tr("CSV (*.csv)"), true,
+                              [this](const QString& path) {
+                                export_run_trace(path.toStdString());
+                                return QStringList{path};
+                              });
       }));
   exports->addAction(tr("Action a&nimation (PNG pictures)…"), this,
                      [this] { export_animation_from_menu(); });
@@ -493,6 +495,7 @@ void MainWindow::build_menus() {
             throw InputError(path.toStdString() +
                              ": could not write the picture (a .png or .jpg name is needed, in "
                              "a folder that can be written)");
+          return QStringList{path};
         });
   });
 
@@ -977,6 +980,9 @@ void MainWindow::set_adjuster(const std::string& name, double mm) {
 
 void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
+  // the analysis shown says when it is no longer the window's settings; not during an exercise,
+  // whose hidden settings it would name (its dock is hidden then; scoring brings it back)
+  if (!practising_) analyses_->compare_with_window();
   // at rest, before anything was played (the window's launch, an action opened, a restart
   // still finding its rest): the action settles with the new setting at once, as a technician
   // sees it after a turn of the screw (a capstan turned up lifts the hammer); in a run played
@@ -1199,7 +1205,10 @@ void MainWindow::export_from_menu(std::vector<PlotPanel*> plots, QString what, b
         if (still_shown && !still_shown())
           throw InputError(path.toStdString() + ": not written: another result replaced " +
                            what.toStdString() + " while the file was chosen; export again");
-        export_plots(plots, path, export_size_, export_metadata(run_plots));
+        // a CSV's further files (plots with other x values) were not in the dialog's question
+        return export_plots(
+            plots, path, export_size_, export_metadata(run_plots),
+            [this](const QStringList& files) { return confirm_replacing(this, files.mid(1)); });
       });
 }
 
@@ -1273,7 +1282,7 @@ void MainWindow::export_animation_from_menu() {
 }
 
 void MainWindow::export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
-                                       const std::function<void(const QString&)>& write) {
+                                       const std::function<QStringList(const QString&)>& write) {
   // the run pauses while the file is chosen: what is written is what was on screen when Export
   // was chosen, not where the run had got to when the dialog closed
   const bool was_playing = pause_run && controller_->playing();
@@ -1282,9 +1291,10 @@ void MainWindow::export_to_chosen_file(const QString& what, const QString& filte
   if (was_playing) controller_->play();
   if (path.isEmpty()) return;
   try {
-    write(path);
+    const QStringList written = write(path);
+    if (written.isEmpty()) return;
     remember_export_folder(path);
-    statusBar()->showMessage(tr("Exported %1 to %2").arg(what, path));
+    statusBar()->showMessage(tr("Exported %1 to %2").arg(what, written.join(", ")));
   } catch (const std::exception& e) {
     QMessageBox::warning(this, tr("Export failed"), QString::fromStdString(e.what()));
   }

@@ -141,9 +141,10 @@ class MainWindow : public QMainWindow {
   void export_from_menu(std::vector<class PlotPanel*> plots, QString what, bool run_plots,
                         const std::function<bool()>& still_shown = {});
   /// Asks for a file (filter `filter`; the run paused meanwhile when `pause_run`), writes it
-  /// with `write`, and says where, or in a dialog why not; `what` names it in both.
+  /// with `write`, which returns the files it wrote (none: the user declined), and says where,
+  /// or in a dialog why not; `what` names it in both.
   void export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
-                             const std::function<void(const QString&)>& write);
+                             const std::function<QStringList(const QString&)>& write);
   void restore_settings();
   /// The regulation dock as wide as its panel's smallest layout (after an action or text size);
   /// `within_screen`: no wider than leaves the window on its screen (or at its `width_before`

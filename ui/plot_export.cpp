@@ -1,5 +1,6 @@
 #include "plot_export.h"
 
+#include <QDir>
 #include <QFileInfo>
 #include <QImage>
 #include <QPageSize>
@@ -13,6 +14,7 @@
 #include "core/error.h"
 #include "io/csv.h"
 #include "plot_panel.h"
+#include "save_paths.h"
 
 namespace pat::ui {
 namespace {
@@ -43,38 +45,21 @@ std::vector<std::pair<PlotPanel*, QRect>> stacked(const std::vector<PlotPanel*>&
   return out;
 }
 
-// one table: the x column the plots share (time_s, frequency_hz, ...), then every plot's series;
-// rows at the first plot's x values where every series has a value. Plots over different x
-// axes cannot share the rows of one table: refused, naming the file.
-CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path) {
+// one table of plots that share their rows' x values (plot_csv_files): the x column, then every
+// plot's series, row by row
+CsvTable merged_table(const std::vector<CsvTable>& tables, const std::vector<std::size_t>& group,
+                      const QString& x_column) {
   CsvTable merged;
-  const QString x_column = plots.empty() ? QString("time_s") : plots.front()->x_column();
-  for (const PlotPanel* plot : plots)
-    if (plot->x_column() != x_column)
-      throw InputError(path.toStdString() + ": the plots have different x axes (" +
-                       x_column.toStdString() + ", " + plot->x_column().toStdString() +
-                       "); a CSV holds one: export the plots one at a time, or as PNG, PDF or SVG");
   merged.columns.push_back(x_column.toStdString());
-  std::map<double, std::vector<double>> rows;
-  std::size_t width = 0;
-  for (std::size_t p = 0; p < plots.size(); ++p) {
-    const CsvTable table = plots[p]->visible_table();
+  const CsvTable& first = tables[group.front()];
+  for (const auto& row : first.rows) merged.rows.push_back({row[0]});
+  for (const std::size_t p : group) {
+    const CsvTable& table = tables[p];
     for (const auto& [key, value] : table.metadata) merged.metadata.emplace(key, value);
     for (std::size_t c = 1; c < table.columns.size(); ++c)
       merged.columns.push_back(table.columns[c]);
-    for (const auto& row : table.rows) {
-      if (p > 0 && !rows.count(row[0])) continue;
-      auto& values = rows[row[0]];
-      if (values.size() != width) continue;  // missing in an earlier plot
-      values.insert(values.end(), row.begin() + 1, row.end());
-    }
-    width += table.columns.size() - 1;
-  }
-  for (auto& [t, values] : rows) {
-    if (values.size() != width) continue;
-    std::vector<double> row{t};
-    row.insert(row.end(), values.begin(), values.end());
-    merged.rows.push_back(std::move(row));
+    for (std::size_t r = 0; r < merged.rows.size(); ++r)
+      merged.rows[r].insert(merged.rows[r].end(), table.rows[r].begin() + 1, table.rows[r].end());
   }
   if (!merged.rows.empty()) {
     merged.metadata["range"] = std::to_string(merged.rows.front()[0]) + " to " +
@@ -83,6 +68,29 @@ CsvTable merged_table(const std::vector<PlotPanel*>& plots, const QString& path)
   }
   merged.metadata["exported_by"] = "pianoaction (visible range of the plots)";
   return merged;
+}
+
+QStringList write_csv_files(const std::vector<PlotPanel*>& plots, const QString& path,
+                            const std::map<std::string, std::string>& metadata,
+                            const ApproveFiles& approve) {
+  std::vector<CsvTable> tables;
+  std::vector<PlotCsvShape> shapes;
+  for (const PlotPanel* plot : plots) {
+    tables.push_back(plot->visible_table());
+    PlotCsvShape shape{plot->x_column(), plot->title(), {}};
+    for (const auto& row : tables.back().rows) shape.x.push_back(row[0]);
+    shapes.push_back(std::move(shape));
+  }
+  const std::vector<PlotCsvFile> files = plot_csv_files(shapes, path);
+  QStringList paths;
+  for (const PlotCsvFile& file : files) paths << file.path;
+  if (approve && !approve(paths)) return {};
+  for (const PlotCsvFile& file : files) {
+    CsvTable table = merged_table(tables, file.plots, shapes[file.plots.front()].x_column);
+    for (const auto& [key, value] : metadata) table.metadata[key] = value;
+    write_csv(file.path.toStdString(), table);
+  }
+  return paths;
 }
 
 [[noreturn]] void fail(const QString& path, const std::string& problem) {
@@ -122,8 +130,47 @@ ExportFormat export_format(const QString& path) {
   fail(path, "unknown plot format '." + suffix.toStdString() + "' (use .png, .pdf, .svg or .csv)");
 }
 
-void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
-                  const std::map<std::string, std::string>& metadata) {
+std::vector<PlotCsvFile> plot_csv_files(const std::vector<PlotCsvShape>& plots,
+                                        const QString& path) {
+  std::vector<PlotCsvFile> files;
+  const QFileInfo info(path);
+  const auto beside = [&](const QString& part) {  // in the folder `path` names, as it names it
+    const QString name = info.completeBaseName() + "_" + part + ".csv";
+    return path.contains('/') ? info.path() + "/" + name : name;
+  };
+  for (std::size_t p = 0; p < plots.size(); ++p) {
+    auto same_rows = [&](const PlotCsvFile& file) {
+      const PlotCsvShape& first = plots[file.plots.front()];
+      return first.x_column == plots[p].x_column && first.x == plots[p].x;
+    };
+    const auto shared = std::find_if(files.begin(), files.end(), same_rows);
+    if (shared != files.end()) {
+      shared->plots.push_back(p);
+      continue;
+    }
+    const QString title_stem = file_stem(plots[p].title).isEmpty() ? QString("plot%1").arg(p + 1)
+                                                                   : file_stem(plots[p].title);
+    // named after its x column, or after its title when a file has that x column already
+    const bool x_has_a_file = std::any_of(files.begin(), files.end(), [&](const PlotCsvFile& f) {
+      return plots[f.plots.front()].x_column == plots[p].x_column;
+    });
+    QString file_path = files.empty()  ? path
+                        : x_has_a_file ? beside(title_stem)
+                                       : beside(file_stem(plots[p].x_column));
+    const auto taken = [&](const QString& candidate) {
+      return std::any_of(files.begin(), files.end(),
+                         [&](const PlotCsvFile& f) { return f.path == candidate; });
+    };
+    for (int n = 2; taken(file_path); ++n)  // two plots of one title over one x: numbered
+      file_path = beside(title_stem + QString("_%1").arg(n));
+    files.push_back({file_path, {p}});
+  }
+  return files;
+}
+
+QStringList export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
+                         const std::map<std::string, std::string>& metadata,
+                         const ApproveFiles& approve) {
   if (plots.empty()) fail(path, "there is no plot to export");
   if (size.width() < 50 || size.height() < 50 || size.width() > 20000 || size.height() > 20000)
     fail(path, "export size must be between 50 and 20000 pixels a side");
@@ -178,13 +225,10 @@ void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSi
       commit_saved(file, path, "SVG");
       break;
     }
-    case ExportFormat::Csv: {
-      CsvTable table = merged_table(plots, path);
-      for (const auto& [key, value] : metadata) table.metadata[key] = value;
-      write_csv(path.toStdString(), table);
-      break;
-    }
+    case ExportFormat::Csv:
+      return write_csv_files(plots, path, metadata, approve);
   }
+  return {path};
 }
 
 }  // namespace pat::ui

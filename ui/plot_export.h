@@ -5,6 +5,8 @@
 
 #include <QSize>
 #include <QString>
+#include <QStringList>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -23,10 +25,38 @@ inline constexpr double kExportLayoutWidth = 800.0;
 /// naming the file for any other extension.
 ExportFormat export_format(const QString& path);
 
-/// Writes `plots` to `path` (format from the extension). `size` is the whole export in pixels
-/// (points for PDF); the plots share its height. `metadata` (e.g. action, input, settings) goes
-/// into a CSV's '#' lines. Throws InputError naming the file when it cannot be written.
-void export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
-                  const std::map<std::string, std::string>& metadata = {});
+/// What decides which CSV file a plot's rows go to: its x column, its title and the x value of
+/// each row it writes (in order; a value may repeat, as a frequency held for several cycles).
+struct PlotCsvShape {
+  QString x_column;
+  QString title;
+  std::vector<double> x;
+};
+
+/// One CSV file of a plot export: its path and the plots (indices) whose columns it holds.
+struct PlotCsvFile {
+  QString path;
+  std::vector<std::size_t> plots;
+};
+
+/// How a CSV export of plots is split. A CSV is one table: plots share a file when they have the
+/// same x column and the same x values row by row (a file's rows are the plots' own samples,
+/// nothing dropped or paired by guess). The first plot's file is `path`; each further file is
+/// STEM_<x column>.csv beside it, or STEM_<plot title>.csv when that name is taken.
+std::vector<PlotCsvFile> plot_csv_files(const std::vector<PlotCsvShape>& plots,
+                                        const QString& path);
+
+/// Called with the files a CSV export will write (`path` first) before anything is written;
+/// false writes nothing. May throw InputError (e.g. a further file would replace an input).
+using ApproveFiles = std::function<bool(const QStringList& files)>;
+
+/// Writes `plots` to `path` (format from the extension) and returns the files written (a CSV
+/// export may write several: plot_csv_files; none when `approve` declined). `size` is the whole
+/// export in pixels (points for PDF); the plots share its height. `metadata` (e.g. action, input,
+/// settings) goes into a CSV's '#' lines. Throws InputError naming the file when it cannot be
+/// written.
+QStringList export_plots(const std::vector<PlotPanel*>& plots, const QString& path, QSize size,
+                         const std::map<std::string, std::string>& metadata = {},
+                         const ApproveFiles& approve = {});
 
 }  // namespace pat::ui

@@ -348,6 +348,14 @@ std::optional<double> PlotPanel::value_at(int series, double t) const {
   return before->value + w * (after->value - before->value);
 }
 
+std::optional<double> PlotPanel::sample_at(int series, double x, int rank) const {
+  const auto data = series_[series].graph->data();
+  auto it = data->findBegin(x, false);
+  if (it == data->constEnd() || it->key != x) return value_at(series, x);
+  for (int r = 0; r < rank && it + 1 != data->constEnd() && (it + 1)->key == x; ++r) ++it;
+  return it->value;
+}
+
 QString PlotPanel::cursor_readout() const {
   if (!cursors_[0] || !cursors_[1]) return {};
   const double a = *cursors_[0], b = *cursors_[1];
@@ -721,11 +729,17 @@ CsvTable PlotPanel::visible_table() const {
   if (series_.empty()) return table;
   const QCPRange range = plot_->xAxis->range();
   const auto base = series_.front().graph->data();
+  // a row per sample of the first series, with its own value (a frequency held for several
+  // cycles has a sample per cycle at one x: the first cycle's value had been written for each);
+  // another series at that x gives its sample of the same rank there, or else its interpolation
   for (auto it = base->findBegin(range.lower, false); it != base->constEnd(); ++it) {
     if (it->key > range.upper) break;
-    std::vector<double> row{it->key};
-    for (int s = 0; s < series_count(); ++s) {
-      const auto v = value_at(s, it->key);
+    int rank = 0;  // how many samples before this one have its x
+    for (auto before = it; before != base->constBegin() && (before - 1)->key == it->key; --before)
+      ++rank;
+    std::vector<double> row{it->key, it->value};
+    for (int s = 1; s < series_count(); ++s) {
+      const auto v = sample_at(s, it->key, rank);
       if (!v) break;
       row.push_back(*v);
     }

@@ -32,6 +32,15 @@ QString ask_save_path(QWidget* parent, const QString& title, const QString& star
   return path;
 }
 
+QString file_stem(const QString& title) {
+  QString stem;
+  for (const QChar c : title.toLower()) stem += c.isLetterOrNumber() ? c : QChar('_');
+  while (stem.contains("__")) stem.replace("__", "_");
+  while (stem.startsWith('_')) stem.remove(0, 1);
+  while (stem.endsWith('_')) stem.chop(1);
+  return stem;
+}
+
 QStringList existing_files(const QStringList& paths) {
   QStringList existing;
   for (const QString& p : paths)

@@ -22,6 +22,10 @@ QString with_filter_suffix(const QString& path, const QString& selected_filter,
 QString ask_save_path(QWidget* parent, const QString& title, const QString& start,
                       const QString& filter);
 
+/// A title as part of a file name: lower case, every run of other characters than letters and
+/// digits one '_' ("Hammer speed at the strike" → "hammer_speed_at_the_strike").
+QString file_stem(const QString& title);
+
 /// The files among `paths` that exist.
 QStringList existing_files(const QStringList& paths);
 

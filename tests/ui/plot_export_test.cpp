@@ -6,6 +6,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QFontMetrics>
 #include <QImage>
 #include <QSettings>
@@ -37,6 +38,7 @@ class PlotExportTest : public QObject {
   void cursors_give_delta_t_and_delta_value();
   void unknown_extension_and_bad_folder_are_refused();
   void analysis_plots_are_written_headless();
+  void a_csv_keeps_every_sample_and_gives_plots_of_other_rows_their_own_file();
   void flat_series_keeps_a_bounded_value_axis();
   void a_narrow_plot_puts_its_legend_under_it();
   void a_large_picture_is_drawn_larger_not_wider();
@@ -293,6 +295,69 @@ void PlotExportTest::analysis_plots_are_written_headless() {
   const pat::CsvTable table = pat::read_csv(csv.toStdString());
   QCOMPARE(table.columns.front(), std::string("setting_index"));
   QCOMPARE(table.metadata.at("setting_index"), std::string("0 key_dip; 1 let_off; 2 drop"));
+}
+
+// A steps sweep's plots: a frequency held for several cycles has a sample per cycle at one x. The
+// CSV had written the first cycle's value for each, and merging with the strike-speed plot (no
+// sample where a cycle missed the string) kept one row per frequency. Now every sample is a row,
+// and plots whose rows have other x values (another axis, or fewer samples) get their own file.
+void PlotExportTest::a_csv_keeps_every_sample_and_gives_plots_of_other_rows_their_own_file() {
+  pat::ui::AnalysisPlot strikes{
+      "Strikes per cycle", "key frequency (Hz)", "frequency_hz", "Hz", "strikes", {}};
+  strikes.series.push_back({"strikes", "strikes", {10, 10, 10, 10.5, 10.5}, {1, 1, 2, 1, 0}, true});
+  pat::ui::AnalysisPlot speed{
+      "Hammer speed at each strike", "key frequency (Hz)", "frequency_hz", "Hz", "speed (m/s)", {}};
+  speed.series.push_back(
+      {"speed", "strike_velocity_mps", {10, 10, 10, 10.5}, {3.1, 3.2, 2.9, 3.3}, true});
+  pat::ui::AnalysisPlot trace{"Key", "time (s)", "time_s", "s", "angle (deg)", {}};
+  trace.series.push_back({"key", "key_angle_deg", {0, 0.1, 0.2}, {0, 1, 2}});
+  // two series over the same repeated x pair sample by sample
+  pat::ui::AnalysisPlot both{"Both", "key frequency (Hz)", "frequency_hz", "Hz", "n", {}};
+  both.series.push_back({"a", "a", {10, 10, 10, 10.5, 10.5}, {5, 6, 7, 8, 9}, true});
+  both.series.push_back({"b", "b", {10, 10, 10, 10.5, 10.5}, {15, 16, 17, 18, 19}, true});
+
+  QStringList asked;
+  const QString path = dir_.filePath("sweep.csv");
+  const QStringList written = pat::ui::write_analysis_plots({strikes, speed, trace, both}, path, {},
+                                                            [&](const QStringList& files) {
+                                                              asked = files;
+                                                              return true;
+                                                            });
+  const QStringList expected{path, dir_.filePath("sweep_hammer_speed_at_each_strike.csv"),
+                             dir_.filePath("sweep_time_s.csv")};
+  QCOMPARE(written, expected);
+  QCOMPARE(asked, expected);  // asked before anything was written
+
+  const pat::CsvTable cycles = pat::read_csv(path.toStdString());
+  QCOMPARE(cycles.columns, (std::vector<std::string>{"frequency_hz", "strikes", "a", "b"}));
+  const std::vector<std::vector<double>> cycle_rows{
+      {10, 1, 5, 15}, {10, 1, 6, 16}, {10, 2, 7, 17}, {10.5, 1, 8, 18}, {10.5, 0, 9, 19}};
+  QCOMPARE(cycles.rows, cycle_rows);
+  const pat::CsvTable speeds = pat::read_csv(expected[1].toStdString());
+  const std::vector<std::vector<double>> speed_rows{{10, 3.1}, {10, 3.2}, {10, 2.9}, {10.5, 3.3}};
+  QCOMPARE(speeds.rows, speed_rows);
+  QCOMPARE(pat::read_csv(expected[2].toStdString()).rows.size(), std::size_t(3));
+
+  // declined: nothing written
+  const QString declined = dir_.filePath("declined.csv");
+  QVERIFY(pat::ui::write_analysis_plots({strikes, trace}, declined, {}, [](const QStringList&) {
+            return false;
+          }).isEmpty());
+  QVERIFY(!QFileInfo::exists(declined));
+  QVERIFY(!QFileInfo::exists(dir_.filePath("declined_time_s.csv")));
+
+  // names: a relative path keeps its folder as given; two plots of one title over one x numbered
+  using pat::ui::PlotCsvShape;
+  const std::vector<PlotCsvShape> shapes{{"time_s", "A", {0, 1}},
+                                         {"time_s", "A", {0, 2}},
+                                         {"time_s", "A", {0, 3}},
+                                         {"frequency_hz", "", {1}}};
+  const auto files = pat::ui::plot_csv_files(shapes, "out.csv");
+  QCOMPARE(files.size(), std::size_t(4));
+  QCOMPARE(files[0].path, QString("out.csv"));
+  QCOMPARE(files[1].path, QString("out_a.csv"));
+  QCOMPARE(files[2].path, QString("out_a_2.csv"));
+  QCOMPARE(files[3].path, QString("out_frequency_hz.csv"));
 }
 
 // An export dialog opens where the last export went, or in the documents folder (or home), not in
