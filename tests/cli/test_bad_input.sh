@@ -212,6 +212,9 @@ expect_failure "a w2 step longer than a felt contact" "--step 0.01|at most 0.001
   simulate --action grand --input force:const:5 --duration 0.1 --step 0.01 --out out.csv
 expect_failure "a w2 step near the duration" "--step 0.001|at least 10 steps|--duration 0.005" \
   simulate --action grand --input force:const:5 --duration 0.005 --step 0.001 --out out.csv
+# the default step too: a run shorter than 10 of them had taken one step and said step_s 1e-5
+expect_failure "a run shorter than 10 default steps" "--duration 1e-9|at least 10 steps|a smaller --step" \
+  simulate --action grand --input force:const:5 --duration 1e-9 --out out.csv
 expect_failure "a step that would take hours" "--step 1e-12|at least 1e-7 s" \
   simulate --action grand --input force:const:5 --duration 0.1 --step 1e-12 --out out.csv
 expect_failure "a tolerance finer than any comparison needs" "--rtol 1e-20|at least 1e-10" \
