@@ -295,6 +295,12 @@ void AnalysesPanelTest::a_result_says_when_the_window_settings_moved_since_it_ra
   window.set_adjuster("let_off", 0.5);
   QVERIFY2(panel->since_run_note().contains("let-off 0.00 → +0.50 mm"),
            qPrintable(panel->since_run_note()));
+  if (const QString shots = qEnvironmentVariable("PAT_UI_SHOTS"); !shots.isEmpty()) {
+    window.show_analyses();
+    window.resize(1280, 800);
+    QTest::qWait(100);
+    window.grab().save(shots + "/since-run.png");
+  }
   window.set_adjuster("let_off", 0.0);
   QCOMPARE(panel->since_run_note(), QString());
   window.open_action("upright");

@@ -428,6 +428,10 @@ void PlotExportTest::the_live_plots_span_a_chosen_window_or_the_whole_run() {
   QCOMPARE(stack.angles()->x_range().first, 0.0);
   QCOMPARE(stack.angles()->x_range().second, 1.5);
   QCOMPARE(whole_changed.count(), 0);
+  // the run's plots share their samples: their CSV is one table, every frame a row
+  const QString run_csv = dir_.filePath("run.csv");
+  QCOMPARE(pat::ui::export_plots(stack.panels(), run_csv, QSize(800, 600)), QStringList{run_csv});
+  QCOMPARE(pat::read_csv(run_csv.toStdString()).rows.size(), frames.size());
   // Follow brings the sliding window back
   stack.set_following(true);
   QVERIFY(!stack.showing_whole_run());
