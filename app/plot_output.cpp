@@ -1,7 +1,5 @@
 #include "plot_output.h"
 
-#include <algorithm>
-#include <filesystem>
 #include <iostream>
 #include <utility>
 
@@ -76,7 +74,7 @@ void write_plots(const std::string& path, const std::vector<PlotSpec>& plots,
   const QStringList written = ui::write_analysis_plots(converted, text(path), {}, approve);
   for (int f = 1; f < written.size(); ++f)
     std::cerr << "note: plots went to " << written[f].toStdString()
-              << " too (a CSV holds one table: plots with other x values have their own)\n";
+              << " too (a CSV holds one table: plots whose rows differ have their own)\n";
 }
 #else
 void check_plot_path(const std::string& path) {

@@ -121,10 +121,6 @@ std::vector<PlotSpec> observation_plots(const std::vector<Observation>& seen,
 int run_new(const CommandLine& cl) {
   const LoadedExercise loaded = exercise_from(cl);
   const PlotOption plot(cl);
-  if (plot.writes_csv())
-    throw InputError("--plot " + plot.path() + ": the observations come in several units, one " +
-                     "plot each, and a CSV holds one table: use .png, .pdf or .svg (--json " +
-                     "gives every number)");
   const ActionModel hidden = hidden_model(loaded.model, loaded.exercise);
   std::vector<Observation> regulated_seen, seen;
   try {

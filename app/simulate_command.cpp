@@ -49,7 +49,7 @@ int run_simulate(const std::vector<std::string>& args) {
   // beyond these the run's numbers mean nothing although it may end "ok": a felt contact lasts a
   // few milliseconds (w2 at 1 ms already drives the capstan 63 mm into the whippen under 5 N),
   // and a tolerance of more than 10 % lets cvode and rodas step through the felts (each checked
-  // where it was given: the defaults are fine for any duration)
+  // where it was given; w2's default step is checked against the duration below)
   constexpr double kLargestStepS = 1e-3, kLargestRtol = 0.1;
   // and below these a run takes hours without telling more: a hundredth of w2's default step
   // already makes a second of the action minutes long, and a tolerance a tenth of the bench's

@@ -43,7 +43,6 @@ QString csv_field(const QString& text) {
   return '"' + quoted + '"';
 }
 
-// "Strikes per cycle" → "strikes_per_cycle": a file name for a plot's title.
 QStringList checked_items(const QListWidget* list) {
   QStringList names;
   for (int i = 0; i < list->count(); ++i)
@@ -556,10 +555,16 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
 
 void AnalysesPanel::compare_with_window() {
   const std::shared_ptr<const ActionModel> window = current_model_ ? current_model_() : nullptr;
-  const QString note =
-      result_model_ && window ? settings_moved_note(*result_model_, *window) : QString();
+  const QString note = result_model_ && window && !settings_hidden_
+                           ? settings_moved_note(*result_model_, *window)
+                           : QString();
   since_run_->setText(note);
   since_run_->setVisible(!note.isEmpty());
+}
+
+void AnalysesPanel::set_settings_hidden(bool hidden) {
+  settings_hidden_ = hidden;
+  compare_with_window();
 }
 
 QString AnalysesPanel::since_run_note() const {

@@ -84,6 +84,9 @@ class AnalysesPanel : public QWidget {
   void compare_with_window();
   /// That sentence (empty when the result is the window's action as it is).
   QString since_run_note() const;
+  /// While a practice exercise hides the window's settings the sentence is not made (it would
+  /// name the hidden setting); when they are shown again it is.
+  void set_settings_hidden(bool hidden);
   /// The action the shown result ran on, with its settings as they were at Run (they may have
   /// moved since); null when none is shown or the result is not one action's (Upright vs grand).
   std::shared_ptr<const ActionModel> result_model() const { return result_model_; }
@@ -126,8 +129,9 @@ class AnalysesPanel : public QWidget {
   QProgressBar* progress_;
   QLabel* stage_;
   QLabel* summary_;
-  QScrollArea* summary_scroll_;  ///< holds the summary, at most a few lines high
-  QLabel* since_run_;            ///< compare_with_window's sentence, hidden when empty
+  QScrollArea* summary_scroll_;   ///< holds the summary, at most a few lines high
+  QLabel* since_run_;             ///< compare_with_window's sentence, hidden when empty
+  bool settings_hidden_ = false;  ///< a practice exercise runs: no sentence
   /// Sets the summary, its scroll area as high as its text up to six lines.
   void set_summary(const QString& text);
   void fit_summary();

@@ -712,6 +712,7 @@ void MainWindow::set_practice_layout(bool practising) {
   // view, taller (the view refits as it is resized).
   regulation_dock_->setVisible(!practising);
   analyses_dock_->setVisible(!practising);
+  analyses_->set_settings_hidden(practising);
   view_->set_measurements_visible(!practising);
   plots_->setVisible(!practising);
   for (QAction* a : measurement_actions_) a->setEnabled(!practising);
@@ -980,9 +981,9 @@ void MainWindow::set_adjuster(const std::string& name, double mm) {
 
 void MainWindow::change_model(std::shared_ptr<const ActionModel> model) {
   model_ = std::move(model);
-  // the analysis shown says when it is no longer the window's settings; not during an exercise,
-  // whose hidden settings it would name (its dock is hidden then; scoring brings it back)
-  if (!practising_) analyses_->compare_with_window();
+  // the analysis shown says when it is no longer the window's settings (not during an exercise,
+  // whose hidden setting it would name: set_practice_layout)
+  analyses_->compare_with_window();
   // at rest, before anything was played (the window's launch, an action opened, a restart
   // still finding its rest): the action settles with the new setting at once, as a technician
   // sees it after a turn of the screw (a capstan turned up lifts the hammer); in a run played

@@ -77,8 +77,11 @@ QStringList write_csv_files(const std::vector<PlotPanel*>& plots, const QString&
   std::vector<PlotCsvShape> shapes;
   for (const PlotPanel* plot : plots) {
     tables.push_back(plot->visible_table());
-    PlotCsvShape shape{plot->x_column(), plot->title(), {}};
+    PlotCsvShape shape{plot->x_column(), plot->title(), {}, {}};
     for (const auto& row : tables.back().rows) shape.x.push_back(row[0]);
+    if (const auto names = tables.back().metadata.find(shape.x_column.toStdString());
+        names != tables.back().metadata.end())
+      shape.x_names = names->second;
     shapes.push_back(std::move(shape));
   }
   const std::vector<PlotCsvFile> files = plot_csv_files(shapes, path);
@@ -136,12 +139,13 @@ std::vector<PlotCsvFile> plot_csv_files(const std::vector<PlotCsvShape>& plots,
   const QFileInfo info(path);
   const auto beside = [&](const QString& part) {  // in the folder `path` names, as it names it
     const QString name = info.completeBaseName() + "_" + part + ".csv";
-    return path.contains('/') ? info.path() + "/" + name : name;
+    return path.contains('/') ? QDir(info.path()).filePath(name) : name;
   };
   for (std::size_t p = 0; p < plots.size(); ++p) {
     auto same_rows = [&](const PlotCsvFile& file) {
       const PlotCsvShape& first = plots[file.plots.front()];
-      return first.x_column == plots[p].x_column && first.x == plots[p].x;
+      return first.x_column == plots[p].x_column && first.x == plots[p].x &&
+             first.x_names == plots[p].x_names;
     };
     const auto shared = std::find_if(files.begin(), files.end(), same_rows);
     if (shared != files.end()) {

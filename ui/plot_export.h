@@ -25,12 +25,14 @@ inline constexpr double kExportLayoutWidth = 800.0;
 /// naming the file for any other extension.
 ExportFormat export_format(const QString& path);
 
-/// What decides which CSV file a plot's rows go to: its x column, its title and the x value of
-/// each row it writes (in order; a value may repeat, as a frequency held for several cycles).
+/// What decides which CSV file a plot's rows go to: its x column, its title, the x value of each
+/// row it writes (in order; a value may repeat, as a frequency held for several cycles) and the
+/// names of the x values when the plot names them (a category plot's "0 key_dip; 1 let_off").
 struct PlotCsvShape {
   QString x_column;
   QString title;
   std::vector<double> x;
+  std::string x_names;
 };
 
 /// One CSV file of a plot export: its path and the plots (indices) whose columns it holds.
@@ -40,9 +42,10 @@ struct PlotCsvFile {
 };
 
 /// How a CSV export of plots is split. A CSV is one table: plots share a file when they have the
-/// same x column and the same x values row by row (a file's rows are the plots' own samples,
-/// nothing dropped or paired by guess). The first plot's file is `path`; each further file is
-/// STEM_<x column>.csv beside it, or STEM_<plot title>.csv when that name is taken.
+/// same x column, the same x values row by row and the same names for them, so that a row holds
+/// one sample of each. The first plot's file is `path`; each further file is STEM_<x column>.csv
+/// beside it, or STEM_<plot title>.csv when a file has that x column already (numbered when two
+/// plots of one title need one each).
 std::vector<PlotCsvFile> plot_csv_files(const std::vector<PlotCsvShape>& plots,
                                         const QString& path);
 

@@ -352,7 +352,10 @@ std::optional<double> PlotPanel::sample_at(int series, double x, int rank) const
   const auto data = series_[series].graph->data();
   auto it = data->findBegin(x, false);
   if (it == data->constEnd() || it->key != x) return value_at(series, x);
-  for (int r = 0; r < rank && it + 1 != data->constEnd() && (it + 1)->key == x; ++r) ++it;
+  for (int r = 0; r < rank; ++r) {
+    if (it + 1 == data->constEnd() || (it + 1)->key != x) return std::nullopt;  // none of that rank
+    ++it;
+  }
   return it->value;
 }
 
@@ -731,7 +734,8 @@ CsvTable PlotPanel::visible_table() const {
   const auto base = series_.front().graph->data();
   // a row per sample of the first series, with its own value (a frequency held for several
   // cycles has a sample per cycle at one x: the first cycle's value had been written for each);
-  // another series at that x gives its sample of the same rank there, or else its interpolation
+  // another series at that x gives its sample of the same rank there (none of that rank: the row
+  // is left out), or else its interpolation
   for (auto it = base->findBegin(range.lower, false); it != base->constEnd(); ++it) {
     if (it->key > range.upper) break;
     int rank = 0;  // how many samples before this one have its x

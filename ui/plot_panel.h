@@ -98,8 +98,8 @@ class PlotPanel : public QWidget {
   std::optional<double> cursor(int which) const;
   /// Value of a series at time t (linear interpolation), if t is within its data.
   std::optional<double> value_at(int series, double t) const;
-  /// The series' `rank`-th sample at exactly `x` (its last when it has fewer), or value_at(x)
-  /// when it has none there.
+  /// The series' `rank`-th sample at exactly `x` (none when it has fewer there), or value_at(x)
+  /// when it has no sample there.
   std::optional<double> sample_at(int series, double x, int rank) const;
   /// "Δt = … ms, Δ<series> = … <unit>" for the two cursors (empty without both).
   QString cursor_readout() const;

@@ -2,15 +2,11 @@
 
 #include <QObject>
 #include <QStringList>
-#include <cmath>
 
 #include "setting_names.h"
 
 namespace pat::ui {
 namespace {
-
-// below half the regulation panel's last digit (0.01 mm) a move is not shown there either
-constexpr double kShownMoveM = 0.5e-5;
 
 QString parts_text(const std::vector<std::string>& removed) {
   if (removed.empty()) return QObject::tr("all parts");
@@ -35,11 +31,12 @@ QString settings_moved_note(const ActionModel& ran_on, const ActionModel& window
                                           parts_text(window.removed_parts));
   for (const Adjuster& before : ran_on.adjusters) {
     for (const Adjuster& now : window.adjusters) {
-      if (now.name != before.name || std::abs(now.value - before.value) < kShownMoveM) continue;
-      changes << QObject::tr("%1 %2 → %3 mm")
-                     .arg(setting_title(before.name))
-                     .arg(adjuster_mm_text(before.value * 1e3, 2, true))
-                     .arg(adjuster_mm_text(now.value * 1e3, 2, true));
+      if (now.name != before.name) continue;
+      // as the regulation panel shows them: a move within its last digit is not news
+      const QString was = adjuster_mm_text(before.value * 1e3, 2, true);
+      const QString is = adjuster_mm_text(now.value * 1e3, 2, true);
+      if (was != is)
+        changes << QObject::tr("%1 %2 → %3 mm").arg(setting_title(before.name), was, is);
     }
   }
   if (changes.isEmpty()) return {};

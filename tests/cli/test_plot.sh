@@ -72,8 +72,8 @@ expect bench_window 1 bench --window --duration 0.3 --trials 2
 expect practice 2 practice new --action grand --seed 3
 
 # the CSV export of a plot over another x axis: the touchweight against the key dip
-# plots over two x axes as CSV: those over the first plot's x in the file named, the others beside
-# it (a sweep: strikes per cycle over frequency, the chirp run over time)
+# plots over two x axes as CSV: those sharing the first plot's rows in the file named, the others
+# beside it (a sweep: strikes per cycle over frequency, the chirp run over time)
 "$exe" sweep --action grand --stroke full --fstart 6 --fmax 7 --plot two_axes.csv --json \
   >two_axes.json 2>two_axes.err || fail "sweep --plot csv over two axes: $(cat two_axes.err)"
 grep -q "^frequency_hz," two_axes.csv || fail "two_axes.csv: $(grep -v '^#' two_axes.csv | head -1)"
@@ -82,6 +82,15 @@ grep -q "^time_s,key_angle_deg" two_axes_time_s.csv \
 grep -qF "went to two_axes_time_s.csv" two_axes.err || fail "the second file is not named"
 python3 -c 'import json,sys; json.load(open(sys.argv[1]))' two_axes.json \
   || fail "the note broke --json's stdout"
+# an exercise's observations, one plot per unit over differently named observations: a table
+# each, the further ones named after their plot (a CSV had been refused here)
+"$exe" practice new --action grand --seed 3 --plot observed.csv >/dev/null 2>observed.err \
+  || fail "practice new --plot csv: $(cat observed.err)"
+grep -q "^observation_index,difference" observed_observed_minus_regulated_mm.csv \
+  || fail "observed_observed_minus_regulated_mm.csv: $(grep -v '^#' \
+    observed_observed_minus_regulated_mm.csv 2>&1 | head -1)"
+grep -qF "went to observed_observed_minus_regulated_mm.csv" observed.err \
+  || fail "the practice plot's further files are not named: $(cat observed.err)"
 "$exe" touchweight --action grand --plot weights.csv >/dev/null || fail "touchweight --plot csv"
 grep -q "^dip_mm,downweight_g,upweight_g" weights.csv \
   || fail "weights.csv header: $(grep -v '^#' weights.csv | head -1)"

@@ -315,6 +315,17 @@ void PlotExportTest::a_csv_keeps_every_sample_and_gives_plots_of_other_rows_thei
   pat::ui::AnalysisPlot both{"Both", "key frequency (Hz)", "frequency_hz", "Hz", "n", {}};
   both.series.push_back({"a", "a", {10, 10, 10, 10.5, 10.5}, {5, 6, 7, 8, 9}, true});
   both.series.push_back({"b", "b", {10, 10, 10, 10.5, 10.5}, {15, 16, 17, 18, 19}, true});
+  // a series with fewer samples at a repeated x gives none for the ranks it lacks: that row is
+  // left out, not filled with a sample of another rank
+  pat::ui::AnalysisPlot fewer{"Fewer", "key frequency (Hz)", "frequency_hz", "Hz", "n", {}};
+  fewer.series.push_back({"a", "a", {10, 10, 10.5}, {5, 6, 8}, true});
+  fewer.series.push_back({"b", "b", {10, 10.5}, {15, 18}, true});
+  {
+    const QString fewer_path = dir_.filePath("fewer.csv");
+    pat::ui::write_analysis_plots({fewer}, fewer_path);
+    const std::vector<std::vector<double>> rows{{10, 5, 15}, {10.5, 8, 18}};
+    QCOMPARE(pat::read_csv(fewer_path.toStdString()).rows, rows);
+  }
 
   QStringList asked;
   const QString path = dir_.filePath("sweep.csv");
@@ -348,16 +359,24 @@ void PlotExportTest::a_csv_keeps_every_sample_and_gives_plots_of_other_rows_thei
 
   // names: a relative path keeps its folder as given; two plots of one title over one x numbered
   using pat::ui::PlotCsvShape;
-  const std::vector<PlotCsvShape> shapes{{"time_s", "A", {0, 1}},
-                                         {"time_s", "A", {0, 2}},
-                                         {"time_s", "A", {0, 3}},
-                                         {"frequency_hz", "", {1}}};
+  // (an untitled plot by its place); the same x values named otherwise do not share rows
+  const std::vector<PlotCsvShape> shapes{{"time_s", "A", {0, 1}, ""},
+                                         {"time_s", "A", {0, 2}, ""},
+                                         {"time_s", "A", {0, 3}, ""},
+                                         {"frequency_hz", "", {1}, ""},
+                                         {"frequency_hz", "", {2}, ""},
+                                         {"setting_index", "S", {0, 1}, "0 drop; 1 let_off"},
+                                         {"setting_index", "T", {0, 1}, "0 key_dip; 1 drop"}};
   const auto files = pat::ui::plot_csv_files(shapes, "out.csv");
-  QCOMPARE(files.size(), std::size_t(4));
+  QCOMPARE(files.size(), std::size_t(7));
   QCOMPARE(files[0].path, QString("out.csv"));
   QCOMPARE(files[1].path, QString("out_a.csv"));
   QCOMPARE(files[2].path, QString("out_a_2.csv"));
   QCOMPARE(files[3].path, QString("out_frequency_hz.csv"));
+  QCOMPARE(files[4].path, QString("out_plot5.csv"));
+  QCOMPARE(files[5].path, QString("out_setting_index.csv"));
+  QCOMPARE(files[6].path, QString("out_t.csv"));
+  QCOMPARE(pat::ui::plot_csv_files(shapes, "/out.csv")[1].path, QString("/out_a.csv"));
 }
 
 // An export dialog opens where the last export went, or in the documents folder (or home), not in
