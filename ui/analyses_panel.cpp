@@ -555,9 +555,14 @@ void AnalysesPanel::show_result(const QString& title, const AnalysisResult& resu
 
 void AnalysesPanel::compare_with_window() {
   const std::shared_ptr<const ActionModel> window = current_model_ ? current_model_() : nullptr;
-  const QString note = result_model_ && window && !settings_hidden_
-                           ? settings_moved_note(*result_model_, *window)
-                           : QString();
+  // the catalogue's entry of the result shown (none for one from elsewhere: the demo's)
+  const AnalysisEntry* entry = nullptr;
+  for (const AnalysisEntry& e : catalogue_)
+    if (e.name == result_title_) entry = &e;
+  const QString note =
+      result_model_ && window && !settings_hidden_
+          ? settings_moved_note(*result_model_, *window, !entry || entry->uses_the_settings)
+          : QString();
   since_run_->setText(note);
   since_run_->setVisible(!note.isEmpty());
 }

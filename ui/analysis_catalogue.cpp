@@ -349,6 +349,7 @@ AnalysisEntry regulation_sensitivity() {
 AnalysisEntry swing() {
   AnalysisEntry e;
   e.name = QObject::tr("Swing test");
+  e.uses_the_settings = false;  // no contact: no adjuster reaches the hammer on its flange
   e.description = QObject::tr(
       "The hammer alone on its flange, released from horizontal: the technician counts the "
       "swings until it stops (about two round trips, 2 to 3.5, for a good centre pin)");

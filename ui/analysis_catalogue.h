@@ -60,6 +60,9 @@ struct AnalysisEntry {
   std::vector<AnalysisParameter> parameters;
   /// False for an analysis that runs on both actions (its result's summary then names none).
   bool on_the_window_action = true;
+  /// False for an analysis no regulation setting changes (the swing test: the hammer alone on
+  /// its flange): a setting moved after it ran is then not news under its result.
+  bool uses_the_settings = true;
   /// Builds the task; throws InputError when the settings cannot be run (the panel shows it).
   std::function<AnalysisTask(std::shared_ptr<const ActionModel>, const AnalysisSettings&)> make;
 };

@@ -17,7 +17,8 @@ QString parts_text(const std::vector<std::string>& removed) {
 
 }  // namespace
 
-QString settings_moved_note(const ActionModel& ran_on, const ActionModel& window) {
+QString settings_moved_note(const ActionModel& ran_on, const ActionModel& window,
+                            bool settings_matter) {
   if (ran_on.kind != window.kind)
     return QObject::tr("This result is the %1's; the window shows the %2 now.")
         .arg(QString::fromStdString(ran_on.kind), QString::fromStdString(window.kind));
@@ -25,6 +26,7 @@ QString settings_moved_note(const ActionModel& ran_on, const ActionModel& window
     return QObject::tr("This result is for %1; the window shows %2 now.")
         .arg(QString::fromStdString(ran_on.source_file),
              QString::fromStdString(window.source_file));
+  if (!settings_matter) return {};
   QStringList changes;
   if (ran_on.removed_parts != window.removed_parts)
     changes << QObject::tr("%1 → %2").arg(parts_text(ran_on.removed_parts),
