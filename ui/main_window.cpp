@@ -430,7 +430,18 @@ MainWindow::~MainWindow() {
 }
 
 void MainWindow::show_analyses() {
+  if (!practising_) show_side_panels(true);  // a result shown in a hidden panel is lost on a class
   analyses_dock_->raise();
+}
+
+void MainWindow::show_side_panels(bool on) {
+  if (side_panels_action_ && side_panels_action_->isChecked() != on) {
+    side_panels_action_->setChecked(on);  // its toggled signal comes back here
+    return;
+  }
+  side_panels_shown_ = on;
+  regulation_dock_->setVisible(on && !practising_);
+  analyses_dock_->setVisible(on && !practising_);
 }
 
 void MainWindow::build_menus() {
@@ -504,6 +515,11 @@ void MainWindow::build_menus() {
   large_text_action_->setCheckable(true);
   large_text_action_->setShortcut(QKeySequence(tr("Ctrl+Shift+L")));
   connect(large_text_action_, &QAction::toggled, this, &MainWindow::set_large_text);
+  side_panels_action_ = view->addAction(tr("Side &panels (regulation, analyses)"));
+  side_panels_action_->setCheckable(true);
+  side_panels_action_->setChecked(true);
+  side_panels_action_->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
+  connect(side_panels_action_, &QAction::toggled, this, &MainWindow::show_side_panels);
   QAction* labels = view->addAction(tr("Show &labels"));
   labels->setCheckable(true);
   labels->setChecked(true);
@@ -710,8 +726,8 @@ void MainWindow::set_practice_layout(bool practising) {
   // and their exports (the hammer blow at rest, a jack force that names the lever height) would
   // read the hidden setting off for free: the tests are the measurements. The action stays in
   // view, taller (the view refits as it is resized).
-  regulation_dock_->setVisible(!practising);
-  analyses_dock_->setVisible(!practising);
+  regulation_dock_->setVisible(!practising && side_panels_shown_);
+  analyses_dock_->setVisible(!practising && side_panels_shown_);
   analyses_->set_settings_hidden(practising);
   view_->set_measurements_visible(!practising);
   plots_->setVisible(!practising);

@@ -61,6 +61,12 @@ class MainWindow : public QMainWindow {
   /// (the window's launch: a blow played before anyone looks teaches nothing).
   void hold_at_rest();
 
+  /// Shows or hides the regulation and analyses panels (View › Side panels): hidden, the action
+  /// and the plots take the window's whole width (a 1024-pixel projector). An exercise's panel
+  /// is not one of them; during an exercise those two stay hidden either way.
+  void show_side_panels(bool on);
+  bool side_panels_shown() const { return side_panels_shown_; }
+
   std::shared_ptr<const ActionModel> model() const { return model_; }
   PlaybackController* controller() const { return controller_; }
   ActionView* view() const { return view_; }
@@ -181,6 +187,8 @@ class MainWindow : public QMainWindow {
   bool large_text_ = false;
   QString run_status_shown_;  // the run's status as last shown (fitted)
   QAction* large_text_action_ = nullptr;
+  QAction* side_panels_action_ = nullptr;
+  bool side_panels_shown_ = true;
   RegulationPanel* regulation_;
   AnalysesPanel* analyses_;
   QDockWidget* analyses_dock_;

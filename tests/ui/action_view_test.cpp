@@ -27,6 +27,7 @@
 #include "playback_controller.h"
 #include "plot_panel.h"
 #include "plot_stack.h"
+#include "practice_panel.h"
 #include "regulation_panel.h"
 #include "regulation_row.h"
 #include "ui_test_support.h"
@@ -49,6 +50,7 @@ class ActionViewTest : public QObject {
   void the_escapement_close_up_keeps_its_forces_in_larger_text();
   void the_readout_says_when_the_felt_is_on_the_string();
   void the_animation_exports_numbered_pictures();
+  void the_side_panels_hide_to_give_the_action_the_width();
 };
 
 void ActionViewTest::draws_both_actions_with_the_key_front_inside() {
@@ -736,6 +738,49 @@ void ActionViewTest::the_animation_exports_numbered_pictures() {
   }
   QCOMPARE(QFileInfo(dir.filePath("frame_0000.png")).lastModified(), written_at);
   QVERIFY_THROWS_EXCEPTION(pat::InputError, window.export_animation(dir.filePath("no_such")));
+}
+
+// View › Side panels: on a 1024-pixel projector the regulation and analyses panels took about
+// 545 pixels of the width and there was no way to give them to the action. Hidden, the action
+// view takes the width and draws the action larger; an exercise and its end keep the class's
+// choice; a result shown in the analyses brings them back.
+void ActionViewTest::the_side_panels_hide_to_give_the_action_the_width() {
+  MainWindow window;
+  window.open_action("grand");
+  window.resize(1024, 768);
+  window.show();
+  QVERIFY(QTest::qWaitForWindowExposed(&window));
+  QVERIFY(wait_until([&] { return window.regulation()->isVisible(); }));
+  QTest::qWait(100);  // laid out
+  const int width_with_panels = window.view()->width();
+  const double scale_with_panels = window.view()->model_to_widget().m11();  // px per m
+  window.show_side_panels(false);
+  QVERIFY2(
+      wait_until([&] { return window.view()->width() > width_with_panels + 400; }),
+      qPrintable(QString("%1 px, %2 before").arg(window.view()->width()).arg(width_with_panels)));
+  QVERIFY(!window.regulation()->isVisible() && !window.analyses()->isVisible());
+  // larger by 1.18 to 1.3 (the view's height limits it, which the tests before this one in the
+  // same settings folder change): more than 1.1 is the width given to the drawing
+  QVERIFY2(
+      wait_until([&] { return window.view()->model_to_widget().m11() > 1.1 * scale_with_panels; }),
+      qPrintable(QString("%1 px/m, %2 before")
+                     .arg(window.view()->model_to_widget().m11())
+                     .arg(scale_with_panels)));
+  // PAT_UI_SHOTS=DIR keeps a picture for a person to look at
+  if (const QString shots = qEnvironmentVariable("PAT_UI_SHOTS"); !shots.isEmpty())
+    window.grab().save(shots + "/side-panels-hidden-1024.png");
+  window.practice()->start_seed("grand", 5, 1);
+  window.show_practice(false);  // the exercise ends: the panels stay as the class left them
+  QVERIFY(!window.side_panels_shown());
+  QTest::qWait(50);
+  QVERIFY(!window.regulation()->isVisible() && !window.analyses()->isVisible());
+  window.show_side_panels(true);
+  QVERIFY(wait_until([&] { return window.regulation()->isVisible(); }));
+  QVERIFY(wait_until([&] { return window.view()->width() <= width_with_panels + 2; }));
+  window.show_side_panels(false);
+  window.show_analyses();  // a result to see (the deregulation demo's) shows them again
+  QVERIFY(window.side_panels_shown());
+  QVERIFY(wait_until([&] { return window.analyses()->isVisible(); }));
 }
 
 QTEST_MAIN(ActionViewTest)
