@@ -115,6 +115,19 @@ std::string note_subject(const std::string& first_line) {
   return first_line.substr(0, first_line.find(' '));
 }
 
+// The subcommand a note of kUsage is for when it says so after its option ("--window CYCLES
+// (sweep): ..." is the sweep's, not bench's --window switch; "--step S (simulate)" is w2's step,
+// not the sensitivity study's); empty when it does not.
+std::string note_command(const std::string& first_line) {
+  std::istringstream words(first_line);
+  std::string option, argument, third;
+  words >> option >> argument >> third;
+  if (third.size() < 3 || third.front() != '(') return std::string();
+  const auto close = third.find(')');
+  if (close == std::string::npos) return std::string();
+  return third.substr(1, close - 1);
+}
+
 // The usage lines of one subcommand (its entries in kUsage with their continuation lines),
 // then those of the shared notes (from "input SPEC:" on) that explain something its entries
 // name; empty if kUsage has no entry for it.
@@ -147,7 +160,10 @@ std::string subcommand_usage(const std::string& command) {
   if (entries.empty()) return std::string();
   std::string text = "usage:\n" + entries;
   for (const std::string& note : notes) {
-    const std::string subject = note_subject(note.substr(0, note.find('\n')));
+    const std::string first_line = note.substr(0, note.find('\n'));
+    const std::string subject = note_subject(first_line);
+    const std::string for_command = note_command(first_line);
+    if (!for_command.empty() && for_command != command) continue;
     // the exit codes hold for every subcommand
     if (subject == "exit" || entries.find(subject) != std::string::npos) text += "\n" + note;
   }
@@ -262,7 +278,12 @@ int main(int argc, char** argv) {
   const std::string command = args[0];
   args.erase(args.begin());
   if (asks_for_help(args)) {
-    const std::string usage = subcommand_usage(command);
+    // a study's or practice's own entry ("study sensitivity --help"), else the group's
+    std::string usage;
+    if ((command == "study" || command == "practice") && !args.empty() &&
+        args[0].rfind("--", 0) != 0)
+      usage = subcommand_usage(command + " " + args[0]);
+    if (usage.empty()) usage = subcommand_usage(command);
     if (!usage.empty()) {
       std::cout << usage;
       return 0;
