@@ -536,8 +536,11 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
   p.data = trial;
   if (!trial.input_spec.empty()) {
     p.spec = trial.input_spec;
-  } else if (!trial.key_deg.empty()) {
-    p.spec = "csv:" + trial.path;  // the measured key motion drives the model
+  } else if (!trial.key_deg.empty() || trial.key_force_measured) {
+    // the measured key motion (or else the finger's measured force) drives the model, on the
+    // file's clock; a force column had been left unread and a pulse estimated instead, whose
+    // misfit was then blamed on a candidate (shank_flex "explained" a synthetic trace without it)
+    p.spec = "csv:" + trial.path;
     p.max_shift_s = 0.0;
   } else {
     const EstimatedInput est = estimate_key_input(model, trial);

@@ -44,6 +44,7 @@ MeasuredTrial measured_from_table(const CsvTable& table, const std::string& path
   trial.t = table.column("time_s");
   trial.hammer_deg = table.column("hammer_angle_deg");
   if (table.column_index("key_angle_deg") >= 0) trial.key_deg = table.column("key_angle_deg");
+  trial.key_force_measured = table.column_index("key_force_n") >= 0;
   if (trial.t.size() < kMinMeasuredSamples)
     throw InputError(path + ": only " + std::to_string(trial.t.size()) + " samples (at least " +
                      std::to_string(kMinMeasuredSamples) + " are needed)");

@@ -465,6 +465,36 @@ TEST(Diagnosis, TheVerdictSaysWhyNoCauseIsNamed) {
   EXPECT_NE(off.verdict.find("joint_friction.key"), std::string::npos) << off.verdict;
 }
 
+// A file with the finger's measured force (key_force_n) and neither its input line nor the key's
+// angle: the force drives the model. It had been left unread and a force pulse estimated
+// instead, whose misfit (4.6 deg) was blamed on shank_flex, absent from the data.
+TEST(Diagnosis, AMeasuredKeyForceDrivesTheModel) {
+  const ActionModel grand = test::shipped("grand");
+  SynthOptions o;
+  o.duration_s = 0.3;
+  o.noise_deg = 0.2;
+  o.seed = 5;
+  CsvTable table = synthesize(grand, "force:pulse:20:100", o);
+  table.metadata.erase("input");
+  const int key_angle = table.column_index("key_angle_deg");
+  ASSERT_GE(key_angle, 0);
+  ASSERT_GE(table.column_index("key_force_n"), 0);
+  table.columns.erase(table.columns.begin() + key_angle);
+  for (auto& row : table.rows) row.erase(row.begin() + key_angle);
+  const std::string path = write_temp("force_only.csv", "");
+  write_csv(path, table);
+  const MeasuredTrial trial = read_measured(path, "grand");
+  EXPECT_TRUE(trial.key_force_measured);
+  DiagnoseOptions options;
+  options.candidates = {"shank_flex"};
+  const Diagnosis d = diagnose(grand, {trial}, options);
+  ASSERT_EQ(d.trials.size(), 1u);
+  EXPECT_FALSE(d.trials[0].input_estimated);
+  EXPECT_EQ(d.trials[0].input_spec, "csv:" + path);
+  EXPECT_FALSE(d.cause.has_value()) << d.verdict;
+  EXPECT_NE(d.verdict.find("the model is within the noise"), std::string::npos) << d.verdict;
+}
+
 TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
   // The model's trace, sampled at 2000 fps as a measured file: every feature must read the same
   // on both sides. (The model's impact event is its felt's first touch, the file's impact the
