@@ -18,7 +18,7 @@ struct MeasuredTrial {
   std::string input_spec;  ///< from "# input:", empty when absent
   std::vector<double> t;   ///< s, strictly increasing
   std::vector<double> hammer_deg;
-  std::vector<double> key_deg;  ///< empty when not measured
+  std::vector<double> key_deg;      ///< empty when not measured
   bool key_force_measured = false;  ///< the file has key_force_n (the finger's force, N)
   double sample_interval_s() const;
   double duration_s() const { return t.empty() ? 0.0 : t.back() - t.front(); }

@@ -389,6 +389,12 @@ void AnalysisStudiesTest::diagnosis_of_the_real_strike_shows_the_extension() {
   QCOMPARE(overlay->series_count(), named ? 3 : 2);
   QCOMPARE(plot_titled(panel, "Residual by phase")->series_count(), named ? 2 : 1);
   QVERIFY(!table_value(panel, "baseline error (training rms)").isEmpty());
+  // the measured impact at the file's own time (186 ms), and where the plots show it (45 ms, the
+  // estimated blow's clock); the row had given the plots' time as the file's
+  QVERIFY2(table_value(panel, "measured impact").startsWith("t = 186.1 ms in kawai"),
+           qPrintable(table_value(panel, "measured impact")));
+  QVERIFY2(table_value(panel, "measured impact").contains("(45.17 ms on the plots' clock)"),
+           qPrintable(table_value(panel, "measured impact")));
   keep_picture(window, "diagnosis_kawai", {"kawai_kg3c_e4_fast_strike", "By phase"});
 }
 
