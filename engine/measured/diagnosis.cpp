@@ -585,6 +585,14 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
                    const DiagnoseOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (trials.empty()) throw InputError("diagnose needs at least one measured file");
+  // a copy of a file under another name would validate the fit on the data it was fitted to
+  // (two copies had passed as two trials: "held out", the validated error the training one)
+  for (std::size_t j = 1; j < trials.size(); ++j)
+    for (std::size_t i = 0; i < j; ++i)
+      if (trials[j].t == trials[i].t && trials[j].hammer_deg == trials[i].hammer_deg)
+        throw InputError(trials[j].path + ": the same measurement as " + trials[i].path +
+                         " (every time and hammer angle equal); each trial must be another "
+                         "measurement, since the others validate the fit on it");
   Diagnosis d;
   d.action = model.kind;
   std::vector<PreparedTrial> prepared;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <map>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -206,16 +207,24 @@ void write_diagnosis_report(const std::string& dir, const Diagnosis& d) {
                   "delta_bic", "note"},
                  ranking);
 
+  // each trial by its file's name, or, where two folders hold files of one name, by its path as
+  // given and a traces file numbered by its place (the second had replaced the first's)
+  std::map<std::string, int> name_count;
+  for (const TrialReport& r : d.trials) ++name_count[fs::path(r.path).filename().string()];
   std::vector<std::vector<std::string>> phase_rows;
-  for (const TrialReport& r : d.trials) {
-    const std::string file = fs::path(r.path).filename().string();
+  for (std::size_t j = 0; j < d.trials.size(); ++j) {
+    const TrialReport& r = d.trials[j];
+    const bool shared_name = name_count[fs::path(r.path).filename().string()] > 1;
+    const std::string file = shared_name ? r.path : fs::path(r.path).filename().string();
+    const std::string traces_name = fs::path(r.path).stem().string() +
+                                    (shared_name ? "_" + std::to_string(j + 1) : std::string()) +
+                                    "_traces.csv";
     for (const PhaseResidual& p : r.discrepancies.phases)
       phase_rows.push_back({file, p.phase, std::to_string(p.samples), csv_number(p.rms_deg),
                             csv_number(p.mean_deg), csv_number(p.noise_deg),
                             p.has_extended ? csv_number(p.extended_rms_deg) : std::string(),
                             p.has_extended ? csv_number(p.extended_mean_deg) : std::string()});
-    write_csv((fs::path(dir) / (fs::path(r.path).stem().string() + "_traces.csv")).string(),
-              trial_traces_table(r));
+    write_csv((fs::path(dir) / traces_name).string(), trial_traces_table(r));
   }
   write_text_csv((fs::path(dir) / "phases.csv").string(),
                  {"file", "phase", "samples", "rms_deg", "mean_deg", "noise_deg",

@@ -49,6 +49,19 @@ grep -q '"effect": "repetition_spring"' d2.json || fail "--measured A B: the spr
 [[ "$(grep '"baseline_rms_deg"' d.json)" == "$(grep '"baseline_rms_deg"' d2.json)" ]] ||
   fail "--measured A B: baseline differs from --measured A --measured B (not both files read?)"
 
+# two files of one name in two folders: a traces file each (the second had replaced the first's),
+# phases.csv naming them by their paths
+mkdir -p a b
+cp mass.csv a/trial.csv
+cp sine.csv b/trial.csv
+"$exe" diagnose --action grand --measured a/trial.csv b/trial.csv --candidate repetition_spring \
+  --report same_names >/dev/null || fail "diagnose of two files of one name failed"
+for f in trial_1_traces.csv trial_2_traces.csv; do
+  [[ -s "same_names/$f" ]] || fail "diagnose --report, files of one name: no $f"
+done
+grep -q '^a/trial.csv,' same_names/phases.csv && grep -q '^b/trial.csv,' same_names/phases.csv ||
+  fail "phases.csv does not tell the two trial.csv apart: $(cut -d, -f1 same_names/phases.csv | sort -u)"
+
 # bad input
 expect_failure() {
   local what="$1" expected="$2"
@@ -93,6 +106,13 @@ printf 'time_s,hammer_angle_deg\n0,0\n0.0005,0\n0.0005,1\n' >badtime.csv
 awk 'BEGIN { for (i = 1; i <= 30; ++i) printf "%g,0\n", 0.001 + i * 0.0005 }' >>badtime.csv
 expect_failure "time not increasing" "badtime.csv: line 4: time_s is not increasing" \
   diagnose --action grand --measured badtime.csv
+# a copy of a file under another name is not another trial: it would validate the fit on the data
+# it was fitted to (two copies had passed, "held out", with nothing written to say so)
+cp mass.csv mass_copy.csv
+rm -rf copy_report
+expect_failure "a copy as a second trial" "mass_copy.csv: the same measurement as mass.csv" \
+  diagnose --action grand --measured mass.csv mass_copy.csv --report copy_report
+[[ ! -e copy_report ]] || fail "diagnose of a copied trial wrote its report"
 
 if [[ $failures -ne 0 ]]; then
   echo "$failures failure(s)" >&2
