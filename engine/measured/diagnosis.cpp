@@ -635,6 +635,10 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
     // the features, the traces) takes the angle offset at rest, where only the calibration can
     // be wrong
     const Alignment fitted = align(prepared[j].data, r.baseline, prepared[j].max_shift_s);
+    // half a step of align()'s grid from the searched edge (its refinement may pass it by a
+    // step: 10.2 ms for a file 30 ms late had been taken as the offset without a word)
+    r.time_offset_at_limit = prepared[j].max_shift_s > 0.0 &&
+                             std::abs(fitted.time_offset_s) > prepared[j].max_shift_s - 1e-4;
     r.noise_deg = estimate_noise(prepared[j].data.hammer_deg);
     r.measured_events = detect_events(prepared[j].data.t, prepared[j].data.hammer_deg, r.noise_deg);
     r.discrepancies =
@@ -860,6 +864,13 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;
   d.verdict = diagnosis_verdict(d, best.refined && best.fit.completed ? &best.fit : nullptr,
                                 at_limit, std::sqrt(best_ms));
+  for (const TrialReport& r : d.trials)
+    if (r.time_offset_at_limit) {
+      d.verdict = "Not to be trusted: " + r.path +
+                  "'s clock differs from the model's by more than the ±10 ms searched. " +
+                  d.verdict;
+      break;
+    }
   d.gain_basis =
       !d.cause ? std::string("no cause named: the extended model is the baseline") +
                      (d.held_out ? "" : " (one trial: no trial can be held out)")
@@ -876,6 +887,14 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   };
   std::vector<Line> lines;
   for (const TrialReport& r : d.trials) {
+    if (r.time_offset_at_limit)  // first: every figure of this trial depends on it
+      lines.push_back(
+          {std::numeric_limits<double>::infinity(),
+           r.path + ": the clock offset found, " +
+               format_fixed(r.baseline_alignment.time_offset_s * 1e3) +
+               " ms, is at the edge of the ±10 ms searched: the file's time and the model's "
+               "differ by more (is time_s counted from the start of the input its '# input:' "
+               "line gives?), so its comparison is not to be trusted"});
     for (const PhaseResidual& p : r.discrepancies.phases) {
       std::string text = r.path + ": " + p.phase + ": residual rms " + format_fixed(p.rms_deg) +
                          " deg over " + std::to_string(p.samples) + " samples (noise " +

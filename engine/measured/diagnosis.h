@@ -103,6 +103,10 @@ struct TrialReport {
   /// Time in the file = time here (data, events, traces) + file_time_shift_s: nonzero when an
   /// estimated input's strike was moved onto the model's clock (the samples before it dropped).
   double file_time_shift_s = 0.0;
+  /// The baseline's clock offset ended at the ±10 ms searched: the file's time and the model's
+  /// differ by more (its time_s not counted from the input's start?), and the comparison of this
+  /// trial is not to be trusted (said first in the discrepancies and in the verdict).
+  bool time_offset_at_limit = false;
   double noise_deg = 0.0;
   /// The baseline aligned with its angle offset taken at rest (referenced_to_rest; the fits and
   /// the gain use align()'s least-squares offset): residual, offset and Σ r² as shown.

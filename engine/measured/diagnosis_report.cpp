@@ -114,6 +114,7 @@ nlohmann::json diagnosis_json(const Diagnosis& d) {
          {"file_time_shift_s", r.file_time_shift_s},
          {"noise_deg", r.noise_deg},
          {"time_offset_ms", r.baseline_alignment.time_offset_s * 1e3},
+         {"time_offset_at_limit", r.time_offset_at_limit},
          {"angle_offset_deg", r.baseline_alignment.angle_offset_deg},
          // as the whole diagnosis's baseline and gain take it: with the least-squares offset
          {"baseline_rms_deg", std::sqrt(r.baseline_fitted_rss /

@@ -495,6 +495,36 @@ TEST(Diagnosis, AMeasuredKeyForceDrivesTheModel) {
   EXPECT_NE(d.verdict.find("the model is within the noise"), std::string::npos) << d.verdict;
 }
 
+// A file 30 ms late on its input's clock (synth allows ±100 ms): the offset search (±10 ms) ends
+// at its edge. That had been taken as the offset without a word, and the exact model's misfit
+// read as a model error; now the trial, its discrepancies and the verdict say not to trust it.
+TEST(Diagnosis, AClockOffsetBeyondTheSearchIsSaid) {
+  const ActionModel grand = test::shipped("grand");
+  auto trial_late_by = [&](double offset_s, const std::string& name) {
+    SynthOptions o;
+    o.duration_s = 0.3;
+    o.noise_deg = 0.2;
+    o.time_offset_s = offset_s;
+    const std::string path = write_temp(name, "");
+    write_csv(path, synthesize(grand, "mass:1kg", o));
+    return read_measured(path, "grand");
+  };
+  DiagnoseOptions options;
+  options.candidates = {"shank_flex"};
+  const Diagnosis late = diagnose(grand, {trial_late_by(0.03, "late.csv")}, options);
+  ASSERT_EQ(late.trials.size(), 1u);
+  EXPECT_TRUE(late.trials[0].time_offset_at_limit);
+  EXPECT_EQ(late.verdict.rfind("Not to be trusted: ", 0), 0u) << late.verdict;
+  ASSERT_FALSE(late.discrepancies.empty());
+  EXPECT_NE(late.discrepancies.front().find("at the edge of the ±10 ms searched"),
+            std::string::npos)
+      << late.discrepancies.front();
+  // 3 ms late: within the search, nothing said
+  const Diagnosis near = diagnose(grand, {trial_late_by(0.003, "near.csv")}, options);
+  EXPECT_FALSE(near.trials[0].time_offset_at_limit);
+  EXPECT_EQ(near.verdict.find("Not to be trusted"), std::string::npos) << near.verdict;
+}
+
 TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
   // The model's trace, sampled at 2000 fps as a measured file: every feature must read the same
   // on both sides. (The model's impact event is its felt's first touch, the file's impact the
