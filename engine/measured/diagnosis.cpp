@@ -906,7 +906,7 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
                 (p.mean_deg > 0 ? "higher" : "lower") + " than the model by " +
                 format_fixed(std::abs(p.mean_deg)) + " deg";
       else if (p.rms_deg > 2.0 * p.noise_deg)
-        text += ", the measured hammer swinging about the model (mean " + format_fixed(p.mean_deg) +
+        text += ", swinging about zero with no steady offset (mean " + format_fixed(p.mean_deg) +
                 " deg)";
       else
         text += ", within the noise";
