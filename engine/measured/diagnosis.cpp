@@ -531,6 +531,21 @@ void check_angle_range(const MeasuredTrial& trial, double contact_deg) {
                      "or does the hammer never rise?");
 }
 
+/// Refuses a key trace that moves less than a tenth of the key's `key_dip_deg` while the hammer
+/// reaches at least half its `contact_deg` (angles in radians: a key column of 0.045 had driven
+/// a key that never went down, and the hammer's strike read as the model's error).
+void check_key_range(const MeasuredTrial& trial, double contact_deg, double key_dip_deg) {
+  if (trial.key_deg.empty() || trial.hammer_deg.empty()) return;
+  const auto [key_low, key_high] = std::minmax_element(trial.key_deg.begin(), trial.key_deg.end());
+  const double hammer_high = *std::max_element(trial.hammer_deg.begin(), trial.hammer_deg.end());
+  if (*key_high - *key_low < 0.1 * key_dip_deg && hammer_high > 0.5 * contact_deg)
+    throw InputError(trial.path + ": key_angle_deg moves only " +
+                     format_fixed(*key_high - *key_low, 3) + " deg, less than a tenth of the " +
+                     format_fixed(key_dip_deg, 2) +
+                     " deg of the key's full dip, while the hammer rises " +
+                     format_fixed(hammer_high, 1) + " deg: are the key angles in radians?");
+}
+
 PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
   PreparedTrial p;
   p.data = trial;
@@ -597,10 +612,13 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   d.action = model.kind;
   std::vector<PreparedTrial> prepared;
   const double contact_deg = hammer_contact_angle_deg(model);
+  const RestState base_rest = find_rest_state(model);
+  const double key_dip_deg = key_full_dip_angle(model, base_rest) * 180.0 / kPi;
   for (const MeasuredTrial& t : trials) {
     // a reversed sign or a trace beyond the string first (an estimated input would be fitted to
     // it), a trace too small after (a flat one without an input is told that first)
     check_angle_sign_and_scale(t, contact_deg);
+    check_key_range(t, contact_deg, key_dip_deg);
     prepared.push_back(prepare(model, t));
     check_angle_range(t, contact_deg);
   }
@@ -612,7 +630,6 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   std::size_t total_samples = 0;
   double base_rss = 0.0, noise2 = 0.0;
   std::vector<double> base_trial_rss(n_trials);
-  const RestState base_rest = find_rest_state(model);
   ev.set_baseline_rest(base_rest);
   for (std::size_t j = 0; j < n_trials; ++j) {
     TrialReport r;

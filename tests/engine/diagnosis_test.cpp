@@ -650,6 +650,19 @@ TEST(Diagnosis, AnglesInRadiansOrOfTheWrongSignAreRefused) {
   EXPECT_NE(radians.find("kawai_kg3c_e4_fast_strike.csv"), std::string::npos) << radians;
   const std::string reversed = error_for(-1.0);
   EXPECT_NE(reversed.find("is the sign reversed"), std::string::npos) << reversed;
+  // the key's column in radians (the strike with its key, its key angles × π/180): a key that
+  // never goes down had driven the model, and the hammer's strike read as the model's error
+  MeasuredTrial with_key = read_measured(
+      std::string(PAT_ASSET_DIR) + "/measured/kawai_kg3c_e4_strike_with_key.csv", "grand");
+  ASSERT_FALSE(with_key.key_deg.empty());
+  for (double& a : with_key.key_deg) a *= kPi / 180.0;
+  std::string key_radians = "no error";
+  try {
+    diagnose(test::shipped("grand"), {with_key});
+  } catch (const InputError& e) {
+    key_radians = e.what();
+  }
+  EXPECT_NE(key_radians.find("are the key angles in radians"), std::string::npos) << key_radians;
 }
 
 TEST(Diagnosis, AStrikeNoForcePulseCanMakeIsRefused) {
