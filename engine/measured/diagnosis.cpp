@@ -573,12 +573,23 @@ PreparedTrial prepare(const ActionModel& model, const MeasuredTrial& trial) {
 std::string diagnosis_verdict(const Diagnosis& d, const CandidateFit* best, bool at_limit,
                               double best_rms_deg) {
   const std::string measure = d.held_out ? "held-out" : "training";
-  if (d.cause)  // (the gain's error is each trial under its own fold's choice: it may differ)
-    return d.cause->name + " = " + format_number(d.cause->value, 4) + " " + d.cause_unit +
-           " explains the discrepancy best: the " + measure + " error is " +
-           format_fixed(d.extended_rms_deg, 3) + " deg with it, " +
-           format_fixed(d.baseline_rms_deg, 3) + " deg without (noise " +
-           format_fixed(d.noise_deg, 3) + " deg)";
+  if (d.cause) {  // (the gain's error is each trial under its own fold's choice: it may differ)
+    std::string text = d.cause->name + " = " + format_number(d.cause->value, 4) + " " +
+                       d.cause_unit + " explains the discrepancy best: the " + measure +
+                       " error is " + format_fixed(d.extended_rms_deg, 3) + " deg with it, " +
+                       format_fixed(d.baseline_rms_deg, 3) + " deg without (noise " +
+                       format_fixed(d.noise_deg, 3) + " deg)";
+    // what "best" rests on, where it is less than it reads: one candidate has no rival, and an
+    // input estimated from the hammer has a misfit of its own that a candidate may take up
+    if (d.ranking.size() == 1) text += "; it was the only candidate compared";
+    bool estimated = false;
+    for (const TrialReport& r : d.trials) estimated = estimated || r.input_estimated;
+    if (estimated)
+      text +=
+          "; the input was estimated from the hammer (no '# input:' line, key angle or "
+          "key force), so part of the error may be the estimate's";
+    return text;
+  }
   if (d.ambiguous) return "the ranking is ambiguous (" + d.ranking.front().note + ")";
   // a residual whose power is within 2.25 times the noise's (rms within 1.5 times) is the noise
   if (d.baseline_rms_deg <= kWithinNoiseRatio * d.noise_deg)

@@ -162,6 +162,10 @@ TEST(Diagnosis, RealStrikeRunsEndToEnd) {
   EXPECT_EQ(d.ranking.size(), 2u);
   EXPECT_FALSE(d.discrepancies.empty());
   EXPECT_GT(d.baseline_rms_deg, 0.0);
+  // a cause named on an estimated input says so
+  if (d.cause)
+    EXPECT_NE(d.verdict.find("the input was estimated from the hammer"), std::string::npos)
+        << d.verdict;
   // an offset is named only where the mean carries the residual: the rest phase had read "higher
   // than the model by 0.00 deg" for a residual of 0.22 deg rms swinging about zero
   for (const std::string& line : d.discrepancies)
@@ -527,6 +531,24 @@ TEST(Diagnosis, AClockOffsetBeyondTheSearchIsSaid) {
   const Diagnosis near = diagnose(grand, {trial_late_by(0.003, "near.csv")}, options);
   EXPECT_FALSE(near.trials[0].time_offset_at_limit);
   EXPECT_EQ(near.verdict.find("Not to be trusted"), std::string::npos) << near.verdict;
+}
+
+// A cause found among one candidate has no rival: the verdict says it was the only one compared
+// (it had read as a decision among candidates).
+TEST(Diagnosis, ACauseFromTheOnlyCandidateSaysSo) {
+  const ActionModel grand = test::shipped("grand");
+  SynthOptions o;
+  o.duration_s = 0.3;
+  o.noise_deg = 0.1;
+  o.effects = {Effect{"repetition_spring", 2.5}};
+  const std::string path = write_temp("only_candidate.csv", "");
+  write_csv(path, synthesize(grand, "mass:1kg", o));
+  DiagnoseOptions options;
+  options.candidates = {"repetition_spring"};
+  const Diagnosis d = diagnose(grand, {read_measured(path, "grand")}, options);
+  ASSERT_TRUE(d.cause.has_value()) << d.verdict;
+  EXPECT_NE(d.verdict.find("it was the only candidate compared"), std::string::npos) << d.verdict;
+  EXPECT_EQ(d.verdict.find("estimated"), std::string::npos) << d.verdict;
 }
 
 TEST(Discrepancies, AModelComparedWithItsOwnTraceDiffersInNoFeature) {
