@@ -751,7 +751,11 @@ void ActionViewTest::the_side_panels_hide_to_give_the_action_the_width() {
   window.show();
   QVERIFY(QTest::qWaitForWindowExposed(&window));
   QVERIFY(wait_until([&] { return window.regulation()->isVisible(); }));
+  // the run's first frame drawn, so that the view is fitted (before it, its scale is the
+  // default 1000 px/m: the HiDPI run under a loaded CI read that)
+  QVERIFY(wait_until([&] { return window.view()->readout().startsWith("t = "); }));
   QTest::qWait(100);  // laid out
+  window.view()->grab();
   const int width_with_panels = window.view()->width();
   const double scale_with_panels = window.view()->model_to_widget().m11();  // px per m
   window.show_side_panels(false);
