@@ -65,17 +65,19 @@ int run_simulate(const std::vector<std::string>& args) {
       throw InputError("--step " + cl.value("--step") +
                        ": w2's step must be at most 0.001 s (1e-5 s is the default; a felt "
                        "contact lasts a few milliseconds)");
-    if (options.integrator_options.fixed_step_s > 0.1 * options.duration_s)
-      throw InputError("--step " + cl.value("--step") +
-                       ": at least 10 steps must fit in --duration " + cl.value("--duration"));
-  } else if (fixed_step && options.integrator_options.fixed_step_s > 0.1 * options.duration_s) {
-    // the default step too: --duration 1e-9 had run one step of 1e-9 s and reported step_s 1e-5
-    const double step = options.integrator_options.fixed_step_s;
-    throw InputError("--duration " + cl.value("--duration") + ": w2 steps " + format_number(step) +
-                     " s by default and at least 10 steps must fit in a "
-                     "run (give at least " +
-                     format_number(10.0 * step) + " s, or a smaller --step)");
   }
+  // at least 10 of w2's steps in the run, the default step's too (--duration 1e-9 had run one
+  // step of 1e-9 s and reported step_s 1e-5); --step is given only with w2
+  const double step = options.integrator_options.fixed_step_s;
+  if (fixed_step && step > 0.1 * options.duration_s)
+    throw InputError(
+        cl.has("--step")
+            ? "--step " + cl.value("--step") + ": at least 10 steps must fit in --duration " +
+                  cl.value("--duration")
+            : "--duration " + cl.value("--duration") + ": w2 steps " + format_number(step) +
+                  " s by default and at least 10 steps must fit in a "
+                  "run (give at least " +
+                  format_number(10.0 * step) + " s, or a smaller --step)");
   if (cl.has("--rtol") && options.integrator_options.relative_tolerance > kLargestRtol)
     throw InputError("--rtol " + cl.value("--rtol") +
                      ": a relative tolerance must be at most 0.1 (1e-6 is the default)");

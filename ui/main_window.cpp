@@ -440,8 +440,12 @@ void MainWindow::show_side_panels(bool on) {
     return;
   }
   side_panels_shown_ = on;
-  regulation_dock_->setVisible(on && !practising_);
-  analyses_dock_->setVisible(on && !practising_);
+  show_side_docks(practising_);
+}
+
+void MainWindow::show_side_docks(bool practising) {
+  regulation_dock_->setVisible(side_panels_shown_ && !practising);
+  analyses_dock_->setVisible(side_panels_shown_ && !practising);
 }
 
 void MainWindow::build_menus() {
@@ -726,8 +730,7 @@ void MainWindow::set_practice_layout(bool practising) {
   // and their exports (the hammer blow at rest, a jack force that names the lever height) would
   // read the hidden setting off for free: the tests are the measurements. The action stays in
   // view, taller (the view refits as it is resized).
-  regulation_dock_->setVisible(!practising && side_panels_shown_);
-  analyses_dock_->setVisible(!practising && side_panels_shown_);
+  show_side_docks(practising);
   analyses_->set_settings_hidden(practising);
   view_->set_measurements_visible(!practising);
   plots_->setVisible(!practising);

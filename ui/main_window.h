@@ -152,6 +152,8 @@ class MainWindow : public QMainWindow {
   void export_to_chosen_file(const QString& what, const QString& filter, bool pause_run,
                              const std::function<QStringList(const QString&)>& write);
   void restore_settings();
+  /// The regulation and analyses docks shown when the side panels are and no exercise runs.
+  void show_side_docks(bool practising);
   /// The regulation dock as wide as its panel's smallest layout (after an action or text size);
   /// `within_screen`: no wider than leaves the window on its screen (or at its `width_before`
   /// a text size change, when that was wider: an offscreen 1280-pixel window), and a window

@@ -892,11 +892,11 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
   d.gain = d.baseline_rms_deg > 0 ? 1.0 - d.extended_rms_deg / d.baseline_rms_deg : 0.0;
   d.verdict = diagnosis_verdict(d, best.refined && best.fit.completed ? &best.fit : nullptr,
                                 at_limit, std::sqrt(best_ms));
+  const std::string searched = "±" + format_number(kMaxShiftS * 1e3) + " ms searched";
   for (const TrialReport& r : d.trials)
     if (r.time_offset_at_limit) {
-      d.verdict = "Not to be trusted: " + r.path +
-                  "'s clock differs from the model's by more than the ±10 ms searched. " +
-                  d.verdict;
+      d.verdict = "Not to be trusted: " + r.path + "'s clock differs from the model's by more " +
+                  "than the " + searched + ". " + d.verdict;
       break;
     }
   d.gain_basis =
@@ -920,9 +920,10 @@ Diagnosis diagnose(const ActionModel& model, const std::vector<MeasuredTrial>& t
           {std::numeric_limits<double>::infinity(),
            r.path + ": the clock offset found, " +
                format_fixed(r.baseline_alignment.time_offset_s * 1e3) +
-               " ms, is at the edge of the ±10 ms searched: the file's time and the model's "
-               "differ by more (is time_s counted from the start of the input its '# input:' "
-               "line gives?), so its comparison is not to be trusted"});
+               " ms, is at the edge of the " + searched +
+               ": the file's time and the model's differ by more (is time_s counted from the "
+               "start of the input its '# input:' line gives?), so its comparison is not to be "
+               "trusted"});
     for (const PhaseResidual& p : r.discrepancies.phases) {
       std::string text = r.path + ": " + p.phase + ": residual rms " + format_fixed(p.rms_deg) +
                          " deg over " + std::to_string(p.samples) + " samples (noise " +

@@ -44,17 +44,20 @@ double rounded_mm(double mm) {
   return std::round(mm * 100.0) / 100.0;
 }
 
-/// The setting an exercise numbered `seed` hides (the first, at level 2). Numbers 1-7, 8-14, ...
-/// (on the grand's seven settings) hide each setting once, in an order shuffled for each block:
-/// a class handed consecutive numbers gets different settings to find, where independent draws
-/// had repeated one (seeds 1 and 3 had both hidden the lever height 0.21 mm high).
-std::string first_hidden_setting(std::vector<std::string> settings, std::uint64_t seed) {
-  const std::uint64_t n = settings.size();
+/// Which of `count` settings an exercise numbered `seed` hides (the first, at level 2). Numbers
+/// 1-7, 8-14, ... (on the grand's seven settings) hide each setting once, in an order shuffled
+/// for each block: a class handed consecutive numbers gets different settings to find, where
+/// independent draws had repeated one (seeds 1 and 3 had both hidden the lever height 0.21 mm
+/// high).
+std::size_t first_hidden_index(std::size_t count, std::uint64_t seed) {
+  const std::uint64_t n = count;
   const std::uint64_t position = seed + n - 1;  // seed 1 opens a block
+  std::vector<std::size_t> order(count);
+  for (std::size_t i = 0; i < count; ++i) order[i] = i;
   SeedSequence block_order(0x5EEDB10Cull ^ (position / n));
   for (std::uint64_t i = n - 1; i > 0; --i)  // Fisher-Yates, with the portable generator
-    std::swap(settings[i], settings[block_order.index(i + 1)]);
-  return settings[position % n];
+    std::swap(order[i], order[block_order.index(i + 1)]);
+  return order[position % n];
 }
 
 }  // namespace
@@ -74,12 +77,9 @@ Exercise generate_exercise(const ActionModel& model, const std::string& action, 
   SeedSequence random(seed);
   std::vector<std::string> candidates;
   for (const RegulationSetting& s : model.regulation) candidates.push_back(s.name);
-  const std::string first = first_hidden_setting(candidates, seed);
   for (int i = 0; i < level; ++i) {
     const std::size_t pick =
-        i == 0 ? static_cast<std::size_t>(std::find(candidates.begin(), candidates.end(), first) -
-                                          candidates.begin())
-               : random.index(candidates.size());
+        i == 0 ? first_hidden_index(candidates.size(), seed) : random.index(candidates.size());
     const NeglectRange& range = neglect_range(model.kind, candidates[pick]);
     const double magnitude = range.min_mm + random.uniform() * (range.max_mm - range.min_mm);
     const double coin = random.uniform();  // drawn always: a seed's later draws stay the same

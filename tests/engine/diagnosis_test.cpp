@@ -32,6 +32,15 @@ std::string write_temp(const std::string& name, const std::string& text) {
   return path.string();
 }
 
+// A synthetic measured file of `spec` on `model` (synthesize's `options`), written under `name`
+// and read back as diagnose reads a file.
+MeasuredTrial synthetic_trial(const ActionModel& model, const std::string& spec,
+                              const SynthOptions& options, const std::string& name) {
+  const std::string path = write_temp(name, "");
+  write_csv(path, synthesize(model, spec, options));
+  return read_measured(path, model.kind);
+}
+
 std::string read_error(const std::string& text, const std::string& action = "grand") {
   const std::string path = write_temp("bad.csv", text);
   try {
@@ -303,11 +312,9 @@ TEST(Discrepancies, AHeldKeyIsNotReleasedByItsOvershootOrItsNoise) {
     o.duration_s = 0.4;
     o.noise_deg = noise_deg;
     o.seed = 5;
-    const std::string path = write_temp(name, "");
-    write_csv(path, synthesize(grand, spec, o));
     DiagnoseOptions options;
     options.candidates = {"joint_friction.key"};
-    const Diagnosis d = diagnose(grand, {read_measured(path, "grand")}, options);
+    const Diagnosis d = diagnose(grand, {synthetic_trial(grand, spec, o, name)}, options);
     std::map<std::string, int> count;
     for (const std::string& phase : d.trials.front().discrepancies.phase_of_sample) ++count[phase];
     return count;
@@ -409,9 +416,7 @@ TEST(Diagnosis, TheHeldOutErrorTellsApartCandidatesThatFitTheTrialsEqually) {
     o.noise_deg = 0.2;
     o.time_offset_s = time_offset_s;
     o.seed = seed;
-    const std::string path = write_temp("flex_" + std::to_string(seed) + ".csv", "");
-    write_csv(path, synthesize(grand, spec, o));
-    return read_measured(path, "grand");
+    return synthetic_trial(grand, spec, o, "flex_" + std::to_string(seed) + ".csv");
   };
   const std::vector<MeasuredTrial> trials = {trial("mass:1kg", 2e-3, 1),
                                              trial("motion:sine:4", -1e-3, 2)};
@@ -453,9 +458,7 @@ TEST(Diagnosis, TheVerdictSaysWhyNoCauseIsNamed) {
     o.effects = hidden;
     o.noise_deg = 0.2;
     o.seed = 7;
-    const std::string path = write_temp(name, "");
-    write_csv(path, synthesize(grand, "force:pulse:10:80", o));
-    return read_measured(path, "grand");
+    return synthetic_trial(grand, "force:pulse:10:80", o, name);
   };
   DiagnoseOptions options;
   options.candidates = {"joint_friction.key"};
@@ -513,9 +516,7 @@ TEST(Diagnosis, AClockOffsetBeyondTheSearchIsSaid) {
     o.duration_s = 0.3;
     o.noise_deg = 0.2;
     o.time_offset_s = offset_s;
-    const std::string path = write_temp(name, "");
-    write_csv(path, synthesize(grand, "mass:1kg", o));
-    return read_measured(path, "grand");
+    return synthetic_trial(grand, "mass:1kg", o, name);
   };
   DiagnoseOptions options;
   options.candidates = {"shank_flex"};
@@ -541,11 +542,10 @@ TEST(Diagnosis, ACauseFromTheOnlyCandidateSaysSo) {
   o.duration_s = 0.3;
   o.noise_deg = 0.1;
   o.effects = {Effect{"repetition_spring", 2.5}};
-  const std::string path = write_temp("only_candidate.csv", "");
-  write_csv(path, synthesize(grand, "mass:1kg", o));
   DiagnoseOptions options;
   options.candidates = {"repetition_spring"};
-  const Diagnosis d = diagnose(grand, {read_measured(path, "grand")}, options);
+  const Diagnosis d =
+      diagnose(grand, {synthetic_trial(grand, "mass:1kg", o, "only_candidate.csv")}, options);
   ASSERT_TRUE(d.cause.has_value()) << d.verdict;
   EXPECT_NE(d.verdict.find("it was the only candidate compared"), std::string::npos) << d.verdict;
   EXPECT_EQ(d.verdict.find("estimated"), std::string::npos) << d.verdict;
